@@ -1,0 +1,21 @@
+#pragma once
+// Typed errors thrown by the core. Messages are one line and name the file,
+// the field and the offending value, so the command line can print them as-is.
+#include <stdexcept>
+#include <string>
+
+namespace isotrack {
+
+// A file that cannot be read or whose contents are malformed.
+class FormatError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// A request the core cannot satisfy (unknown field name, bad size, no surface at a seed...).
+class InputError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+}  // namespace isotrack

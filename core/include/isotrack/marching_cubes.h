@@ -1,0 +1,16 @@
+#pragma once
+// Exhaustive marching cubes: every cell of the volume, one indexed mesh.
+#include "isotrack/mesh.h"
+#include "isotrack/tables.h"
+#include "isotrack/volume.h"
+
+namespace isotrack {
+
+// Each grid edge crossed by the surface yields exactly one vertex (no welding
+// pass); positions are in world units; normals point from above to below.
+Mesh marchingCubes(const Volume& volume, double iso, TableKind table = TableKind::Consistent);
+
+// The number of grid edges whose ends lie on different sides of `iso`.
+std::size_t countCrossedEdges(const Volume& volume, double iso);
+
+}  // namespace isotrack

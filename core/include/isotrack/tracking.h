@@ -1,0 +1,89 @@
+#pragma once
+// Piecewise continuation: extracting one connected isosurface from a seed edge,
+// touching only the cells it passes through, or every surface separately.
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "isotrack/mesh.h"
+#include "isotrack/tables.h"
+#include "isotrack/volume.h"
+
+namespace isotrack {
+
+// A seed is a grid edge crossed by the surface.
+bool edgeIsCrossed(const Volume& volume, double iso, const GridEdge& edge);
+
+// The crossed grid edge whose midpoint is nearest to a world-space point,
+// searching outward from the point's voxel. Throws InputError when the volume has
+// no crossed edge at `iso`.
+GridEdge nearestCrossedEdge(const Volume& volume, double iso, const Vec3d& worldPoint);
+
+// The grid edge behind a picked vertex, or behind the vertex of a picked triangle
+// nearest to a world-space point on it.
+GridEdge edgeOfVertex(const Mesh& mesh, std::uint32_t vertex);
+GridEdge edgeOfTriangle(const Mesh& mesh, std::size_t triangle, const Vec3d& worldPoint);
+
+struct SurfaceStats {
+    std::size_t triangles = 0;
+    std::size_t vertices = 0;
+    std::size_t cellsVisited = 0;  // (cell, piece) visits
+    std::size_t bytes = 0;         // vertex and index buffers
+    double seconds = 0.0;
+    Vec3d boundsMin{0, 0, 0}, boundsMax{0, 0, 0};
+    double area = 0.0;
+    bool closed = false;                   // every mesh edge has exactly two triangles
+    std::optional<double> enclosedVolume;  // for closed surfaces
+    bool touchesBorder = false;            // reaches a boundary cell of the volume
+};
+
+struct Surface {
+    Mesh mesh;
+    SurfaceStats stats;
+};
+
+// Computes area, bounds, closedness and enclosed volume of a mesh.
+SurfaceStats measureSurface(const Mesh& mesh, const Volume& volume);
+
+// One connected surface, the one through `seed`. Throws InputError when the seed
+// edge is outside the volume or not crossed at `iso`.
+Surface trackSurface(const Volume& volume, double iso, const GridEdge& seed,
+                     TableKind table = TableKind::Consistent);
+
+// Every surface, each tracked on its own, sorted by triangle count, largest first.
+// Together they hold exactly the triangles of marchingCubes with the same table.
+std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableKind table = TableKind::Consistent);
+
+// Grows one surface a budget at a time, breadth-first from the seed, so that a
+// viewer can append each step's vertices and indices to GPU buffers.
+class SurfaceTracker {
+public:
+    SurfaceTracker(const Volume& volume, double iso, TableKind table = TableKind::Consistent);
+    ~SurfaceTracker();
+    SurfaceTracker(SurfaceTracker&&) noexcept;
+    SurfaceTracker& operator=(SurfaceTracker&&) noexcept;
+
+    void start(const GridEdge& seed);
+
+    struct Step {
+        std::size_t firstVertex = 0, vertexCount = 0;  // appended to mesh().vertices
+        std::size_t firstIndex = 0, indexCount = 0;    // appended to mesh().indices
+        std::size_t cellsVisited = 0;
+    };
+    Step step(std::size_t cellBudget);
+    Step stepFor(std::chrono::nanoseconds budget);
+    bool done() const;
+
+    const Mesh& mesh() const;
+    std::size_t cellsVisited() const;
+    Mesh takeMesh();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace isotrack

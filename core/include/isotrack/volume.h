@@ -1,0 +1,87 @@
+#pragma once
+// A regular scalar grid kept in its native sample type.
+//
+// Samples are stored x-fastest: index = x + nx * (y + ny * z). World position of
+// sample (i, j, k) is origin + (i * sx, j * sy, k * sz).
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace isotrack {
+
+enum class ScalarType : std::uint8_t { UInt8, Int8, UInt16, Int16, UInt32, Int32, Float32, Float64 };
+
+const char* scalarTypeName(ScalarType type);
+std::size_t scalarTypeSize(ScalarType type);
+
+// Largest sample buffer a Volume may hold; loaders check against it before allocating.
+inline constexpr std::uint64_t kMaxVolumeBytes = std::uint64_t(16) << 30;
+
+using Dims = std::array<int, 3>;
+using Vec3d = std::array<double, 3>;
+
+class Volume {
+public:
+    Volume() = default;
+    // Allocates dims[0]*dims[1]*dims[2] zeroed samples. Throws InputError when a
+    // dimension is not positive or the sample count would overflow.
+    Volume(Dims dims, ScalarType type, Vec3d spacing = {1, 1, 1}, Vec3d origin = {0, 0, 0});
+
+    const Dims& dims() const { return dims_; }
+    ScalarType type() const { return type_; }
+    const Vec3d& spacing() const { return spacing_; }
+    const Vec3d& origin() const { return origin_; }
+    void setSpacing(const Vec3d& spacing) { spacing_ = spacing; }
+    void setOrigin(const Vec3d& origin) { origin_ = origin; }
+
+    std::size_t sampleCount() const {
+        return std::size_t(dims_[0]) * std::size_t(dims_[1]) * std::size_t(dims_[2]);
+    }
+    std::size_t byteSize() const { return bytes_.size(); }
+    std::size_t index(int x, int y, int z) const {
+        return std::size_t(x) + std::size_t(dims_[0]) * (std::size_t(y) + std::size_t(dims_[1]) * std::size_t(z));
+    }
+
+    std::byte* bytes() { return bytes_.data(); }
+    const std::byte* bytes() const { return bytes_.data(); }
+
+    template <class T>
+    T* data() { return reinterpret_cast<T*>(bytes_.data()); }
+    template <class T>
+    const T* data() const { return reinterpret_cast<const T*>(bytes_.data()); }
+
+    // Sample as double, whatever the native type. For tests and tools, not inner loops.
+    double value(int x, int y, int z) const;
+    void setValue(int x, int y, int z, double v);
+
+    // Smallest and largest finite sample (NaN and infinities are skipped).
+    std::array<double, 2> range() const;
+
+private:
+    Dims dims_{0, 0, 0};
+    ScalarType type_ = ScalarType::Float32;
+    Vec3d spacing_{1, 1, 1};
+    Vec3d origin_{0, 0, 0};
+    std::vector<std::byte> bytes_;
+};
+
+// Calls fn(const T* samples) with the volume's samples in their native type.
+template <class Fn>
+decltype(auto) visitSamples(const Volume& volume, Fn&& fn) {
+    switch (volume.type()) {
+        case ScalarType::UInt8: return fn(volume.data<std::uint8_t>());
+        case ScalarType::Int8: return fn(volume.data<std::int8_t>());
+        case ScalarType::UInt16: return fn(volume.data<std::uint16_t>());
+        case ScalarType::Int16: return fn(volume.data<std::int16_t>());
+        case ScalarType::UInt32: return fn(volume.data<std::uint32_t>());
+        case ScalarType::Int32: return fn(volume.data<std::int32_t>());
+        case ScalarType::Float32: return fn(volume.data<float>());
+        case ScalarType::Float64: break;
+    }
+    return fn(volume.data<double>());
+}
+
+}  // namespace isotrack

@@ -1,0 +1,94 @@
+#pragma once
+// Vertex placement shared by every extractor, so that an edge crossed by the
+// surface yields the same vertex whichever algorithm visits it.
+#include <cmath>
+#include <cstddef>
+
+#include "isotrack/mesh.h"
+#include "isotrack/volume.h"
+
+namespace isotrack::detail {
+
+template <class T>
+class SampleGrid {
+public:
+    SampleGrid(const Volume& volume, const T* samples, double iso)
+        : samples_(samples),
+          nx_(volume.dims()[0]),
+          ny_(volume.dims()[1]),
+          nz_(volume.dims()[2]),
+          strideY_(std::size_t(nx_)),
+          strideZ_(std::size_t(nx_) * std::size_t(ny_)),
+          spacing_(volume.spacing()),
+          origin_(volume.origin()),
+          iso_(iso) {}
+
+    int nx() const { return nx_; }
+    int ny() const { return ny_; }
+    int nz() const { return nz_; }
+    std::size_t strideY() const { return strideY_; }
+    std::size_t strideZ() const { return strideZ_; }
+    std::size_t index(int x, int y, int z) const { return std::size_t(x) + strideY_ * std::size_t(y) + strideZ_ * std::size_t(z); }
+    double iso() const { return iso_; }
+    double at(std::size_t i) const { return static_cast<double>(samples_[i]); }
+    // The one classification rule of isotrack: above means strictly greater. NaN is below.
+    bool above(std::size_t i) const { return static_cast<double>(samples_[i]) > iso_; }
+
+    // The vertex where the surface crosses the edge from sample (x, y, z) one step along `axis`.
+    Vertex edgeVertex(int x, int y, int z, int axis) const {
+        const int step[3] = {axis == 0, axis == 1, axis == 2};
+        const std::size_t a = index(x, y, z);
+        const std::size_t b = index(x + step[0], y + step[1], z + step[2]);
+        const double va = at(a), vb = at(b);
+        double t = (iso_ - va) / (vb - va);
+        if (!(t >= 0.0 && t <= 1.0)) t = 0.5;  // non-finite samples: keep the vertex on the edge
+
+        Vertex v{};
+        const int p[3] = {x, y, z};
+        for (int k = 0; k < 3; ++k) {
+            const double coord = p[k] + (k == axis ? t : 0.0);
+            v.position[k] = static_cast<float>(origin_[k] + coord * spacing_[k]);
+        }
+        double ga[3], gb[3];
+        gradient(x, y, z, ga);
+        gradient(x + step[0], y + step[1], z + step[2], gb);
+        double n[3];
+        for (int k = 0; k < 3; ++k) n[k] = -((1.0 - t) * ga[k] + t * gb[k]);
+        double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        if (!(length > 0.0) || !std::isfinite(length)) {
+            // Flat or non-finite neighbourhood: point along the edge, from above to below.
+            for (int k = 0; k < 3; ++k) n[k] = 0.0;
+            n[axis] = above(a) ? 1.0 : -1.0;
+            length = 1.0;
+        }
+        for (int k = 0; k < 3; ++k) v.normal[k] = static_cast<float>(n[k] / length);
+        return v;
+    }
+
+    // Central-difference gradient in world units; one-sided on the border.
+    void gradient(int x, int y, int z, double g[3]) const {
+        const int p[3] = {x, y, z};
+        const int n[3] = {nx_, ny_, nz_};
+        const std::size_t stride[3] = {1, strideY_, strideZ_};
+        const std::size_t i = index(x, y, z);
+        for (int k = 0; k < 3; ++k) {
+            if (n[k] < 2) {
+                g[k] = 0.0;
+                continue;
+            }
+            const std::size_t lo = p[k] > 0 ? i - stride[k] : i;
+            const std::size_t hi = p[k] < n[k] - 1 ? i + stride[k] : i;
+            const int span = (p[k] > 0) + (p[k] < n[k] - 1);
+            g[k] = (at(hi) - at(lo)) / (span * spacing_[k]);
+        }
+    }
+
+private:
+    const T* samples_;
+    int nx_, ny_, nz_;
+    std::size_t strideY_, strideZ_;
+    Vec3d spacing_, origin_;
+    double iso_;
+};
+
+}  // namespace isotrack::detail

@@ -1,0 +1,260 @@
+// Binary little-endian PLY meshes: the one layout writePly emits and readPly accepts.
+#include <algorithm>
+#include <cerrno>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "isotrack/errors.h"
+#include "isotrack/io.h"
+
+namespace isotrack {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::size_t kChunkBytes = std::size_t(4) << 20;
+constexpr std::size_t kMaxHeaderBytes = std::size_t(64) << 10;
+constexpr std::size_t kVertexBytes = 6 * 4;
+constexpr std::size_t kFaceBytes = 1 + 3 * 4;  // plus 4 with a component
+
+struct FileCloser {
+    void operator()(std::FILE* f) const { std::fclose(f); }
+};
+using FilePtr = std::unique_ptr<std::FILE, FileCloser>;
+
+FilePtr openFile(const std::string& path, const char* mode) {
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) throw FormatError(path + ": cannot open: " + std::strerror(EISDIR));
+    FilePtr f(std::fopen(path.c_str(), mode));
+    if (!f) throw FormatError(path + ": cannot open: " + std::strerror(errno));
+    return f;
+}
+
+std::string printable(const std::string& s) {
+    std::string out;
+    for (char c : s.substr(0, 60)) out += (c >= 0x20 && c < 0x7f) ? c : '?';
+    if (s.size() > 60) out += "...";
+    return out;
+}
+
+// Byte-by-byte little endian, so the file layout does not depend on the host.
+void putU32(std::vector<unsigned char>& out, std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) out.push_back(static_cast<unsigned char>(v >> (8 * i)));
+}
+
+void putFloat(std::vector<unsigned char>& out, float f) {
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &f, 4);
+    putU32(out, bits);
+}
+
+std::uint32_t getU32(const unsigned char* p) {
+    return std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 | std::uint32_t(p[3]) << 24;
+}
+
+float getFloat(const unsigned char* p) {
+    const std::uint32_t bits = getU32(p);
+    float f = 0;
+    std::memcpy(&f, &bits, 4);
+    return f;
+}
+
+class ChunkWriter {
+public:
+    ChunkWriter(std::FILE* f, const std::string& path) : f_(f), path_(path) { buf_.reserve(kChunkBytes + 64); }
+    std::vector<unsigned char>& buffer() { return buf_; }
+    void maybeFlush() {
+        if (buf_.size() >= kChunkBytes) flush();
+    }
+    void flush() {
+        if (std::fwrite(buf_.data(), 1, buf_.size(), f_) != buf_.size())
+            throw FormatError(path_ + ": cannot write: " + std::strerror(errno));
+        buf_.clear();
+    }
+
+private:
+    std::FILE* f_;
+    const std::string& path_;
+    std::vector<unsigned char> buf_;
+};
+
+std::string normalized(const std::string& line) {
+    std::istringstream in(line);
+    std::string out;
+    for (std::string w; in >> w;) out += (out.empty() ? "" : " ") + w;
+    return out;
+}
+
+// Parses "element NAME COUNT"; false when the line is not that element.
+bool parseElement(const std::string& line, const std::string& name, std::uint64_t& count) {
+    const std::string prefix = "element " + name + " ";
+    if (line.compare(0, prefix.size(), prefix) != 0) return false;
+    const std::string digits = line.substr(prefix.size());
+    if (digits.empty() || digits.size() > 19 || digits.find_first_not_of("0123456789") != std::string::npos) return false;
+    count = std::stoull(digits);
+    return true;
+}
+
+void readExact(std::FILE* f, unsigned char* dst, std::size_t n, const std::string& path) {
+    if (std::fread(dst, 1, n, f) != n) {
+        if (std::ferror(f)) throw FormatError(path + ": cannot read: " + std::strerror(errno));
+        throw FormatError(path + ": data is truncated");
+    }
+}
+
+}  // namespace
+
+void writePly(const std::string& path, const Mesh& mesh, const std::vector<std::int32_t>* faceComponent) {
+    const std::size_t vertexCount = mesh.vertices.size();
+    const std::size_t faceCount = mesh.triangleCount();
+    if (mesh.indices.size() % 3 != 0)
+        throw InputError(path + ": mesh has " + std::to_string(mesh.indices.size()) + " indices, not a multiple of 3");
+    if (vertexCount > std::size_t(std::numeric_limits<std::int32_t>::max()))
+        throw InputError(path + ": mesh has " + std::to_string(vertexCount) + " vertices, more than PLY int indices allow");
+    for (std::uint32_t i : mesh.indices)
+        if (i >= vertexCount)
+            throw InputError(path + ": mesh index " + std::to_string(i) + " is out of range (" +
+                             std::to_string(vertexCount) + " vertices)");
+    if (faceComponent && faceComponent->size() != faceCount)
+        throw InputError(path + ": " + std::to_string(faceComponent->size()) + " face components for " +
+                         std::to_string(faceCount) + " triangles");
+
+    FilePtr f = openFile(path, "wb");
+    std::string header = "ply\nformat binary_little_endian 1.0\ncomment written by isotrack\n";
+    header += "element vertex " + std::to_string(vertexCount) + "\n";
+    header += "property float x\nproperty float y\nproperty float z\n";
+    header += "property float nx\nproperty float ny\nproperty float nz\n";
+    header += "element face " + std::to_string(faceCount) + "\nproperty list uchar int vertex_indices\n";
+    if (faceComponent) header += "property int component\n";
+    header += "end_header\n";
+
+    ChunkWriter out(f.get(), path);
+    auto& buf = out.buffer();
+    buf.insert(buf.end(), header.begin(), header.end());
+    for (const Vertex& v : mesh.vertices) {
+        for (float c : v.position) putFloat(buf, c);
+        for (float c : v.normal) putFloat(buf, c);
+        out.maybeFlush();
+    }
+    for (std::size_t t = 0; t < faceCount; ++t) {
+        buf.push_back(3);
+        for (std::size_t k = 0; k < 3; ++k) putU32(buf, mesh.indices[3 * t + k]);
+        if (faceComponent) putU32(buf, std::uint32_t((*faceComponent)[t]));
+        out.maybeFlush();
+    }
+    out.flush();
+    if (std::fclose(f.release()) != 0) throw FormatError(path + ": cannot write: " + std::strerror(errno));
+}
+
+Mesh readPly(const std::string& path, std::vector<std::int32_t>* faceComponent) {
+    FilePtr f = openFile(path, "rb");
+    std::error_code ec;
+    const std::uint64_t fileSize = fs::file_size(path, ec);
+    if (ec) throw FormatError(path + ": cannot read: " + ec.message());
+
+    // Header lines, comments dropped; ends at end_header.
+    std::vector<std::string> lines;
+    std::uint64_t headerBytes = 0;
+    for (std::string line;;) {
+        const int c = std::fgetc(f.get());
+        if (c == EOF) throw FormatError(path + ": not a PLY file written by isotrack: header has no end_header line");
+        if (++headerBytes > kMaxHeaderBytes)
+            throw FormatError(path + ": PLY header is longer than " + std::to_string(kMaxHeaderBytes >> 10) + " KiB");
+        if (c != '\n') {
+            line += char(c);
+            continue;
+        }
+        line = normalized(line);
+        if (lines.empty() && line != "ply") throw FormatError(path + ": not a PLY file: first line is \"" + printable(line) + "\"");
+        if (line.compare(0, 8, "comment ") != 0 && line != "comment" && line.compare(0, 8, "obj_info") != 0)
+            lines.push_back(line);
+        if (line == "end_header") break;
+        line.clear();
+    }
+
+    // Only writePly's layout is accepted, line for line.
+    const std::vector<std::string> vertexProps = {"property float x",  "property float y",  "property float z",
+                                                  "property float nx", "property float ny", "property float nz"};
+    std::uint64_t vertexCount = 0, faceCount = 0;
+    std::size_t at = 1;
+    auto expect = [&](bool ok, const std::string& wanted) {
+        if (!ok)
+            throw FormatError(path + ": unsupported PLY layout: expected \"" + wanted + "\", got \"" +
+                              printable(at < lines.size() ? lines[at] : "") + "\"");
+        ++at;
+    };
+    auto lineIs = [&](const std::string& s) { return at < lines.size() && lines[at] == s; };
+    expect(lineIs("format binary_little_endian 1.0"), "format binary_little_endian 1.0");
+    expect(at < lines.size() && parseElement(lines[at], "vertex", vertexCount), "element vertex N");
+    for (const std::string& p : vertexProps) expect(lineIs(p), p);
+    expect(at < lines.size() && parseElement(lines[at], "face", faceCount), "element face M");
+    expect(lineIs("property list uchar int vertex_indices"), "property list uchar int vertex_indices");
+    const bool hasComponent = lineIs("property int component");
+    if (hasComponent) ++at;
+    expect(lineIs("end_header"), "end_header");
+
+    // Counts are checked against the file size before anything is allocated.
+    const std::size_t faceBytes = kFaceBytes + (hasComponent ? 4 : 0);
+    const std::uint64_t dataBytes = fileSize - std::min(fileSize, headerBytes);
+    if (vertexCount > dataBytes / kVertexBytes || faceCount > dataBytes / faceBytes ||
+        vertexCount * kVertexBytes + faceCount * faceBytes != dataBytes)
+        throw FormatError(path + ": element counts (" + std::to_string(vertexCount) + " vertices, " +
+                          std::to_string(faceCount) + " faces) need " +
+                          (vertexCount > dataBytes || faceCount > dataBytes
+                               ? std::string("more")
+                               : std::to_string(vertexCount * kVertexBytes + faceCount * faceBytes)) +
+                          " data bytes, file has " + std::to_string(dataBytes));
+    if (vertexCount > std::uint64_t(std::numeric_limits<std::int32_t>::max()))
+        throw FormatError(path + ": element vertex " + std::to_string(vertexCount) + " is more than int indices allow");
+
+    Mesh mesh;
+    mesh.vertices.resize(std::size_t(vertexCount));
+    std::vector<unsigned char> chunk(kChunkBytes);
+    for (std::size_t done = 0; done < mesh.vertices.size();) {
+        const std::size_t n = std::min(mesh.vertices.size() - done, kChunkBytes / kVertexBytes);
+        readExact(f.get(), chunk.data(), n * kVertexBytes, path);
+        for (std::size_t i = 0; i < n; ++i) {
+            Vertex& v = mesh.vertices[done + i];
+            const unsigned char* p = chunk.data() + i * kVertexBytes;
+            for (std::size_t k = 0; k < 3; ++k) {
+                v.position[k] = getFloat(p + 4 * k);
+                v.normal[k] = getFloat(p + 12 + 4 * k);
+            }
+        }
+        done += n;
+    }
+    mesh.indices.resize(std::size_t(faceCount) * 3);
+    if (faceComponent) faceComponent->assign(hasComponent ? std::size_t(faceCount) : 0, 0);
+    for (std::size_t done = 0; done < faceCount;) {
+        const std::size_t n = std::min(std::size_t(faceCount) - done, kChunkBytes / faceBytes);
+        readExact(f.get(), chunk.data(), n * faceBytes, path);
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::size_t face = done + i;
+            const unsigned char* p = chunk.data() + i * faceBytes;
+            if (p[0] != 3)
+                throw FormatError(path + ": face " + std::to_string(face) + " has " + std::to_string(p[0]) +
+                                  " vertices, expected 3");
+            for (std::size_t k = 0; k < 3; ++k) {
+                const std::uint32_t index = getU32(p + 1 + 4 * k);
+                if (index >= vertexCount)
+                    throw FormatError(path + ": face " + std::to_string(face) + ": vertex index " +
+                                      std::to_string(std::int32_t(index)) + " is out of range (" +
+                                      std::to_string(vertexCount) + " vertices)");
+                mesh.indices[3 * face + k] = index;
+            }
+            if (faceComponent && hasComponent) (*faceComponent)[face] = std::int32_t(getU32(p + kFaceBytes));
+        }
+        done += n;
+    }
+    return mesh;
+}
+
+}  // namespace isotrack

@@ -1,0 +1,445 @@
+// Piecewise continuation: tracking one connected isosurface from a seed edge.
+//
+// After Ghataora, "The development of Piecewise Continuation on Marching Cubes"
+// (Leeds, 2013), and the surface tracking of Shekhar et al. (1996).
+//
+// A queue holds (cell, entry edge) pairs. For each pair:
+//  1. classify: the cell's configuration from its 8 samples (sample > iso);
+//  2. find the piece: the continuation table names the piece of the cell's
+//     surface that holds the entry edge; a (cell, piece) seen before is skipped;
+//  3. emit: the piece's triangles, each corner a grid edge whose vertex is looked
+//     up in an edge-keyed map and computed only the first time;
+//  4. continue: for each face the piece crosses, the cell across that face is
+//     queued with the shared edge.
+// Visited pieces and vertices live in hash maps sized by the surface, so the cost
+// follows the surface, not the volume. extractAllSurfaces scans every cell
+// instead, and marks pieces in one byte per cell.
+#include "isotrack/tracking.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "edge_vertex.h"
+#include "flat_hash.h"
+#include "isotrack/continuation.h"
+#include "isotrack/cube.h"
+#include "isotrack/errors.h"
+
+namespace isotrack {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Entry {
+    int x, y, z;
+    int edge;
+};
+
+// Per-face step and the entry edge across each face, computed once.
+struct FaceSteps {
+    std::array<std::array<int, 3>, 6> step{};
+    std::array<std::array<std::int8_t, 12>, 6> across{};
+    FaceSteps() {
+        for (int f = 0; f < cube::kFaceCount; ++f) {
+            step[f][cube::faceAxis(f)] = cube::faceSide(f) ? 1 : -1;
+            for (int e = 0; e < cube::kEdgeCount; ++e) {
+                across[f][e] = static_cast<std::int8_t>(cube::edgeOnFace(e, f) ? cube::edgeAcrossFace(e, f) : -1);
+            }
+        }
+    }
+};
+
+const FaceSteps& faceSteps() {
+    static const FaceSteps steps;
+    return steps;
+}
+
+std::string edgeText(const GridEdge& e) {
+    return "(" + std::to_string(e.x) + "," + std::to_string(e.y) + "," + std::to_string(e.z) + ") axis " +
+           "xyz"[e.axis];
+}
+
+// What a tracked surface accumulates, whatever the sample type.
+struct TrackState {
+    Mesh mesh;
+    detail::FlatHashMap vertexOfEdge;
+    detail::FlatHashMap visitedPieces;      // used when `denseVisited` is null
+    std::uint8_t* denseVisited = nullptr;   // one bit per piece per cell, for extractAllSurfaces
+    std::vector<Entry> queue;
+    std::size_t head = 0;
+    std::size_t cellsVisited = 0;
+};
+
+class TrackWorker {
+public:
+    virtual ~TrackWorker() = default;
+    virtual std::size_t advance(TrackState& state, std::size_t cellBudget) = 0;
+    virtual std::uint8_t config(int x, int y, int z) const = 0;
+    virtual bool crossed(const GridEdge& edge) const = 0;
+};
+
+template <class T>
+class TypedTrackWorker final : public TrackWorker {
+public:
+    TypedTrackWorker(const Volume& volume, const T* samples, double iso, TableKind table)
+        : grid_(volume, samples, iso), table_(continuationTable(table)) {}
+
+    std::uint8_t config(int x, int y, int z) const override {
+        const std::size_t i = grid_.index(x, y, z);
+        const std::size_t sy = grid_.strideY(), sz = grid_.strideZ();
+        const unsigned c = grid_.above(i) | grid_.above(i + 1) << 1 | grid_.above(i + 1 + sy) << 2 |
+                           grid_.above(i + sy) << 3 | grid_.above(i + sz) << 4 | grid_.above(i + 1 + sz) << 5 |
+                           grid_.above(i + 1 + sy + sz) << 6 | grid_.above(i + sy + sz) << 7;
+        return static_cast<std::uint8_t>(c);
+    }
+
+    bool crossed(const GridEdge& e) const override {
+        const std::size_t i = grid_.index(e.x, e.y, e.z);
+        const std::size_t stride[3] = {1, grid_.strideY(), grid_.strideZ()};
+        return grid_.above(i) != grid_.above(i + stride[e.axis]);
+    }
+
+    std::size_t advance(TrackState& state, std::size_t cellBudget) override {
+        const FaceSteps& faces = faceSteps();
+        const int last[3] = {grid_.nx() - 2, grid_.ny() - 2, grid_.nz() - 2};
+        std::size_t visited = 0;
+        while (state.head < state.queue.size() && visited < cellBudget) {
+            const Entry entry = state.queue[state.head++];
+            const CaseContinuation& cased = table_[config(entry.x, entry.y, entry.z)];
+            const int p = cased.pieceOfEdge[entry.edge];
+            if (p < 0 || !markVisited(state, entry, p)) continue;
+            ++visited;
+            const Piece& piece = cased.pieces[p];
+            for (int t = piece.firstTriangle; t < piece.firstTriangle + piece.triangleCount; ++t) {
+                for (int corner = 0; corner < 3; ++corner) {
+                    state.mesh.indices.push_back(vertexOnEdge(state, entry, cased.triangles[t][corner]));
+                }
+            }
+            for (int f = 0; f < cube::kFaceCount; ++f) {
+                if (piece.exits[f][0] < 0) continue;
+                const int axis = cube::faceAxis(f);
+                const int to[3] = {entry.x + faces.step[f][0], entry.y + faces.step[f][1], entry.z + faces.step[f][2]};
+                if (to[axis] < 0 || to[axis] > last[axis]) continue;  // the surface leaves the volume here
+                for (std::int8_t exit : piece.exits[f]) {
+                    if (exit >= 0) state.queue.push_back({to[0], to[1], to[2], faces.across[f][exit]});
+                }
+            }
+        }
+        if (state.head == state.queue.size()) {
+            state.queue.clear();
+            state.head = 0;
+        } else if (state.head > 4096 && state.head * 2 > state.queue.size()) {
+            state.queue.erase(state.queue.begin(), state.queue.begin() + std::ptrdiff_t(state.head));
+            state.head = 0;
+        }
+        state.cellsVisited += visited;
+        return visited;
+    }
+
+private:
+    bool markVisited(TrackState& state, const Entry& entry, int piece) const {
+        const std::size_t cell = grid_.index(entry.x, entry.y, entry.z);
+        if (state.denseVisited) {
+            const auto bit = static_cast<std::uint8_t>(1u << piece);
+            if (state.denseVisited[cell] & bit) return false;
+            state.denseVisited[cell] = static_cast<std::uint8_t>(state.denseVisited[cell] | bit);
+            return true;
+        }
+        return state.visitedPieces.insert(std::uint64_t(cell) * kMaxPieces + std::uint64_t(piece));
+    }
+
+    std::uint32_t vertexOnEdge(TrackState& state, const Entry& entry, int edge) const {
+        const auto& o = cube::edgeOrigin(edge);
+        const int axis = cube::edgeAxis(edge);
+        const int x = entry.x + o[0], y = entry.y + o[1], z = entry.z + o[2];
+        const std::uint64_t key = std::uint64_t(grid_.index(x, y, z)) * 3 + std::uint64_t(axis);
+        bool inserted = false;
+        const auto next = static_cast<std::uint32_t>(state.mesh.vertices.size());
+        const std::uint32_t id = state.vertexOfEdge.findOrInsert(key, next, inserted);
+        if (inserted) {
+            state.mesh.vertices.push_back(grid_.edgeVertex(x, y, z, axis));
+            state.mesh.vertexEdges.push_back(GridEdge{x, y, z, axis});
+        }
+        return id;
+    }
+
+    detail::SampleGrid<T> grid_;
+    const std::array<CaseContinuation, 256>& table_;
+};
+
+std::unique_ptr<TrackWorker> makeWorker(const Volume& volume, double iso, TableKind table) {
+    return visitSamples(volume, [&](const auto* samples) -> std::unique_ptr<TrackWorker> {
+        using T = std::remove_cv_t<std::remove_pointer_t<decltype(samples)>>;
+        return std::make_unique<TypedTrackWorker<T>>(volume, samples, iso, table);
+    });
+}
+
+bool edgeInside(const Volume& volume, const GridEdge& e) {
+    const Dims& n = volume.dims();
+    const int p[3] = {e.x, e.y, e.z};
+    if (e.axis < 0 || e.axis > 2) return false;
+    for (int k = 0; k < 3; ++k) {
+        if (p[k] < 0 || p[k] >= n[k] || (k == e.axis && p[k] + 1 >= n[k])) return false;
+    }
+    return true;
+}
+
+// Queues the cells around a seed edge, each entered through that edge.
+void queueSeed(const Volume& volume, const GridEdge& seed, std::vector<Entry>& queue) {
+    const Dims& n = volume.dims();
+    const int b = (seed.axis + 1) % 3, c = (seed.axis + 2) % 3;
+    for (int db = 0; db < 2; ++db) {
+        for (int dc = 0; dc < 2; ++dc) {
+            int cell[3] = {seed.x, seed.y, seed.z};
+            cell[b] -= db;
+            cell[c] -= dc;
+            if (cell[b] < 0 || cell[c] < 0 || cell[b] > n[b] - 2 || cell[c] > n[c] - 2) continue;
+            std::array<int, 3> local{0, 0, 0};
+            local[b] = db;
+            local[c] = dc;
+            queue.push_back({cell[0], cell[1], cell[2], cube::edgeAt(local, seed.axis)});
+        }
+    }
+}
+
+}  // namespace
+
+bool edgeIsCrossed(const Volume& volume, double iso, const GridEdge& edge) {
+    if (!edgeInside(volume, edge)) return false;
+    return makeWorker(volume, iso, TableKind::Consistent)->crossed(edge);
+}
+
+GridEdge nearestCrossedEdge(const Volume& volume, double iso, const Vec3d& worldPoint) {
+    const Dims& n = volume.dims();
+    const Vec3d& s = volume.spacing();
+    const Vec3d& o = volume.origin();
+    const auto worker = makeWorker(volume, iso, TableKind::Consistent);
+    int centre[3];
+    double p[3];
+    for (int k = 0; k < 3; ++k) {
+        p[k] = (worldPoint[k] - o[k]) / s[k];
+        const double clamped = std::clamp(std::isfinite(p[k]) ? p[k] : 0.0, 0.0, double(n[k] - 1));
+        centre[k] = static_cast<int>(std::lround(clamped));
+    }
+    const double minSpacing = std::min({s[0], s[1], s[2]});
+    double best = std::numeric_limits<double>::infinity();
+    GridEdge bestEdge;
+    const int maxRadius = std::max({n[0], n[1], n[2]});
+    for (int r = 0; r <= maxRadius; ++r) {
+        if (std::isfinite(best) && (r - 1) * minSpacing > best) break;
+        const int lo[3] = {centre[0] - r, centre[1] - r, centre[2] - r};
+        const int hi[3] = {centre[0] + r, centre[1] + r, centre[2] + r};
+        for (int z = std::max(lo[2], 0); z <= std::min(hi[2], n[2] - 1); ++z) {
+            for (int y = std::max(lo[1], 0); y <= std::min(hi[1], n[1] - 1); ++y) {
+                const bool shellYZ = z == lo[2] || z == hi[2] || y == lo[1] || y == hi[1];
+                for (int x = std::max(lo[0], 0); x <= std::min(hi[0], n[0] - 1);
+                     x += (shellYZ || x == hi[0]) ? 1 : std::max(1, hi[0] - x)) {
+                    for (int axis = 0; axis < 3; ++axis) {
+                        const GridEdge e{x, y, z, axis};
+                        if (!edgeInside(volume, e) || !worker->crossed(e)) continue;
+                        double d2 = 0.0;
+                        const int q[3] = {x, y, z};
+                        for (int k = 0; k < 3; ++k) {
+                            const double mid = q[k] + (k == axis ? 0.5 : 0.0);
+                            d2 += (mid - p[k]) * (mid - p[k]) * s[k] * s[k];
+                        }
+                        if (std::sqrt(d2) < best) {
+                            best = std::sqrt(d2);
+                            bestEdge = e;
+                        }
+                    }
+                }
+            }
+        }
+    }
+    if (!std::isfinite(best)) {
+        throw InputError("no surface at iso " + std::to_string(iso) + ": no grid edge crosses it");
+    }
+    return bestEdge;
+}
+
+GridEdge edgeOfVertex(const Mesh& mesh, std::uint32_t vertex) {
+    if (vertex >= mesh.vertexEdges.size()) throw InputError("picked vertex " + std::to_string(vertex) + " is not in the mesh");
+    return mesh.vertexEdges[vertex];
+}
+
+GridEdge edgeOfTriangle(const Mesh& mesh, std::size_t triangle, const Vec3d& worldPoint) {
+    if (triangle >= mesh.triangleCount()) throw InputError("picked triangle " + std::to_string(triangle) + " is not in the mesh");
+    std::uint32_t nearest = mesh.indices[3 * triangle];
+    double best = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < 3; ++k) {
+        const std::uint32_t v = mesh.indices[3 * triangle + std::size_t(k)];
+        double d2 = 0.0;
+        for (int i = 0; i < 3; ++i) d2 += (mesh.vertices[v].position[i] - worldPoint[i]) * (mesh.vertices[v].position[i] - worldPoint[i]);
+        if (d2 < best) best = d2, nearest = v;
+    }
+    return edgeOfVertex(mesh, nearest);
+}
+
+// ---- SurfaceTracker -------------------------------------------------------
+
+struct SurfaceTracker::Impl {
+    const Volume* volume;
+    double iso;
+    TableKind table;
+    std::unique_ptr<TrackWorker> worker;
+    TrackState state;
+};
+
+SurfaceTracker::SurfaceTracker(const Volume& volume, double iso, TableKind table)
+    : impl_(std::make_unique<Impl>(Impl{&volume, iso, table, makeWorker(volume, iso, table), {}})) {}
+SurfaceTracker::~SurfaceTracker() = default;
+SurfaceTracker::SurfaceTracker(SurfaceTracker&&) noexcept = default;
+SurfaceTracker& SurfaceTracker::operator=(SurfaceTracker&&) noexcept = default;
+
+void SurfaceTracker::start(const GridEdge& seed) {
+    if (!edgeInside(*impl_->volume, seed)) throw InputError("seed edge " + edgeText(seed) + " is outside the volume");
+    if (!impl_->worker->crossed(seed)) {
+        throw InputError("seed edge " + edgeText(seed) + " does not cross iso " + std::to_string(impl_->iso));
+    }
+    impl_->state = TrackState{};
+    queueSeed(*impl_->volume, seed, impl_->state.queue);
+}
+
+SurfaceTracker::Step SurfaceTracker::step(std::size_t cellBudget) {
+    TrackState& s = impl_->state;
+    Step step{s.mesh.vertices.size(), 0, s.mesh.indices.size(), 0, 0};
+    step.cellsVisited = impl_->worker->advance(s, cellBudget);
+    step.vertexCount = s.mesh.vertices.size() - step.firstVertex;
+    step.indexCount = s.mesh.indices.size() - step.firstIndex;
+    return step;
+}
+
+SurfaceTracker::Step SurfaceTracker::stepFor(std::chrono::nanoseconds budget) {
+    const auto deadline = Clock::now() + budget;
+    const TrackState& s = impl_->state;
+    Step total{s.mesh.vertices.size(), 0, s.mesh.indices.size(), 0, 0};
+    do {
+        total.cellsVisited += step(512).cellsVisited;
+    } while (!done() && Clock::now() < deadline);
+    total.vertexCount = s.mesh.vertices.size() - total.firstVertex;
+    total.indexCount = s.mesh.indices.size() - total.firstIndex;
+    return total;
+}
+
+bool SurfaceTracker::done() const { return impl_->state.head >= impl_->state.queue.size(); }
+const Mesh& SurfaceTracker::mesh() const { return impl_->state.mesh; }
+std::size_t SurfaceTracker::cellsVisited() const { return impl_->state.cellsVisited; }
+Mesh SurfaceTracker::takeMesh() { return std::move(impl_->state.mesh); }
+
+// ---- whole surfaces -------------------------------------------------------
+
+Surface trackSurface(const Volume& volume, double iso, const GridEdge& seed, TableKind table) {
+    const auto start = Clock::now();
+    SurfaceTracker tracker(volume, iso, table);
+    tracker.start(seed);
+    while (!tracker.done()) tracker.step(std::numeric_limits<std::size_t>::max());
+    Surface surface;
+    const std::size_t cells = tracker.cellsVisited();
+    surface.mesh = tracker.takeMesh();
+    surface.stats = measureSurface(surface.mesh, volume);
+    surface.stats.cellsVisited = cells;
+    surface.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return surface;
+}
+
+std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableKind table) {
+    std::vector<Surface> surfaces;
+    const Dims& n = volume.dims();
+    if (n[0] < 2 || n[1] < 2 || n[2] < 2) return surfaces;
+    const auto worker = makeWorker(volume, iso, table);
+    const auto& continuation = continuationTable(table);
+    std::vector<std::uint8_t> visited(volume.sampleCount(), 0);
+    for (int z = 0; z + 1 < n[2]; ++z) {
+        for (int y = 0; y + 1 < n[1]; ++y) {
+            for (int x = 0; x + 1 < n[0]; ++x) {
+                const std::uint8_t config = worker->config(x, y, z);
+                if (config == 0 || config == 255) continue;
+                const CaseContinuation& cased = continuation[config];
+                const std::size_t cell = volume.index(x, y, z);
+                for (int p = 0; p < cased.pieceCount; ++p) {
+                    if (visited[cell] >> p & 1u) continue;
+                    const auto start = Clock::now();
+                    TrackState state;
+                    state.denseVisited = visited.data();
+                    int entryEdge = 0;
+                    while (!(cased.pieces[p].edgeMask >> entryEdge & 1u)) ++entryEdge;
+                    state.queue.push_back({x, y, z, entryEdge});
+                    while (state.head < state.queue.size()) {
+                        worker->advance(state, std::numeric_limits<std::size_t>::max());
+                    }
+                    Surface surface;
+                    surface.mesh = std::move(state.mesh);
+                    surface.stats = measureSurface(surface.mesh, volume);
+                    surface.stats.cellsVisited = state.cellsVisited;
+                    surface.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+                    surfaces.push_back(std::move(surface));
+                }
+            }
+        }
+    }
+    std::stable_sort(surfaces.begin(), surfaces.end(), [](const Surface& a, const Surface& b) {
+        return a.mesh.triangleCount() > b.mesh.triangleCount();
+    });
+    return surfaces;
+}
+
+// ---- measurement ----------------------------------------------------------
+
+SurfaceStats measureSurface(const Mesh& mesh, const Volume& volume) {
+    SurfaceStats stats;
+    stats.triangles = mesh.triangleCount();
+    stats.vertices = mesh.vertices.size();
+    stats.bytes = mesh.byteSize();
+    if (!mesh.vertices.empty()) {
+        for (int k = 0; k < 3; ++k) {
+            stats.boundsMin[k] = std::numeric_limits<double>::infinity();
+            stats.boundsMax[k] = -std::numeric_limits<double>::infinity();
+        }
+        for (const Vertex& v : mesh.vertices) {
+            for (int k = 0; k < 3; ++k) {
+                stats.boundsMin[k] = std::min(stats.boundsMin[k], double(v.position[k]));
+                stats.boundsMax[k] = std::max(stats.boundsMax[k], double(v.position[k]));
+            }
+        }
+    }
+    // Closed: every directed side appears once and so does its reverse.
+    detail::FlatHashMap sides(mesh.indices.size());
+    bool closed = !mesh.indices.empty();
+    double area = 0.0, signedVolume = 0.0;
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        const std::uint32_t* idx = &mesh.indices[3 * t];
+        const float* a = mesh.vertices[idx[0]].position;
+        const float* b = mesh.vertices[idx[1]].position;
+        const float* c = mesh.vertices[idx[2]].position;
+        const double u[3] = {double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2]};
+        const double v[3] = {double(c[0]) - a[0], double(c[1]) - a[1], double(c[2]) - a[2]};
+        const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+        area += 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        signedVolume += (double(a[0]) * n[0] + double(a[1]) * n[1] + double(a[2]) * n[2]) / 6.0;
+        for (int k = 0; k < 3; ++k) {
+            closed &= sides.insert(std::uint64_t(idx[k]) << 32 | idx[(k + 1) % 3]);
+        }
+    }
+    for (std::size_t t = 0; closed && t < mesh.triangleCount(); ++t) {
+        const std::uint32_t* idx = &mesh.indices[3 * t];
+        for (int k = 0; k < 3; ++k) closed &= sides.find(std::uint64_t(idx[(k + 1) % 3]) << 32 | idx[k]) != nullptr;
+    }
+    stats.area = area;
+    stats.closed = closed;
+    if (closed) stats.enclosedVolume = std::abs(signedVolume);
+    const Dims& dims = volume.dims();
+    for (const GridEdge& e : mesh.vertexEdges) {
+        const int p[3] = {e.x, e.y, e.z};
+        for (int k = 0; k < 3; ++k) {
+            if (k != e.axis && (p[k] == 0 || p[k] == dims[k] - 1)) stats.touchesBorder = true;
+        }
+        if (stats.touchesBorder) break;
+    }
+    return stats;
+}
+
+}  // namespace isotrack

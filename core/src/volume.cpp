@@ -1,0 +1,107 @@
+#include "isotrack/volume.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "isotrack/errors.h"
+
+namespace isotrack {
+
+const char* scalarTypeName(ScalarType type) {
+    switch (type) {
+        case ScalarType::UInt8: return "uint8";
+        case ScalarType::Int8: return "int8";
+        case ScalarType::UInt16: return "uint16";
+        case ScalarType::Int16: return "int16";
+        case ScalarType::UInt32: return "uint32";
+        case ScalarType::Int32: return "int32";
+        case ScalarType::Float32: return "float32";
+        case ScalarType::Float64: return "float64";
+    }
+    return "unknown";
+}
+
+std::size_t scalarTypeSize(ScalarType type) {
+    switch (type) {
+        case ScalarType::UInt8:
+        case ScalarType::Int8: return 1;
+        case ScalarType::UInt16:
+        case ScalarType::Int16: return 2;
+        case ScalarType::UInt32:
+        case ScalarType::Int32:
+        case ScalarType::Float32: return 4;
+        case ScalarType::Float64: return 8;
+    }
+    return 0;
+}
+
+Volume::Volume(Dims dims, ScalarType type, Vec3d spacing, Vec3d origin)
+    : dims_(dims), type_(type), spacing_(spacing), origin_(origin) {
+    const std::string dimsText =
+        std::to_string(dims[0]) + " x " + std::to_string(dims[1]) + " x " + std::to_string(dims[2]);
+    if (dims[0] < 1 || dims[1] < 1 || dims[2] < 1)
+        throw InputError("volume: dimensions must be positive, got " + dimsText);
+    // Check step by step so the product itself can never overflow.
+    const std::uint64_t maxSamples = kMaxVolumeBytes / scalarTypeSize(type);
+    const auto nx = std::uint64_t(dims[0]), ny = std::uint64_t(dims[1]), nz = std::uint64_t(dims[2]);
+    if (nx > maxSamples || ny > maxSamples / nx || nz > maxSamples / (nx * ny))
+        throw InputError("volume: " + dimsText + " " + scalarTypeName(type) + " samples exceed the " +
+                         std::to_string(kMaxVolumeBytes >> 30) + " GiB limit");
+    bytes_.assign(std::size_t(nx * ny * nz) * scalarTypeSize(type), std::byte{0});
+}
+
+namespace {
+
+template <class T>
+T toSample(double v) {
+    if constexpr (std::is_floating_point_v<T>) {
+        return static_cast<T>(v);
+    } else {
+        // Integers saturate rather than wrap, so out-of-range writes stay predictable.
+        if (std::isnan(v)) return T(0);
+        const double lo = double(std::numeric_limits<T>::min());
+        const double hi = double(std::numeric_limits<T>::max());
+        return static_cast<T>(std::clamp(std::nearbyint(v), lo, hi));
+    }
+}
+
+}  // namespace
+
+double Volume::value(int x, int y, int z) const {
+    const std::size_t i = index(x, y, z);
+    return visitSamples(*this, [i](const auto* samples) { return double(samples[i]); });
+}
+
+void Volume::setValue(int x, int y, int z, double v) {
+    const std::size_t i = index(x, y, z);
+    switch (type_) {
+        case ScalarType::UInt8: data<std::uint8_t>()[i] = toSample<std::uint8_t>(v); return;
+        case ScalarType::Int8: data<std::int8_t>()[i] = toSample<std::int8_t>(v); return;
+        case ScalarType::UInt16: data<std::uint16_t>()[i] = toSample<std::uint16_t>(v); return;
+        case ScalarType::Int16: data<std::int16_t>()[i] = toSample<std::int16_t>(v); return;
+        case ScalarType::UInt32: data<std::uint32_t>()[i] = toSample<std::uint32_t>(v); return;
+        case ScalarType::Int32: data<std::int32_t>()[i] = toSample<std::int32_t>(v); return;
+        case ScalarType::Float32: data<float>()[i] = toSample<float>(v); return;
+        case ScalarType::Float64: data<double>()[i] = v; return;
+    }
+}
+
+std::array<double, 2> Volume::range() const {
+    const std::size_t n = bytes_.empty() ? 0 : sampleCount();
+    return visitSamples(*this, [n](const auto* samples) {
+        double lo = std::numeric_limits<double>::infinity();
+        double hi = -lo;
+        for (std::size_t i = 0; i < n; ++i) {
+            const double v = double(samples[i]);
+            if (!std::isfinite(v)) continue;
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
+        }
+        if (lo > hi) return std::array<double, 2>{std::nan(""), std::nan("")};
+        return std::array<double, 2>{lo, hi};
+    });
+}
+
+}  // namespace isotrack

@@ -1,0 +1,13 @@
+# Fails when any file under core/ includes or links a GL, GLFW or ImGui header or target.
+file(GLOB_RECURSE files ${CORE_DIR}/*.h ${CORE_DIR}/*.cpp ${CORE_DIR}/CMakeLists.txt)
+set(offenders "")
+foreach(f IN LISTS files)
+  file(STRINGS ${f} lines REGEX "(#include[ \t]*[<\"](GL/|GLFW/|glad/|imgui|OpenGL/))|(glfw|imgui|OpenGL::|glad)[ \t]*\\)?$")
+  if(lines)
+    list(APPEND offenders "${f}: ${lines}")
+  endif()
+endforeach()
+if(offenders)
+  message(FATAL_ERROR "core/ must not depend on GL, GLFW or ImGui:\n${offenders}")
+endif()
+message(STATUS "core/ is free of GL, GLFW and ImGui (${CMAKE_ARGC} checked)")
