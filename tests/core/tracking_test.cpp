@@ -1,0 +1,239 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+
+#include "isotrack/continuation.h"
+#include "isotrack/cube.h"
+#include "isotrack/errors.h"
+#include "isotrack/fields.h"
+#include "isotrack/io.h"
+#include "isotrack/marching_cubes.h"
+#include "isotrack/tracking.h"
+#include "mesh_checks.h"
+
+using namespace isotrack;
+using isotrack::testing::triangleSet;
+using isotrack::testing::vertexEdgeSet;
+
+namespace {
+
+std::set<std::uint16_t> pieceMasks(const CaseContinuation& c) {
+    std::set<std::uint16_t> masks;
+    for (int p = 0; p < c.pieceCount; ++p) masks.insert(c.pieces[p].edgeMask);
+    return masks;
+}
+
+std::uint16_t rotateMask(std::uint16_t mask, const cube::Rotation& r) {
+    unsigned out = 0;
+    for (int e = 0; e < 12; ++e) {
+        if (mask >> e & 1u) out |= 1u << r.edge[e];
+    }
+    return static_cast<std::uint16_t>(out);
+}
+
+// Every surface of a field together must be the exhaustive mesh, split.
+void requireAllEqualsExhaustive(const Volume& volume, double iso, TableKind table) {
+    const Mesh whole = marchingCubes(volume, iso, table);
+    const auto surfaces = extractAllSurfaces(volume, iso, table);
+    std::multiset<std::array<std::uint64_t, 3>> united;
+    std::set<std::uint64_t> seenEdges;
+    std::size_t vertices = 0;
+    for (std::size_t i = 0; i < surfaces.size(); ++i) {
+        const auto tris = triangleSet(surfaces[i].mesh, volume.dims());
+        united.insert(tris.begin(), tris.end());
+        const auto edges = vertexEdgeSet(surfaces[i].mesh, volume.dims());
+        CHECK(edges.size() == surfaces[i].mesh.vertices.size());  // one vertex per crossed edge
+        for (std::uint64_t e : edges) REQUIRE(seenEdges.insert(e).second);  // no vertex shared by two surfaces
+        vertices += surfaces[i].mesh.vertices.size();
+        if (i > 0) CHECK(surfaces[i - 1].mesh.triangleCount() >= surfaces[i].mesh.triangleCount());
+    }
+    CHECK(united == triangleSet(whole, volume.dims()));
+    CHECK(vertices == whole.vertices.size());
+}
+
+}  // namespace
+
+TEST_CASE("continuation pieces partition each configuration's triangles and edges", "[core][tracking][tables]") {
+    for (TableKind kind : {TableKind::Consistent, TableKind::Classic}) {
+        const auto& table = continuationTable(kind);
+        const TriangleTable& triangles = triangleTable(kind);
+        for (int c = 0; c < 256; ++c) {
+            INFO(tableKindName(kind) << " configuration " << c);
+            const CaseContinuation& cc = table[c];
+            int triangleTotal = 0;
+            unsigned union_ = 0;
+            for (int p = 0; p < cc.pieceCount; ++p) {
+                const Piece& piece = cc.pieces[p];
+                CHECK((union_ & piece.edgeMask) == 0);
+                union_ |= piece.edgeMask;
+                triangleTotal += piece.triangleCount;
+                for (int t = piece.firstTriangle; t < piece.firstTriangle + piece.triangleCount; ++t) {
+                    for (int k = 0; k < 3; ++k) CHECK(cc.pieceOfEdge[cc.triangles[t][k]] == p);
+                }
+                // A piece's edges on a face are reported for that face: one per segment
+                // with the consistent table, all of them with the classic one.
+                for (int f = 0; f < 6; ++f) {
+                    int onFace = 0;
+                    for (int e = 0; e < 12; ++e) onFace += (piece.edgeMask >> e & 1u) && cube::edgeOnFace(e, f);
+                    int exits = 0;
+                    while (exits < 4 && piece.exits[f][exits] >= 0) ++exits;
+                    CHECK(onFace == (kind == TableKind::Consistent ? 2 * exits : exits));
+                    for (int k = 0; k < exits; ++k) {
+                        CHECK(cube::edgeOnFace(piece.exits[f][k], f));
+                        CHECK(cc.pieceOfEdge[piece.exits[f][k]] == p);
+                    }
+                }
+            }
+            CHECK(triangleTotal == triangles[std::uint8_t(c)].count);
+            unsigned crossed = 0;
+            for (int e = 0; e < 12; ++e) {
+                if ((c >> cube::kEdgeVertices[e][0] & 1) != (c >> cube::kEdgeVertices[e][1] & 1)) crossed |= 1u << e;
+            }
+            CHECK(union_ == crossed);
+        }
+    }
+}
+
+TEST_CASE("a configuration and its rotations have rotated pieces", "[core][tracking][tables]") {
+    const auto& table = continuationTable(TableKind::Consistent);
+    for (int c = 0; c < 256; ++c) {
+        for (const cube::Rotation& r : cube::rotations()) {
+            std::set<std::uint16_t> rotated;
+            for (std::uint16_t mask : pieceMasks(table[c])) rotated.insert(rotateMask(mask, r));
+            REQUIRE(rotated == pieceMasks(table[cube::rotateConfig(std::uint8_t(c), r)]));
+        }
+    }
+}
+
+TEST_CASE("tracking from any blob returns exactly that blob", "[core][tracking]") {
+    const int n = 64;
+    const Volume volume = makeField({"blobs", n});
+    const double iso = fieldDefaultIso("blobs");
+    const auto all = extractAllSurfaces(volume, iso);
+    REQUIRE(all.size() == std::size_t(blobsFieldCount()));
+    std::map<std::uint64_t, std::size_t> surfaceOfEdge;
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        for (std::uint64_t e : vertexEdgeSet(all[i].mesh, volume.dims())) surfaceOfEdge[e] = i;
+    }
+    for (const Blob& blob : blobsFieldBlobs(n)) {
+        const Vec3d onSurface{blob.centre[0] + blob.radius, blob.centre[1], blob.centre[2]};
+        const GridEdge seed = nearestCrossedEdge(volume, iso, onSurface);
+        const Surface s = trackSurface(volume, iso, seed);
+        const std::size_t expected = surfaceOfEdge.at(isotrack::testing::edgeKey(seed, volume.dims()));
+        CHECK(triangleSet(s.mesh, volume.dims()) == triangleSet(all[expected].mesh, volume.dims()));
+        CHECK(s.stats.closed);
+        CHECK_FALSE(s.stats.touchesBorder);
+        if (blob.radius > 4.0) {  // smaller blobs are too coarsely sampled for a volume check
+            CHECK(*s.stats.enclosedVolume == Approx(4.0 / 3.0 * M_PI * std::pow(blob.radius, 3)).epsilon(0.05));
+        }
+        // A closed surface visits one cell piece per cell it passes through.
+        CHECK(s.stats.cellsVisited <= s.mesh.triangleCount());
+    }
+}
+
+TEST_CASE("every surface together is the exhaustive mesh, triangle for triangle", "[core][tracking]") {
+    SECTION("blobs") { requireAllEqualsExhaustive(makeField({"blobs", 64}), fieldDefaultIso("blobs"), TableKind::Consistent); }
+    SECTION("shells") { requireAllEqualsExhaustive(makeField({"shells", 48}), 0.0, TableKind::Consistent); }
+    SECTION("noise, consistent") { requireAllEqualsExhaustive(makeField({"noise", 32}), 0.5, TableKind::Consistent); }
+    SECTION("noise, classic") { requireAllEqualsExhaustive(makeField({"noise", 32}), 0.5, TableKind::Classic); }
+    SECTION("gyroid") { requireAllEqualsExhaustive(makeField({"gyroid", 48}), 0.0, TableKind::Consistent); }
+}
+
+TEST_CASE("nested shells are three closed surfaces, one inside another", "[core][tracking]") {
+    const auto surfaces = extractAllSurfaces(makeField({"shells", 64}), 0.0);
+    REQUIRE(surfaces.size() == 3);
+    const auto radii = shellsFieldRadii(64);
+    for (const Surface& s : surfaces) CHECK(s.stats.closed);
+    // Largest first: the shell's outer wall, its inner wall, then the ball.
+    CHECK(surfaces[0].stats.area == Approx(4 * M_PI * radii[2] * radii[2]).epsilon(0.02));
+    CHECK(surfaces[1].stats.area == Approx(4 * M_PI * radii[1] * radii[1]).epsilon(0.02));
+    CHECK(surfaces[2].stats.area == Approx(4 * M_PI * radii[0] * radii[0]).epsilon(0.02));
+}
+
+TEST_CASE("incremental growth appends contiguous ranges that add up to the surface", "[core][tracking]") {
+    const Volume volume = makeField({"sphere", 48});
+    const GridEdge seed = nearestCrossedEdge(volume, 0.0, {0.0, 24.0, 24.0});
+    SurfaceTracker tracker(volume, 0.0);
+    tracker.start(seed);
+    std::size_t vertices = 0, indices = 0, steps = 0;
+    double firstStepReach = 0.0;
+    while (!tracker.done()) {
+        const auto step = tracker.step(50);
+        CHECK(step.firstVertex == vertices);
+        CHECK(step.firstIndex == indices);
+        CHECK(step.cellsVisited <= 50);
+        vertices += step.vertexCount;
+        indices += step.indexCount;
+        if (steps++ == 0) {
+            const auto& m = tracker.mesh();
+            for (std::size_t v = 0; v < m.vertices.size(); ++v) {
+                const double dx = m.vertices[v].position[0] - m.vertices[0].position[0];
+                const double dy = m.vertices[v].position[1] - m.vertices[0].position[1];
+                const double dz = m.vertices[v].position[2] - m.vertices[0].position[2];
+                firstStepReach = std::max(firstStepReach, std::sqrt(dx * dx + dy * dy + dz * dz));
+            }
+        }
+    }
+    CHECK(steps > 10);
+    CHECK(firstStepReach < 10.0);  // breadth-first: the first 50 cells stay near the seed
+    CHECK(vertices == tracker.mesh().vertices.size());
+    CHECK(indices == tracker.mesh().indices.size());
+    CHECK(triangleSet(tracker.mesh(), volume.dims()) == triangleSet(marchingCubes(volume, 0.0), volume.dims()));
+}
+
+TEST_CASE("seeds: nearest crossed edge, picked vertices, and refusals", "[core][tracking]") {
+    const Volume volume = makeField({"sphere", 32});
+    const Vec3d c = sphereFieldCenter(32);
+    const double r = sphereFieldRadius(32);
+    const GridEdge e = nearestCrossedEdge(volume, 0.0, {c[0], c[1], c[2] + r});
+    CHECK(edgeIsCrossed(volume, 0.0, e));
+    CHECK(std::abs(e.z - (c[2] + r)) < 1.5);
+    // From far outside the volume the search still finds the surface.
+    CHECK(edgeIsCrossed(volume, 0.0, nearestCrossedEdge(volume, 0.0, {-100.0, c[1], c[2]})));
+
+    const Surface s = trackSurface(volume, 0.0, e);
+    CHECK(edgeOfVertex(s.mesh, 7) == s.mesh.vertexEdges[7]);
+    const float* p = s.mesh.vertices[s.mesh.indices[4]].position;
+    CHECK(edgeOfTriangle(s.mesh, 1, {p[0], p[1], p[2]}) == s.mesh.vertexEdges[s.mesh.indices[4]]);
+
+    CHECK_THROWS_AS(trackSurface(volume, 0.0, GridEdge{0, 0, 0, 0}), InputError);   // not crossed
+    CHECK_THROWS_AS(trackSurface(volume, 0.0, GridEdge{31, 0, 0, 0}), InputError);  // leaves the volume
+    CHECK_THROWS_AS(nearestCrossedEdge(volume, 1e9, c), InputError);                 // no surface at all
+}
+
+TEST_CASE("surface statistics: bounds, area, volume and the border", "[core][tracking]") {
+    const int n = 64;
+    const Volume volume = makeField({"sphere", n});
+    const Vec3d c = sphereFieldCenter(n);
+    const double r = sphereFieldRadius(n);
+    const Surface s = trackSurface(volume, 0.0, nearestCrossedEdge(volume, 0.0, c));
+    CHECK(s.stats.closed);
+    CHECK_FALSE(s.stats.touchesBorder);
+    CHECK(s.stats.area == Approx(4 * M_PI * r * r).epsilon(0.01));
+    CHECK(*s.stats.enclosedVolume == Approx(4.0 / 3.0 * M_PI * r * r * r).epsilon(0.01));
+    for (int k = 0; k < 3; ++k) {
+        CHECK(s.stats.boundsMin[k] == Approx(c[k] - r).margin(0.05));
+        CHECK(s.stats.boundsMax[k] == Approx(c[k] + r).margin(0.05));
+    }
+    CHECK(s.stats.bytes == s.mesh.byteSize());
+    // The gyroid fills the volume and is cut open by its border.
+    const Volume gyroid = makeField({"gyroid", 32});
+    const auto open = extractAllSurfaces(gyroid, 0.0);
+    REQUIRE_FALSE(open.empty());
+    CHECK(open[0].stats.touchesBorder);
+    CHECK_FALSE(open[0].stats.closed);
+}
+
+TEST_CASE("CT skull: every surface equals the exhaustive mesh; as many surfaces as VTK finds", "[core][tracking][ct]") {
+    const std::string path = std::string(ISOTRACK_SOURCE_DIR) + "/assets/ct/cranium.nrrd";
+    if (!std::ifstream(path)) {
+        WARN("skipped: " << path << " is missing (scripts/get_ct.sh makes it)");
+        return;
+    }
+    const Volume volume = loadVolume(path);
+    requireAllEqualsExhaustive(volume, 400.5, TableKind::Consistent);
+    // vtkFlyingEdges3D + vtkPolyDataConnectivityFilter finds 240 regions (scripts/vtk_components.py).
+    CHECK(extractAllSurfaces(volume, 400.5).size() == 240);
+}
