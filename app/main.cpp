@@ -1,0 +1,49 @@
+// isotrack: extract, track and explore isosurfaces.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+#include <new>
+#include <utility>
+#include <vector>
+
+#include "cli/commands.h"
+
+int main(int argc, char** argv) {
+    CLI::App app{"isotrack: extract and track isosurfaces of 3D scalar volumes, one connected surface at a time",
+                 "isotrack"};
+    app.set_version_flag("--version", "isotrack 0.1.0");
+    std::vector<std::pair<CLI::App*, isotrack::cli::RunCommand>> commands;
+    auto add = [&](isotrack::cli::RunCommand (*addCommand)(CLI::App&)) {
+        const std::size_t before = app.get_subcommands({}).size();
+        auto run = addCommand(app);
+        commands.emplace_back(app.get_subcommands({})[before], std::move(run));
+    };
+    add(isotrack::cli::addExtractCommand);
+    app.require_subcommand(0, 1);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::fprintf(stderr, "isotrack: %s (see isotrack --help)\n", e.what());
+        return 2;
+    }
+
+    try {
+        for (auto& [command, run] : commands) {
+            if (command->parsed()) return run();
+        }
+        std::fputs(app.help().c_str(), stdout);
+        return 0;
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "isotrack: out of memory\n");
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "isotrack: %s\n", e.what());
+    }
+    return 1;
+}
