@@ -33,6 +33,8 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+SurfaceStats measureTracked(const Mesh& mesh, const Volume& volume, TableKind table, bool leftVolume);
+
 struct Entry {
     int x, y, z;
     int edge;
@@ -71,6 +73,7 @@ struct TrackState {
     std::vector<Entry> queue;
     std::size_t head = 0;
     std::size_t cellsVisited = 0;
+    bool leftVolume = false;
 };
 
 class TrackWorker {
@@ -113,16 +116,22 @@ public:
             if (p < 0 || !markVisited(state, entry, p)) continue;
             ++visited;
             const Piece& piece = cased.pieces[p];
+            std::array<std::uint32_t, 12> vertexOf;
+            for (unsigned mask = piece.edgeMask; mask != 0; mask &= mask - 1) {
+                const int edge = __builtin_ctz(mask);
+                vertexOf[edge] = vertexOnEdge(state, entry, edge);
+            }
             for (int t = piece.firstTriangle; t < piece.firstTriangle + piece.triangleCount; ++t) {
-                for (int corner = 0; corner < 3; ++corner) {
-                    state.mesh.indices.push_back(vertexOnEdge(state, entry, cased.triangles[t][corner]));
-                }
+                for (int corner = 0; corner < 3; ++corner) state.mesh.indices.push_back(vertexOf[cased.triangles[t][corner]]);
             }
             for (int f = 0; f < cube::kFaceCount; ++f) {
                 if (piece.exits[f][0] < 0) continue;
                 const int axis = cube::faceAxis(f);
                 const int to[3] = {entry.x + faces.step[f][0], entry.y + faces.step[f][1], entry.z + faces.step[f][2]};
-                if (to[axis] < 0 || to[axis] > last[axis]) continue;  // the surface leaves the volume here
+                if (to[axis] < 0 || to[axis] > last[axis]) {
+                    state.leftVolume = true;  // the surface is cut open by the volume's border here
+                    continue;
+                }
                 for (std::int8_t exit : piece.exits[f]) {
                     if (exit >= 0) state.queue.push_back({to[0], to[1], to[2], faces.across[f][exit]});
                 }
@@ -328,6 +337,7 @@ SurfaceTracker::Step SurfaceTracker::stepFor(std::chrono::nanoseconds budget) {
 bool SurfaceTracker::done() const { return impl_->state.head >= impl_->state.queue.size(); }
 const Mesh& SurfaceTracker::mesh() const { return impl_->state.mesh; }
 std::size_t SurfaceTracker::cellsVisited() const { return impl_->state.cellsVisited; }
+bool SurfaceTracker::leftVolume() const { return impl_->state.leftVolume; }
 Mesh SurfaceTracker::takeMesh() { return std::move(impl_->state.mesh); }
 
 // ---- whole surfaces -------------------------------------------------------
@@ -339,8 +349,9 @@ Surface trackSurface(const Volume& volume, double iso, const GridEdge& seed, Tab
     while (!tracker.done()) tracker.step(std::numeric_limits<std::size_t>::max());
     Surface surface;
     const std::size_t cells = tracker.cellsVisited();
+    const bool leftVolume = tracker.leftVolume();
     surface.mesh = tracker.takeMesh();
-    surface.stats = measureSurface(surface.mesh, volume);
+    surface.stats = measureTracked(surface.mesh, volume, table, leftVolume);
     surface.stats.cellsVisited = cells;
     surface.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return surface;
@@ -373,7 +384,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
                     }
                     Surface surface;
                     surface.mesh = std::move(state.mesh);
-                    surface.stats = measureSurface(surface.mesh, volume);
+                    surface.stats = measureTracked(surface.mesh, volume, table, state.leftVolume);
                     surface.stats.cellsVisited = state.cellsVisited;
                     surface.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
                     surfaces.push_back(std::move(surface));
@@ -389,7 +400,39 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
 
 // ---- measurement ----------------------------------------------------------
 
-SurfaceStats measureSurface(const Mesh& mesh, const Volume& volume) {
+namespace {
+
+// Every directed side appears once and so does its reverse: no holes, no
+// non-manifold edges, consistent winding.
+bool isClosed(const Mesh& mesh) {
+    if (mesh.indices.empty()) return false;
+    detail::FlatHashMap sides(mesh.indices.size());
+    for (std::size_t i = 0; i < mesh.indices.size(); ++i) {
+        const std::size_t next = i % 3 == 2 ? i - 2 : i + 1;
+        if (!sides.insert(std::uint64_t(mesh.indices[i]) << 32 | mesh.indices[next])) return false;
+    }
+    for (std::size_t i = 0; i < mesh.indices.size(); ++i) {
+        const std::size_t next = i % 3 == 2 ? i - 2 : i + 1;
+        if (!sides.find(std::uint64_t(mesh.indices[next]) << 32 | mesh.indices[i])) return false;
+    }
+    return true;
+}
+
+SurfaceStats measure(const Mesh& mesh, const Volume& volume, std::optional<bool> knownClosed);
+
+// With the consistent table a tracked surface has no holes, so it is closed
+// exactly when it never reached the volume's border.
+SurfaceStats measureTracked(const Mesh& mesh, const Volume& volume, TableKind table, bool leftVolume) {
+    return measure(mesh, volume, table == TableKind::Consistent ? std::optional<bool>(!leftVolume) : std::nullopt);
+}
+
+}  // namespace
+
+SurfaceStats measureSurface(const Mesh& mesh, const Volume& volume) { return measure(mesh, volume, std::nullopt); }
+
+namespace {
+
+SurfaceStats measure(const Mesh& mesh, const Volume& volume, std::optional<bool> knownClosed) {
     SurfaceStats stats;
     stats.triangles = mesh.triangleCount();
     stats.vertices = mesh.vertices.size();
@@ -406,9 +449,6 @@ SurfaceStats measureSurface(const Mesh& mesh, const Volume& volume) {
             }
         }
     }
-    // Closed: every directed side appears once and so does its reverse.
-    detail::FlatHashMap sides(mesh.indices.size());
-    bool closed = !mesh.indices.empty();
     double area = 0.0, signedVolume = 0.0;
     for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
         const std::uint32_t* idx = &mesh.indices[3 * t];
@@ -420,17 +460,10 @@ SurfaceStats measureSurface(const Mesh& mesh, const Volume& volume) {
         const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
         area += 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
         signedVolume += (double(a[0]) * n[0] + double(a[1]) * n[1] + double(a[2]) * n[2]) / 6.0;
-        for (int k = 0; k < 3; ++k) {
-            closed &= sides.insert(std::uint64_t(idx[k]) << 32 | idx[(k + 1) % 3]);
-        }
-    }
-    for (std::size_t t = 0; closed && t < mesh.triangleCount(); ++t) {
-        const std::uint32_t* idx = &mesh.indices[3 * t];
-        for (int k = 0; k < 3; ++k) closed &= sides.find(std::uint64_t(idx[(k + 1) % 3]) << 32 | idx[k]) != nullptr;
     }
     stats.area = area;
-    stats.closed = closed;
-    if (closed) stats.enclosedVolume = std::abs(signedVolume);
+    stats.closed = knownClosed ? *knownClosed && !mesh.indices.empty() : isClosed(mesh);
+    if (stats.closed) stats.enclosedVolume = std::abs(signedVolume);
     const Dims& dims = volume.dims();
     for (const GridEdge& e : mesh.vertexEdges) {
         const int p[3] = {e.x, e.y, e.z};
@@ -442,4 +475,5 @@ SurfaceStats measureSurface(const Mesh& mesh, const Volume& volume) {
     return stats;
 }
 
+}  // namespace
 }  // namespace isotrack

@@ -79,6 +79,8 @@ public:
 
     const Mesh& mesh() const;
     std::size_t cellsVisited() const;
+    // True once the surface has reached the volume's border and been cut open there.
+    bool leftVolume() const;
     Mesh takeMesh();
 
 private:
