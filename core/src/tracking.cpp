@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 
@@ -57,6 +58,12 @@ struct FaceSteps {
 const FaceSteps& faceSteps() {
     static const FaceSteps steps;
     return steps;
+}
+
+std::string numberText(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    return text;
 }
 
 std::string edgeText(const GridEdge& e) {
@@ -265,7 +272,7 @@ GridEdge nearestCrossedEdge(const Volume& volume, double iso, const Vec3d& world
         }
     }
     if (!std::isfinite(best)) {
-        throw InputError("no surface at iso " + std::to_string(iso) + ": no grid edge crosses it");
+        throw InputError("no surface at iso " + numberText(iso) + ": no grid edge crosses it");
     }
     return bestEdge;
 }
@@ -307,7 +314,7 @@ SurfaceTracker& SurfaceTracker::operator=(SurfaceTracker&&) noexcept = default;
 void SurfaceTracker::start(const GridEdge& seed) {
     if (!edgeInside(*impl_->volume, seed)) throw InputError("seed edge " + edgeText(seed) + " is outside the volume");
     if (!impl_->worker->crossed(seed)) {
-        throw InputError("seed edge " + edgeText(seed) + " does not cross iso " + std::to_string(impl_->iso));
+        throw InputError("seed edge " + edgeText(seed) + " does not cross iso " + numberText(impl_->iso));
     }
     impl_->state = TrackState{};
     queueSeed(*impl_->volume, seed, impl_->state.queue);

@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -33,6 +34,23 @@ std::uint16_t rotateMask(std::uint16_t mask, const cube::Rotation& r) {
     return static_cast<std::uint16_t>(out);
 }
 
+// The number of connected components of a mesh, joining triangles through shared vertices.
+std::size_t connectedComponents(const Mesh& mesh) {
+    std::vector<std::uint32_t> parent(mesh.vertices.size());
+    for (std::uint32_t v = 0; v < parent.size(); ++v) parent[v] = v;
+    auto find = [&](std::uint32_t v) {
+        while (parent[v] != v) v = parent[v] = parent[parent[v]];
+        return v;
+    };
+    for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+        parent[find(mesh.indices[i])] = find(mesh.indices[i + 1]);
+        parent[find(mesh.indices[i + 1])] = find(mesh.indices[i + 2]);
+    }
+    std::set<std::uint32_t> roots;
+    for (std::uint32_t v = 0; v < parent.size(); ++v) roots.insert(find(v));
+    return roots.size();
+}
+
 // Every surface of a field together must be the exhaustive mesh, split.
 void requireAllEqualsExhaustive(const Volume& volume, double iso, TableKind table) {
     const Mesh whole = marchingCubes(volume, iso, table);
@@ -47,6 +65,7 @@ void requireAllEqualsExhaustive(const Volume& volume, double iso, TableKind tabl
         CHECK(edges.size() == surfaces[i].mesh.vertices.size());  // one vertex per crossed edge
         for (std::uint64_t e : edges) REQUIRE(seenEdges.insert(e).second);  // no vertex shared by two surfaces
         vertices += surfaces[i].mesh.vertices.size();
+        CHECK(connectedComponents(surfaces[i].mesh) == 1);
         if (i > 0) CHECK(surfaces[i - 1].mesh.triangleCount() >= surfaces[i].mesh.triangleCount());
     }
     CHECK(united == triangleSet(whole, volume.dims()));
@@ -131,6 +150,30 @@ TEST_CASE("tracking from any blob returns exactly that blob", "[core][tracking]"
         // A closed surface visits one cell piece per cell it passes through.
         CHECK(s.stats.cellsVisited <= s.mesh.triangleCount());
     }
+}
+
+TEST_CASE("the smallest blob alone: one vertex per crossed edge around it", "[core][tracking]") {
+    const int n = 128;
+    const Volume volume = makeField({"blobs", n});
+    const double iso = fieldDefaultIso("blobs");
+    auto blobs = blobsFieldBlobs(n);
+    const Blob smallest = *std::min_element(blobs.begin(), blobs.end(), [](const Blob& a, const Blob& b) { return a.radius < b.radius; });
+    const Surface s = trackSurface(volume, iso, nearestCrossedEdge(volume, iso, smallest.centre));
+    // Blobs are at least 2 voxels apart, so the crossed edges in a box around this one are its own.
+    std::size_t crossed = 0;
+    int lo[3], hi[3];
+    for (int k = 0; k < 3; ++k) {
+        lo[k] = int(std::floor(smallest.centre[k] - smallest.radius - 1.5));
+        hi[k] = int(std::ceil(smallest.centre[k] + smallest.radius + 1.5));
+    }
+    for (int z = lo[2]; z <= hi[2]; ++z)
+        for (int y = lo[1]; y <= hi[1]; ++y)
+            for (int x = lo[0]; x <= hi[0]; ++x)
+                for (int axis = 0; axis < 3; ++axis) crossed += edgeIsCrossed(volume, iso, GridEdge{x, y, z, axis});
+    CHECK(s.mesh.vertices.size() == crossed);
+    CHECK(s.stats.closed);
+    CHECK(connectedComponents(s.mesh) == 1);
+    CHECK(s.stats.cellsVisited * 4 < volume.sampleCount() / 1000);
 }
 
 TEST_CASE("every surface together is the exhaustive mesh, triangle for triangle", "[core][tracking]") {
