@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
         commands.emplace_back(app.get_subcommands({})[before], std::move(run));
     };
     add(isotrack::cli::addExtractCommand);
+    add(isotrack::cli::addFieldCommand);
     app.require_subcommand(0, 1);
 
     try {

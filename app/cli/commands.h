@@ -12,5 +12,6 @@ namespace isotrack::cli {
 using RunCommand = std::function<int()>;
 
 RunCommand addExtractCommand(CLI::App& app);
+RunCommand addFieldCommand(CLI::App& app);
 
 }  // namespace isotrack::cli
