@@ -1,13 +1,45 @@
 #pragma once
 // Vertex placement shared by every extractor, so that an edge crossed by the
 // surface yields the same vertex whichever algorithm visits it.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <type_traits>
 
 #include "isotrack/mesh.h"
 #include "isotrack/volume.h"
 
 namespace isotrack::detail {
+
+// A threshold in the samples' own type with (sample > value) exactly when
+// (double(sample) > iso), so classification runs on native values in vector
+// registers. `all`/`none` cover isovalues outside the type's range.
+template <class T>
+struct NativeThreshold {
+    T value{};
+    bool all = false, none = false;
+
+    explicit NativeThreshold(double iso) {
+        if constexpr (std::is_integral_v<T>) {
+            const double f = std::floor(iso);
+            if (f < double(std::numeric_limits<T>::min())) {
+                all = true;
+            } else if (f >= double(std::numeric_limits<T>::max())) {
+                none = true;
+            } else {
+                value = static_cast<T>(f);
+            }
+        } else if constexpr (std::is_same_v<T, float>) {
+            float f = static_cast<float>(iso);
+            if (double(f) > iso) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+            value = f;
+        } else {
+            value = static_cast<T>(iso);
+        }
+    }
+};
 
 template <class T>
 class SampleGrid {
@@ -21,7 +53,10 @@ public:
           strideZ_(std::size_t(nx_) * std::size_t(ny_)),
           spacing_(volume.spacing()),
           origin_(volume.origin()),
-          iso_(iso) {}
+          iso_(iso),
+          threshold_(iso) {
+        for (int k = 0; k < 3; ++k) halfInverseSpacing_[k] = 0.5 / spacing_[k];
+    }
 
     int nx() const { return nx_; }
     int ny() const { return ny_; }
@@ -33,6 +68,17 @@ public:
     double at(std::size_t i) const { return static_cast<double>(samples_[i]); }
     // The one classification rule of isotrack: above means strictly greater. NaN is below.
     bool above(std::size_t i) const { return static_cast<double>(samples_[i]) > iso_; }
+
+    // flags[i] = above(begin + i) for `count` samples.
+    void classify(std::size_t begin, std::size_t count, std::uint8_t* flags) const {
+        if (threshold_.all || threshold_.none) {
+            std::fill(flags, flags + count, std::uint8_t(threshold_.all));
+            return;
+        }
+        const T* samples = samples_ + begin;
+        const T t = threshold_.value;
+        for (std::size_t i = 0; i < count; ++i) flags[i] = samples[i] > t;
+    }
 
     // The vertex where the surface crosses the edge from sample (x, y, z) one step along `axis`.
     Vertex edgeVertex(int x, int y, int z, int axis) const {
@@ -67,6 +113,17 @@ public:
 
     // Central-difference gradient in world units; one-sided on the border.
     void gradient(int x, int y, int z, double g[3]) const {
+        if (x > 0 && y > 0 && z > 0 && x + 1 < nx_ && y + 1 < ny_ && z + 1 < nz_) {
+            const std::size_t i = index(x, y, z);
+            g[0] = (at(i + 1) - at(i - 1)) * halfInverseSpacing_[0];
+            g[1] = (at(i + strideY_) - at(i - strideY_)) * halfInverseSpacing_[1];
+            g[2] = (at(i + strideZ_) - at(i - strideZ_)) * halfInverseSpacing_[2];
+            return;
+        }
+        borderGradient(x, y, z, g);
+    }
+
+    void borderGradient(int x, int y, int z, double g[3]) const {
         const int p[3] = {x, y, z};
         const int n[3] = {nx_, ny_, nz_};
         const std::size_t stride[3] = {1, strideY_, strideZ_};
@@ -88,7 +145,9 @@ private:
     int nx_, ny_, nz_;
     std::size_t strideY_, strideZ_;
     Vec3d spacing_, origin_;
+    double halfInverseSpacing_[3];
     double iso_;
+    NativeThreshold<T> threshold_;
 };
 
 }  // namespace isotrack::detail

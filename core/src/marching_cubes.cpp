@@ -1,120 +1,311 @@
-// Exhaustive marching cubes (Lorensen & Cline 1987) over slabs of cells.
+// Exhaustive marching cubes (Lorensen & Cline 1987) over slabs of cells, in
+// parallel chunks of slabs whose seams are stitched without welding.
 //
-// Passes, per slab between sample slices z and z+1:
-//  1. classify: one above/below flag per sample of the new slice (slice z is kept
-//     from the previous slab), with the single rule sample > iso;
-//  2. triangulate: each cell's 8 flags index the triangle table; each triangle
-//     corner is a cube edge, mapped to a grid edge whose vertex id lives in a
-//     per-slice cache, so a crossed grid edge gets its vertex computed once, by
-//     the first cell that needs it, and every later cell reuses the id.
-// The x- and y-edge caches of slice z+1 become those of slice z for the next
-// slab, so memory is a few ints per sample of one slice, not of the volume.
+// Passes, per slab between sample slices z and z+1 of a chunk:
+//  1. classify: one above/below flag per sample of slice z+1 (the single rule
+//     sample > iso), and per row the span of x-edges where the flag changes;
+//  2. trim: a row of cells can only hold surface where one of its four sample
+//     rows changes, or where rows that are each constant disagree; everything
+//     else is skipped without looking at its cells (after Flying Edges,
+//     Schroeder et al. 2015);
+//  3. triangulate: each cell's 8 flags index the table; each crossed cube edge is
+//     mapped to its grid edge, whose vertex id lives in a per-slice cache, so a
+//     crossed grid edge gets its vertex computed once, by the first cell that
+//     needs it. Cache entries are never cleared: an entry is valid when it is at
+//     least the vertex count at which its slice entered the slab window.
+// Chunks of slabs run on separate threads. The x- and y-edges on the slice
+// between two chunks belong to the upper chunk; the lower chunk writes
+// placeholders for them, resolved from the upper chunk's first slice when the
+// chunks are concatenated. Temporaries are a few slices of flags and ids per
+// chunk, never per voxel of the volume.
 #include "isotrack/marching_cubes.h"
 
+#include <algorithm>
+#include <atomic>
 #include <cstdint>
+#include <cstring>
 #include <limits>
-#include <utility>
+#include <stdexcept>
+#include <thread>
 #include <vector>
 
 #include "edge_vertex.h"
+#include "isotrack/continuation.h"
 #include "isotrack/cube.h"
 
 namespace isotrack {
 namespace {
 
 constexpr std::uint32_t kNoVertex = std::numeric_limits<std::uint32_t>::max();
+constexpr std::uint32_t kSeamBit = 1u << 31;  // placeholder: a vertex on the next chunk's first slice
+
+struct RowSpan {
+    int lo, hi;               // x-edges [lo, hi) hold every change of flag along the row
+    std::uint8_t first, last;  // flags of the row's first and last samples
+};
+
+struct EdgeSlots {
+    std::array<int, 12> axis{};
+    std::array<int, 12> dz{};
+    std::array<std::size_t, 12> offset{};  // within a slice, from the cell's origin sample
+    std::array<std::uint16_t, 256> crossed{};
+};
+
+EdgeSlots edgeSlots(int nx) {
+    EdgeSlots s;
+    for (int e = 0; e < cube::kEdgeCount; ++e) {
+        const auto& o = cube::edgeOrigin(e);
+        s.axis[e] = cube::edgeAxis(e);
+        s.dz[e] = o[2];
+        s.offset[e] = std::size_t(o[0]) + std::size_t(nx) * std::size_t(o[1]);
+    }
+    for (int c = 0; c < 256; ++c) {
+        unsigned mask = 0;
+        for (int e = 0; e < cube::kEdgeCount; ++e) {
+            if ((c >> cube::kEdgeVertices[e][0] & 1) != (c >> cube::kEdgeVertices[e][1] & 1)) mask |= 1u << e;
+        }
+        s.crossed[c] = static_cast<std::uint16_t>(mask);
+    }
+    return s;
+}
+
+// The mesh of slabs [zBegin, zEnd), with placeholders on slice zEnd unless last.
+struct Chunk {
+    int zBegin = 0, zEnd = 0;
+    bool last = false;
+    Mesh mesh;
+    std::vector<std::uint32_t> firstSliceIds;  // x- and y-edge ids of slice zBegin
+    std::vector<std::uint8_t> pieceStarts;     // optional: 1 bit per triangle, set on a piece's first
+};
 
 template <class T>
-class SlabMarcher {
+class ChunkMarcher {
 public:
-    SlabMarcher(const detail::SampleGrid<T>& grid, const TriangleTable& table, Mesh& mesh)
-        : grid_(grid), table_(table), mesh_(mesh), sliceSize_(std::size_t(grid.nx()) * std::size_t(grid.ny())) {
-        for (auto& flags : flags_) flags.assign(sliceSize_, 0);
-        for (auto& cache : planarCache_) cache.assign(2 * sliceSize_, kNoVertex);
-        verticalCache_.assign(sliceSize_, kNoVertex);
-        for (int e = 0; e < cube::kEdgeCount; ++e) {
-            const auto& o = cube::edgeOrigin(e);
-            edgeSlot_[e] = std::size_t(o[0]) + std::size_t(grid.nx()) * std::size_t(o[1]);
+    ChunkMarcher(const detail::SampleGrid<T>& grid, const std::array<CaseContinuation, 256>& table,
+                 const EdgeSlots& slots, bool markPieces, Chunk& chunk)
+        : grid_(grid), table_(table), slots_(slots), markPieces_(markPieces), chunk_(chunk), nx_(grid.nx()), ny_(grid.ny()),
+          sliceSize_(std::size_t(grid.nx()) * std::size_t(grid.ny())) {
+        for (int s = 0; s < 2; ++s) {
+            flags_[s].assign(sliceSize_, 0);
+            spans_[s].assign(std::size_t(ny_), RowSpan{});
+            planar_[s].assign(2 * sliceSize_, kNoVertex);
         }
+        vertical_.assign(sliceSize_, kNoVertex);
     }
 
     void run() {
-        if (grid_.nx() < 2 || grid_.ny() < 2 || grid_.nz() < 2) return;
-        classifySlice(0, flags_[0]);
-        for (int z = 0; z + 1 < grid_.nz(); ++z) {
-            classifySlice(z + 1, flags_[1]);
-            marchSlab(z);
-            std::swap(flags_[0], flags_[1]);
-            // Slice z+1's planar edges become slice z's for the next slab.
-            for (auto& cache : planarCache_) {
-                std::copy(cache.begin() + std::ptrdiff_t(sliceSize_), cache.end(), cache.begin());
-                std::fill(cache.begin() + std::ptrdiff_t(sliceSize_), cache.end(), kNoVertex);
-            }
-            std::fill(verticalCache_.begin(), verticalCache_.end(), kNoVertex);
+        Mesh& mesh = chunk_.mesh;
+        classifySlice(chunk_.zBegin, 0);
+        threshold_[0] = 0;
+        for (int z = chunk_.zBegin; z < chunk_.zEnd; ++z) {
+            const int bottom = (z - chunk_.zBegin) & 1, top = bottom ^ 1;
+            classifySlice(z + 1, top);
+            threshold_[top] = static_cast<std::uint32_t>(mesh.vertices.size());
+            verticalThreshold_ = threshold_[top];
+            seamSlab_ = !chunk_.last && z + 1 == chunk_.zEnd;
+            for (int y = 0; y + 1 < ny_; ++y) marchRow(y, z, bottom, top);
+            if (z == chunk_.zBegin) chunk_.firstSliceIds = planar_[bottom];
         }
     }
 
 private:
-    void classifySlice(int z, std::vector<std::uint8_t>& flags) const {
-        const std::size_t base = grid_.index(0, 0, z);
-        for (std::size_t i = 0; i < sliceSize_; ++i) flags[i] = grid_.above(base + i);
+    void classifySlice(int z, int slot) {
+        std::uint8_t* flags = flags_[slot].data();
+        grid_.classify(grid_.index(0, 0, z), sliceSize_, flags);
+        for (int y = 0; y < ny_; ++y) {
+            const std::uint8_t* row = flags + std::size_t(nx_) * std::size_t(y);
+            const std::uint8_t first = row[0], last = row[nx_ - 1];
+            // The first and last changes of flag, found with the C library's vectorised scans.
+            const void* change = std::memchr(row, first ^ 1, std::size_t(nx_));
+            if (!change) {
+                spans_[slot][std::size_t(y)] = {nx_, 0, first, last};
+                continue;
+            }
+            const int lo = int(static_cast<const std::uint8_t*>(change) - row) - 1;
+            const int hi = int(static_cast<const std::uint8_t*>(memrchr(row, last ^ 1, std::size_t(nx_))) - row) + 1;
+            spans_[slot][std::size_t(y)] = {lo, hi, first, last};
+        }
     }
 
-    void marchSlab(int z) {
-        const int nx = grid_.nx();
-        const auto& lo = flags_[0];
-        const auto& hi = flags_[1];
-        for (int y = 0; y + 1 < grid_.ny(); ++y) {
-            const std::size_t row = std::size_t(nx) * std::size_t(y);
-            for (int x = 0; x + 1 < nx; ++x) {
-                const std::size_t i = row + std::size_t(x);
-                const std::size_t j = i + std::size_t(nx);
-                const unsigned config = lo[i] | lo[i + 1] << 1 | lo[j + 1] << 2 | lo[j] << 3 | hi[i] << 4 |
-                                        hi[i + 1] << 5 | hi[j + 1] << 6 | hi[j] << 7;
-                if (config == 0 || config == 255) continue;
-                const CaseTriangles& triangles = table_[static_cast<std::uint8_t>(config)];
-                for (int t = 0; t < triangles.count; ++t) {
-                    for (int corner = 0; corner < 3; ++corner) {
-                        mesh_.indices.push_back(vertexOnEdge(x, y, z, i, triangles.triangles[t][corner]));
-                    }
-                }
+    void marchRow(int y, int z, int bottom, int top) {
+        const RowSpan* rows[4] = {&spans_[bottom][std::size_t(y)], &spans_[bottom][std::size_t(y) + 1],
+                                  &spans_[top][std::size_t(y)], &spans_[top][std::size_t(y) + 1]};
+        int lo = nx_, hi = 0;
+        bool firstsAgree = true, lastsAgree = true;
+        for (const RowSpan* r : rows) {
+            lo = std::min(lo, r->lo);
+            hi = std::max(hi, r->hi);
+            firstsAgree &= r->first == rows[0]->first;
+            lastsAgree &= r->last == rows[0]->last;
+        }
+        const int begin = firstsAgree ? lo : 0;
+        const int end = lastsAgree ? hi : nx_ - 1;
+        if (begin >= end) return;
+
+        const std::size_t row = std::size_t(nx_) * std::size_t(y);
+        const std::uint8_t* lo0 = flags_[bottom].data() + row;
+        const std::uint8_t* lo1 = lo0 + nx_;
+        const std::uint8_t* hi0 = flags_[top].data() + row;
+        const std::uint8_t* hi1 = hi0 + nx_;
+        Mesh& mesh = chunk_.mesh;
+        for (int x = begin; x < end; ++x) {
+            const unsigned config = lo0[x] | lo0[x + 1] << 1 | lo1[x + 1] << 2 | lo1[x] << 3 | hi0[x] << 4 |
+                                    hi0[x + 1] << 5 | hi1[x + 1] << 6 | hi1[x] << 7;
+            if (config == 0 || config == 255) continue;
+            std::array<std::uint32_t, 12> ids;
+            const std::size_t cell = row + std::size_t(x);
+            for (unsigned mask = slots_.crossed[config]; mask != 0; mask &= mask - 1) {
+                const int e = __builtin_ctz(mask);
+                ids[e] = vertexOnEdge(x, y, z, cell, e, bottom, top);
+            }
+            const CaseContinuation& cased = table_[config];
+            if (markPieces_) markPieceStarts(cased, mesh.indices.size() / 3);
+            const int triangles = cased.pieces[cased.pieceCount - 1].firstTriangle + cased.pieces[cased.pieceCount - 1].triangleCount;
+            const std::size_t at = mesh.indices.size();
+            mesh.indices.resize(at + 3 * std::size_t(triangles));
+            std::uint32_t* out = mesh.indices.data() + at;
+            for (int t = 0; t < triangles; ++t) {
+                const auto& tri = cased.triangles[t];
+                out[3 * t] = ids[tri[0]];
+                out[3 * t + 1] = ids[tri[1]];
+                out[3 * t + 2] = ids[tri[2]];
             }
         }
     }
 
-    std::uint32_t vertexOnEdge(int x, int y, int z, std::size_t cell, int edge) {
-        const auto& o = cube::edgeOrigin(edge);
-        const int axis = cube::edgeAxis(edge);
-        std::uint32_t& slot = axis == 2 ? verticalCache_[cell + edgeSlot_[edge]]
-                                        : planarCache_[axis][std::size_t(o[2]) * sliceSize_ + cell + edgeSlot_[edge]];
-        if (slot == kNoVertex) {
-            slot = static_cast<std::uint32_t>(mesh_.vertices.size());
-            mesh_.vertices.push_back(grid_.edgeVertex(x + o[0], y + o[1], z + o[2], axis));
-            mesh_.vertexEdges.push_back(GridEdge{x + o[0], y + o[1], z + o[2], axis});
+    void markPieceStarts(const CaseContinuation& cased, std::size_t firstTriangle) {
+        std::vector<std::uint8_t>& bits = chunk_.pieceStarts;
+        for (int p = 0; p < cased.pieceCount; ++p) {
+            const std::size_t t = firstTriangle + cased.pieces[p].firstTriangle;
+            if (bits.size() <= t / 8) bits.resize(std::max(bits.size() * 2, t / 8 + 1), 0);
+            bits[t / 8] = static_cast<std::uint8_t>(bits[t / 8] | 1u << (t % 8));
         }
-        return slot;
+    }
+
+    std::uint32_t vertexOnEdge(int x, int y, int z, std::size_t cell, int edge, int bottom, int top) {
+        const int axis = slots_.axis[edge];
+        const std::size_t at = cell + slots_.offset[edge];
+        std::uint32_t* slot;
+        std::uint32_t threshold;
+        if (axis == 2) {
+            slot = &vertical_[at];
+            threshold = verticalThreshold_;
+        } else {
+            const int s = slots_.dz[edge] ? top : bottom;
+            if (seamSlab_ && slots_.dz[edge]) return kSeamBit | static_cast<std::uint32_t>(std::size_t(axis) * sliceSize_ + at);
+            slot = &planar_[s][std::size_t(axis) * sliceSize_ + at];
+            threshold = threshold_[s];
+        }
+        if (*slot != kNoVertex && *slot >= threshold) return *slot;
+        Mesh& mesh = chunk_.mesh;
+        *slot = static_cast<std::uint32_t>(mesh.vertices.size());
+        const auto& o = cube::edgeOrigin(edge);
+        mesh.vertices.push_back(grid_.edgeVertex(x + o[0], y + o[1], z + o[2], axis));
+        mesh.vertexEdges.push_back(GridEdge{x + o[0], y + o[1], z + o[2], axis});
+        return *slot;
     }
 
     const detail::SampleGrid<T>& grid_;
-    const TriangleTable& table_;
-    Mesh& mesh_;
-    std::size_t sliceSize_;
+    const std::array<CaseContinuation, 256>& table_;
+    const EdgeSlots& slots_;
+    const bool markPieces_;
+    Chunk& chunk_;
+    const int nx_, ny_;
+    const std::size_t sliceSize_;
     std::array<std::vector<std::uint8_t>, 2> flags_;
-    std::array<std::vector<std::uint32_t>, 2> planarCache_;  // x and y edges of slices z and z+1
-    std::vector<std::uint32_t> verticalCache_;               // z edges between them
-    std::array<std::size_t, 12> edgeSlot_{};
+    std::array<std::vector<RowSpan>, 2> spans_;
+    std::array<std::vector<std::uint32_t>, 2> planar_;  // x then y edges of a slice, ping-pong
+    std::vector<std::uint32_t> vertical_;              // z edges of the current slab
+    std::array<std::uint32_t, 2> threshold_{};
+    std::uint32_t verticalThreshold_ = 0;
+    bool seamSlab_ = false;
 };
+
+// Runs fn(i) for i in [0, count) on `threads` threads, handing out indices in order.
+template <class Fn>
+void parallelFor(int count, int threads, Fn&& fn) {
+    if (threads <= 1 || count <= 1) {
+        for (int i = 0; i < count; ++i) fn(i);
+        return;
+    }
+    std::atomic<int> next{0};
+    auto work = [&] {
+        for (int i = next++; i < count; i = next++) fn(i);
+    };
+    std::vector<std::thread> pool;
+    for (int t = 1; t < std::min(threads, count); ++t) pool.emplace_back(work);
+    work();
+    for (auto& thread : pool) thread.join();
+}
+
+// Joins the chunks into one mesh, resolving seam placeholders.
+Mesh concatenate(std::vector<Chunk>& chunks, int threads, std::vector<std::uint8_t>* pieceStarts) {
+    if (chunks.size() == 1 && !pieceStarts) return std::move(chunks[0].mesh);
+    std::vector<std::size_t> vertexBase(chunks.size() + 1, 0), indexBase(chunks.size() + 1, 0);
+    for (std::size_t c = 0; c < chunks.size(); ++c) {
+        vertexBase[c + 1] = vertexBase[c] + chunks[c].mesh.vertices.size();
+        indexBase[c + 1] = indexBase[c] + chunks[c].mesh.indices.size();
+    }
+    if (vertexBase.back() >= kSeamBit) throw std::length_error("marching cubes: more than 2^31 vertices");
+    Mesh out;
+    out.vertices.resize(vertexBase.back());
+    out.vertexEdges.resize(vertexBase.back());
+    out.indices.resize(indexBase.back());
+    if (pieceStarts) pieceStarts->assign(indexBase.back() / 3 / 8 + 1, 0);
+    parallelFor(int(chunks.size()), threads, [&](int c) {
+        const Mesh& part = chunks[std::size_t(c)].mesh;
+        std::copy(part.vertices.begin(), part.vertices.end(), out.vertices.begin() + std::ptrdiff_t(vertexBase[std::size_t(c)]));
+        std::copy(part.vertexEdges.begin(), part.vertexEdges.end(), out.vertexEdges.begin() + std::ptrdiff_t(vertexBase[std::size_t(c)]));
+        const auto base = static_cast<std::uint32_t>(vertexBase[std::size_t(c)]);
+        const std::vector<std::uint32_t>* seam = std::size_t(c) + 1 < chunks.size() ? &chunks[std::size_t(c) + 1].firstSliceIds : nullptr;
+        const auto nextBase = static_cast<std::uint32_t>(vertexBase[std::size_t(c) + 1]);
+        std::uint32_t* dst = out.indices.data() + indexBase[std::size_t(c)];
+        for (std::size_t i = 0; i < part.indices.size(); ++i) {
+            const std::uint32_t id = part.indices[i];
+            dst[i] = (id & kSeamBit) ? nextBase + (*seam)[id & ~kSeamBit] : base + id;
+        }
+    });
+    if (pieceStarts) {
+        // Triangle counts per chunk need not be multiples of 8: copy bit by bit.
+        for (std::size_t c = 0; c < chunks.size(); ++c) {
+            const std::size_t first = indexBase[c] / 3, count = chunks[c].mesh.indices.size() / 3;
+            const auto& bits = chunks[c].pieceStarts;
+            for (std::size_t t = 0; t < count; ++t) {
+                if (t / 8 < bits.size() && (bits[t / 8] >> (t % 8) & 1u)) {
+                    const std::size_t g = first + t;
+                    (*pieceStarts)[g / 8] = static_cast<std::uint8_t>((*pieceStarts)[g / 8] | 1u << (g % 8));
+                }
+            }
+        }
+    }
+    return out;
+}
 
 }  // namespace
 
-Mesh marchingCubes(const Volume& volume, double iso, TableKind table) {
-    Mesh mesh;
+Mesh marchingCubes(const Volume& volume, double iso, TableKind table, int threads, std::vector<std::uint8_t>* pieceStarts) {
+    const Dims& n = volume.dims();
+    if (n[0] < 2 || n[1] < 2 || n[2] < 2) return {};
+    const int slabs = n[2] - 1;
+    threads = std::max(1, threads);
+    // Several chunks per thread even out surfaces that crowd one part of the volume.
+    const int chunkCount = threads == 1 ? 1 : std::min(slabs, threads * 4);
+    std::vector<Chunk> chunks(static_cast<std::size_t>(chunkCount));
+    for (int c = 0; c < chunkCount; ++c) {
+        chunks[std::size_t(c)].zBegin = int(std::int64_t(slabs) * c / chunkCount);
+        chunks[std::size_t(c)].zEnd = int(std::int64_t(slabs) * (c + 1) / chunkCount);
+        chunks[std::size_t(c)].last = c + 1 == chunkCount;
+    }
+    const auto& continuation = continuationTable(table);
+    const EdgeSlots slots = edgeSlots(n[0]);
     visitSamples(volume, [&](const auto* samples) {
         using T = std::remove_cv_t<std::remove_pointer_t<decltype(samples)>>;
         const detail::SampleGrid<T> grid(volume, samples, iso);
-        SlabMarcher<T>(grid, triangleTable(table), mesh).run();
+        parallelFor(chunkCount, threads, [&](int c) {
+            ChunkMarcher<T>(grid, continuation, slots, pieceStarts != nullptr, chunks[std::size_t(c)]).run();
+        });
     });
-    return mesh;
+    return concatenate(chunks, threads, pieceStarts);
 }
 
 std::size_t countCrossedEdges(const Volume& volume, double iso) {

@@ -364,7 +364,7 @@ Surface trackSurface(const Volume& volume, double iso, const GridEdge& seed, Tab
     return surface;
 }
 
-std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableKind table) {
+std::vector<Surface> trackAllSurfaces(const Volume& volume, double iso, TableKind table) {
     std::vector<Surface> surfaces;
     const Dims& n = volume.dims();
     if (n[0] < 2 || n[1] < 2 || n[2] < 2) return surfaces;
@@ -399,9 +399,22 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             }
         }
     }
-    std::stable_sort(surfaces.begin(), surfaces.end(), [](const Surface& a, const Surface& b) {
-        return a.mesh.triangleCount() > b.mesh.triangleCount();
+    // Discovery order is the order of each surface's first cell; break ties by first grid edge.
+    auto firstEdge = [&](const Surface& s) {
+        std::uint64_t first = std::numeric_limits<std::uint64_t>::max();
+        for (const GridEdge& e : s.mesh.vertexEdges) first = std::min(first, std::uint64_t(volume.index(e.x, e.y, e.z)) * 3 + std::uint64_t(e.axis));
+        return first;
+    };
+    std::vector<std::pair<std::uint64_t, std::size_t>> keys;
+    for (std::size_t i = 0; i < surfaces.size(); ++i) keys.push_back({firstEdge(surfaces[i]), i});
+    std::sort(keys.begin(), keys.end(), [&](const auto& a, const auto& b) {
+        const std::size_t ta = surfaces[a.second].mesh.triangleCount(), tb = surfaces[b.second].mesh.triangleCount();
+        return ta != tb ? ta > tb : a.first < b.first;
     });
+    std::vector<Surface> sorted;
+    sorted.reserve(surfaces.size());
+    for (const auto& key : keys) sorted.push_back(std::move(surfaces[key.second]));
+    surfaces = std::move(sorted);
     return surfaces;
 }
 
@@ -435,7 +448,16 @@ SurfaceStats measureTracked(const Mesh& mesh, const Volume& volume, TableKind ta
 
 }  // namespace
 
-SurfaceStats measureSurface(const Mesh& mesh, const Volume& volume) { return measure(mesh, volume, std::nullopt); }
+SurfaceStats measureSurface(const Mesh& mesh, const Volume& volume, bool closedUnlessOnBorder) {
+    SurfaceStats stats = measure(mesh, volume, std::optional<bool>(true));
+    if (closedUnlessOnBorder) {
+        stats.closed = !stats.touchesBorder && !mesh.indices.empty();
+    } else {
+        stats.closed = isClosed(mesh);
+    }
+    if (!stats.closed) stats.enclosedVolume.reset();
+    return stats;
+}
 
 namespace {
 

@@ -52,9 +52,8 @@ std::size_t connectedComponents(const Mesh& mesh) {
 }
 
 // Every surface of a field together must be the exhaustive mesh, split.
-void requireAllEqualsExhaustive(const Volume& volume, double iso, TableKind table) {
+void requireSurfacesEqualExhaustive(const Volume& volume, double iso, TableKind table, const std::vector<Surface>& surfaces) {
     const Mesh whole = marchingCubes(volume, iso, table);
-    const auto surfaces = extractAllSurfaces(volume, iso, table);
     std::multiset<std::array<std::uint64_t, 3>> united;
     std::set<std::uint64_t> seenEdges;
     std::size_t vertices = 0;
@@ -70,6 +69,24 @@ void requireAllEqualsExhaustive(const Volume& volume, double iso, TableKind tabl
     }
     CHECK(united == triangleSet(whole, volume.dims()));
     CHECK(vertices == whole.vertices.size());
+}
+
+// Tracking every surface, and labelling the exhaustive mesh on one or two
+// threads, must give the same surfaces in the same order.
+void requireAllEqualsExhaustive(const Volume& volume, double iso, TableKind table) {
+    const auto tracked = trackAllSurfaces(volume, iso, table);
+    requireSurfacesEqualExhaustive(volume, iso, table, tracked);
+    for (int threads : {1, 2}) {
+        const auto labelled = extractAllSurfaces(volume, iso, table, threads);
+        REQUIRE(labelled.size() == tracked.size());
+        for (std::size_t i = 0; i < tracked.size(); ++i) {
+            CHECK(triangleSet(labelled[i].mesh, volume.dims()) == triangleSet(tracked[i].mesh, volume.dims()));
+            CHECK(labelled[i].stats.cellsVisited == tracked[i].stats.cellsVisited);
+            CHECK(labelled[i].stats.closed == tracked[i].stats.closed);
+            CHECK(labelled[i].stats.touchesBorder == tracked[i].stats.touchesBorder);
+            CHECK(labelled[i].stats.area == Approx(tracked[i].stats.area));
+        }
+    }
 }
 
 }  // namespace

@@ -45,17 +45,28 @@ struct Surface {
     SurfaceStats stats;
 };
 
-// Computes area, bounds, closedness and enclosed volume of a mesh.
-SurfaceStats measureSurface(const Mesh& mesh, const Volume& volume);
+// Computes area, bounds, closedness and enclosed volume of a mesh. With
+// `closedUnlessOnBorder`, for meshes of the consistent table, which have no holes,
+// the mesh counts as closed exactly when no vertex lies on the volume's border,
+// instead of checking every edge.
+SurfaceStats measureSurface(const Mesh& mesh, const Volume& volume, bool closedUnlessOnBorder = false);
 
 // One connected surface, the one through `seed`. Throws InputError when the seed
 // edge is outside the volume or not crossed at `iso`.
 Surface trackSurface(const Volume& volume, double iso, const GridEdge& seed,
                      TableKind table = TableKind::Consistent);
 
-// Every surface, each tracked on its own, sorted by triangle count, largest first.
-// Together they hold exactly the triangles of marchingCubes with the same table.
-std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableKind table = TableKind::Consistent);
+// Every surface, sorted by triangle count, largest first (ties: the surface with
+// the first grid edge in memory order first). Together they hold exactly the
+// triangles of marchingCubes with the same table.
+//
+// trackAllSurfaces scans the cells and tracks each piece not yet visited, one
+// surface at a time. extractAllSurfaces gives the same surfaces from the
+// exhaustive pass (on `threads` threads) and its connected components, faster;
+// its per-surface `seconds` are 0 since the surfaces are not timed one by one.
+std::vector<Surface> trackAllSurfaces(const Volume& volume, double iso, TableKind table = TableKind::Consistent);
+std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableKind table = TableKind::Consistent,
+                                        int threads = 1);
 
 // Grows one surface a budget at a time, breadth-first from the seed, so that a
 // viewer can append each step's vertices and indices to GPU buffers.
