@@ -82,32 +82,28 @@ public:
 
     // The vertex where the surface crosses the edge from sample (x, y, z) one step along `axis`.
     Vertex edgeVertex(int x, int y, int z, int axis) const {
-        const int step[3] = {axis == 0, axis == 1, axis == 2};
         const std::size_t a = index(x, y, z);
-        const std::size_t b = index(x + step[0], y + step[1], z + step[2]);
+        const std::size_t b = a + (axis == 0 ? 1 : axis == 1 ? strideY_ : strideZ_);
         const double va = at(a), vb = at(b);
         double t = (iso_ - va) / (vb - va);
         if (!(t >= 0.0 && t <= 1.0)) t = 0.5;  // non-finite samples: keep the vertex on the edge
 
         Vertex v{};
-        const int p[3] = {x, y, z};
-        for (int k = 0; k < 3; ++k) {
-            const double coord = p[k] + (k == axis ? t : 0.0);
-            v.position[k] = static_cast<float>(origin_[k] + coord * spacing_[k]);
-        }
+        double p[3] = {origin_[0] + x * spacing_[0], origin_[1] + y * spacing_[1], origin_[2] + z * spacing_[2]};
+        p[axis] += t * spacing_[axis];
         double ga[3], gb[3];
         gradient(x, y, z, ga);
-        gradient(x + step[0], y + step[1], z + step[2], gb);
-        double n[3];
-        for (int k = 0; k < 3; ++k) n[k] = -((1.0 - t) * ga[k] + t * gb[k]);
-        double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-        if (!(length > 0.0) || !std::isfinite(length)) {
+        gradient(x + (axis == 0), y + (axis == 1), z + (axis == 2), gb);
+        const double n[3] = {-(ga[0] + t * (gb[0] - ga[0])), -(ga[1] + t * (gb[1] - ga[1])), -(ga[2] + t * (gb[2] - ga[2]))};
+        const double length2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+        for (int k = 0; k < 3; ++k) v.position[k] = static_cast<float>(p[k]);
+        if (length2 > 0.0 && std::isfinite(length2)) {
+            const double inverse = 1.0 / std::sqrt(length2);
+            for (int k = 0; k < 3; ++k) v.normal[k] = static_cast<float>(n[k] * inverse);
+        } else {
             // Flat or non-finite neighbourhood: point along the edge, from above to below.
-            for (int k = 0; k < 3; ++k) n[k] = 0.0;
-            n[axis] = above(a) ? 1.0 : -1.0;
-            length = 1.0;
+            v.normal[axis] = above(a) ? 1.0f : -1.0f;
         }
-        for (int k = 0; k < 3; ++k) v.normal[k] = static_cast<float>(n[k] / length);
         return v;
     }
 

@@ -25,6 +25,7 @@
 
 #include "edge_vertex.h"
 #include "flat_hash.h"
+#include "sparse_blocks.h"
 #include "isotrack/continuation.h"
 #include "isotrack/cube.h"
 #include "isotrack/errors.h"
@@ -36,21 +37,30 @@ using Clock = std::chrono::steady_clock;
 
 SurfaceStats measureTracked(const Mesh& mesh, const Volume& volume, TableKind table, bool leftVolume);
 
+// A cell piece waiting in the queue; it was marked when queued, so each piece is
+// queued once.
 struct Entry {
     int x, y, z;
-    int edge;
+    std::uint8_t config;
+    std::uint8_t piece;
 };
 
 // Per-face step and the entry edge across each face, computed once.
 struct FaceSteps {
     std::array<std::array<int, 3>, 6> step{};
     std::array<std::array<std::int8_t, 12>, 6> across{};
+    std::array<std::array<int, 3>, 12> edgeOrigin{};
+    std::array<int, 12> edgeAxis{};
     FaceSteps() {
         for (int f = 0; f < cube::kFaceCount; ++f) {
             step[f][cube::faceAxis(f)] = cube::faceSide(f) ? 1 : -1;
             for (int e = 0; e < cube::kEdgeCount; ++e) {
                 across[f][e] = static_cast<std::int8_t>(cube::edgeOnFace(e, f) ? cube::edgeAcrossFace(e, f) : -1);
             }
+        }
+        for (int e = 0; e < cube::kEdgeCount; ++e) {
+            edgeOrigin[e] = cube::edgeOrigin(e);
+            edgeAxis[e] = cube::edgeAxis(e);
         }
     }
 };
@@ -73,10 +83,10 @@ std::string edgeText(const GridEdge& e) {
 
 // What a tracked surface accumulates, whatever the sample type.
 struct TrackState {
+    explicit TrackState(const Dims& dims) : blocks(dims) {}
     Mesh mesh;
-    detail::FlatHashMap vertexOfEdge;
-    detail::FlatHashMap visitedPieces;      // used when `denseVisited` is null
-    std::uint8_t* denseVisited = nullptr;   // one bit per piece per cell, for extractAllSurfaces
+    detail::SparseBlocks blocks;
+    std::uint8_t* denseVisited = nullptr;  // one bit per piece per cell, for trackAllSurfaces
     std::vector<Entry> queue;
     std::size_t head = 0;
     std::size_t cellsVisited = 0;
@@ -86,7 +96,9 @@ struct TrackState {
 class TrackWorker {
 public:
     virtual ~TrackWorker() = default;
-    virtual std::size_t advance(TrackState& state, std::size_t cellBudget) = 0;
+    // Queues the piece of cell (x, y, z) holding cube edge `edge`, unless it was queued before.
+    virtual void enqueue(TrackState& state, int x, int y, int z, int edge) const = 0;
+    virtual std::size_t advance(TrackState& state, std::size_t cellBudget) const = 0;
     virtual std::uint8_t config(int x, int y, int z) const = 0;
     virtual bool crossed(const GridEdge& edge) const = 0;
 };
@@ -95,7 +107,7 @@ template <class T>
 class TypedTrackWorker final : public TrackWorker {
 public:
     TypedTrackWorker(const Volume& volume, const T* samples, double iso, TableKind table)
-        : grid_(volume, samples, iso), table_(continuationTable(table)) {}
+        : grid_(volume, samples, iso), table_(continuationTable(table)), steps_(faceSteps()) {}
 
     std::uint8_t config(int x, int y, int z) const override {
         const std::size_t i = grid_.index(x, y, z);
@@ -112,35 +124,50 @@ public:
         return grid_.above(i) != grid_.above(i + stride[e.axis]);
     }
 
-    std::size_t advance(TrackState& state, std::size_t cellBudget) override {
-        const FaceSteps& faces = faceSteps();
+    void enqueue(TrackState& state, int x, int y, int z, int edge) const override {
+        detail::SparseBlocks::Block& block = state.blocks.at(x, y, z);
+        const int cell = detail::SparseBlocks::local(x, y, z);
+        if (block.config[cell] == 0) block.config[cell] = config(x, y, z);
+        const std::uint8_t c = block.config[cell];
+        const int piece = table_[c].pieceOfEdge[edge];
+        if (piece < 0) return;
+        std::uint8_t& marks = state.denseVisited ? state.denseVisited[grid_.index(x, y, z)] : block.visited[cell];
+        const auto bit = static_cast<std::uint8_t>(1u << piece);
+        if (marks & bit) return;
+        marks = static_cast<std::uint8_t>(marks | bit);
+        state.queue.push_back({x, y, z, c, static_cast<std::uint8_t>(piece)});
+    }
+
+    std::size_t advance(TrackState& state, std::size_t cellBudget) const override {
         const int last[3] = {grid_.nx() - 2, grid_.ny() - 2, grid_.nz() - 2};
         std::size_t visited = 0;
         while (state.head < state.queue.size() && visited < cellBudget) {
             const Entry entry = state.queue[state.head++];
-            const CaseContinuation& cased = table_[config(entry.x, entry.y, entry.z)];
-            const int p = cased.pieceOfEdge[entry.edge];
-            if (p < 0 || !markVisited(state, entry, p)) continue;
             ++visited;
-            const Piece& piece = cased.pieces[p];
+            const CaseContinuation& cased = table_[entry.config];
+            const Piece& piece = cased.pieces[entry.piece];
             std::array<std::uint32_t, 12> vertexOf;
             for (unsigned mask = piece.edgeMask; mask != 0; mask &= mask - 1) {
                 const int edge = __builtin_ctz(mask);
                 vertexOf[edge] = vertexOnEdge(state, entry, edge);
             }
+            const std::size_t at = state.mesh.indices.size();
+            state.mesh.indices.resize(at + 3 * std::size_t(piece.triangleCount));
+            std::uint32_t* out = state.mesh.indices.data() + at;
             for (int t = piece.firstTriangle; t < piece.firstTriangle + piece.triangleCount; ++t) {
-                for (int corner = 0; corner < 3; ++corner) state.mesh.indices.push_back(vertexOf[cased.triangles[t][corner]]);
+                for (int corner = 0; corner < 3; ++corner) *out++ = vertexOf[cased.triangles[t][corner]];
             }
             for (int f = 0; f < cube::kFaceCount; ++f) {
                 if (piece.exits[f][0] < 0) continue;
                 const int axis = cube::faceAxis(f);
-                const int to[3] = {entry.x + faces.step[f][0], entry.y + faces.step[f][1], entry.z + faces.step[f][2]};
+                const int to[3] = {entry.x + steps_.step[f][0], entry.y + steps_.step[f][1], entry.z + steps_.step[f][2]};
                 if (to[axis] < 0 || to[axis] > last[axis]) {
                     state.leftVolume = true;  // the surface is cut open by the volume's border here
                     continue;
                 }
                 for (std::int8_t exit : piece.exits[f]) {
-                    if (exit >= 0) state.queue.push_back({to[0], to[1], to[2], faces.across[f][exit]});
+                    if (exit < 0) break;
+                    enqueue(state, to[0], to[1], to[2], steps_.across[f][exit]);
                 }
             }
         }
@@ -156,26 +183,13 @@ public:
     }
 
 private:
-    bool markVisited(TrackState& state, const Entry& entry, int piece) const {
-        const std::size_t cell = grid_.index(entry.x, entry.y, entry.z);
-        if (state.denseVisited) {
-            const auto bit = static_cast<std::uint8_t>(1u << piece);
-            if (state.denseVisited[cell] & bit) return false;
-            state.denseVisited[cell] = static_cast<std::uint8_t>(state.denseVisited[cell] | bit);
-            return true;
-        }
-        return state.visitedPieces.insert(std::uint64_t(cell) * kMaxPieces + std::uint64_t(piece));
-    }
-
     std::uint32_t vertexOnEdge(TrackState& state, const Entry& entry, int edge) const {
-        const auto& o = cube::edgeOrigin(edge);
-        const int axis = cube::edgeAxis(edge);
+        const auto& o = steps_.edgeOrigin[edge];
+        const int axis = steps_.edgeAxis[edge];
         const int x = entry.x + o[0], y = entry.y + o[1], z = entry.z + o[2];
-        const std::uint64_t key = std::uint64_t(grid_.index(x, y, z)) * 3 + std::uint64_t(axis);
-        bool inserted = false;
-        const auto next = static_cast<std::uint32_t>(state.mesh.vertices.size());
-        const std::uint32_t id = state.vertexOfEdge.findOrInsert(key, next, inserted);
-        if (inserted) {
+        std::uint32_t& id = state.blocks.at(x, y, z).vertex[std::size_t(3 * detail::SparseBlocks::local(x, y, z) + axis)];
+        if (id == detail::SparseBlocks::kNoVertex) {
+            id = static_cast<std::uint32_t>(state.mesh.vertices.size());
             state.mesh.vertices.push_back(grid_.edgeVertex(x, y, z, axis));
             state.mesh.vertexEdges.push_back(GridEdge{x, y, z, axis});
         }
@@ -184,6 +198,7 @@ private:
 
     detail::SampleGrid<T> grid_;
     const std::array<CaseContinuation, 256>& table_;
+    const FaceSteps& steps_;
 };
 
 std::unique_ptr<TrackWorker> makeWorker(const Volume& volume, double iso, TableKind table) {
@@ -204,7 +219,7 @@ bool edgeInside(const Volume& volume, const GridEdge& e) {
 }
 
 // Queues the cells around a seed edge, each entered through that edge.
-void queueSeed(const Volume& volume, const GridEdge& seed, std::vector<Entry>& queue) {
+void queueSeed(const Volume& volume, const GridEdge& seed, const TrackWorker& worker, TrackState& state) {
     const Dims& n = volume.dims();
     const int b = (seed.axis + 1) % 3, c = (seed.axis + 2) % 3;
     for (int db = 0; db < 2; ++db) {
@@ -216,7 +231,7 @@ void queueSeed(const Volume& volume, const GridEdge& seed, std::vector<Entry>& q
             std::array<int, 3> local{0, 0, 0};
             local[b] = db;
             local[c] = dc;
-            queue.push_back({cell[0], cell[1], cell[2], cube::edgeAt(local, seed.axis)});
+            worker.enqueue(state, cell[0], cell[1], cell[2], cube::edgeAt(local, seed.axis));
         }
     }
 }
@@ -306,7 +321,7 @@ struct SurfaceTracker::Impl {
 };
 
 SurfaceTracker::SurfaceTracker(const Volume& volume, double iso, TableKind table)
-    : impl_(std::make_unique<Impl>(Impl{&volume, iso, table, makeWorker(volume, iso, table), {}})) {}
+    : impl_(std::make_unique<Impl>(Impl{&volume, iso, table, makeWorker(volume, iso, table), TrackState(volume.dims())})) {}
 SurfaceTracker::~SurfaceTracker() = default;
 SurfaceTracker::SurfaceTracker(SurfaceTracker&&) noexcept = default;
 SurfaceTracker& SurfaceTracker::operator=(SurfaceTracker&&) noexcept = default;
@@ -316,8 +331,8 @@ void SurfaceTracker::start(const GridEdge& seed) {
     if (!impl_->worker->crossed(seed)) {
         throw InputError("seed edge " + edgeText(seed) + " does not cross iso " + numberText(impl_->iso));
     }
-    impl_->state = TrackState{};
-    queueSeed(*impl_->volume, seed, impl_->state.queue);
+    impl_->state = TrackState(impl_->volume->dims());
+    queueSeed(*impl_->volume, seed, *impl_->worker, impl_->state);
 }
 
 SurfaceTracker::Step SurfaceTracker::step(std::size_t cellBudget) {
@@ -381,11 +396,11 @@ std::vector<Surface> trackAllSurfaces(const Volume& volume, double iso, TableKin
                 for (int p = 0; p < cased.pieceCount; ++p) {
                     if (visited[cell] >> p & 1u) continue;
                     const auto start = Clock::now();
-                    TrackState state;
+                    TrackState state(n);
                     state.denseVisited = visited.data();
                     int entryEdge = 0;
                     while (!(cased.pieces[p].edgeMask >> entryEdge & 1u)) ++entryEdge;
-                    state.queue.push_back({x, y, z, entryEdge});
+                    worker->enqueue(state, x, y, z, entryEdge);
                     while (state.head < state.queue.size()) {
                         worker->advance(state, std::numeric_limits<std::size_t>::max());
                     }
