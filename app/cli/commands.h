@@ -13,5 +13,6 @@ using RunCommand = std::function<int()>;
 
 RunCommand addExtractCommand(CLI::App& app);
 RunCommand addFieldCommand(CLI::App& app);
+RunCommand addRenderCommand(CLI::App& app);
 
 }  // namespace isotrack::cli

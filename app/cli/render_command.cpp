@@ -1,0 +1,173 @@
+// isotrack render: a PNG of the isosurfaces, drawn headless through OSMesa.
+#include <CLI/CLI.hpp>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "cli/commands.h"
+#include "cli/source.h"
+#include "headless/headless_context.h"
+#include "isotrack/errors.h"
+#include "isotrack/marching_cubes.h"
+#include "isotrack/tables.h"
+#include "isotrack/tracking.h"
+#include "render/image.h"
+#include "render/snapshot.h"
+
+namespace isotrack::cli {
+namespace {
+
+constexpr int kMaxImageSide = 8192;
+
+struct RenderOptions {
+    SourceOptions source;
+    std::string table = "consistent";
+    std::string method = "mc";
+    std::string seed;
+    std::string out;
+    std::string size = "640x480";
+    std::string camera;
+    bool wireframe = false;
+    bool noBox = false;
+    std::optional<std::size_t> select;
+};
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+int parseSide(const std::string& text, const std::string& whole) {
+    int value = 0;
+    const char* end = text.data() + text.size();
+    const auto [ptr, error] = std::from_chars(text.data(), end, value);
+    if (text.empty() || error != std::errc() || ptr != end || value < 1 || value > kMaxImageSide) {
+        throw InputError("--size \"" + whole + "\": each side must be an integer in 1.." +
+                         std::to_string(kMaxImageSide));
+    }
+    return value;
+}
+
+void parseSize(const std::string& text, int& width, int& height) {
+    const std::size_t x = text.find('x');
+    if (x == std::string::npos) throw InputError("--size \"" + text + "\": expected WIDTHxHEIGHT, e.g. 640x480");
+    width = parseSide(text.substr(0, x), text);
+    height = parseSide(text.substr(x + 1), text);
+}
+
+Vec3d parsePoint(const std::string& text) {
+    Vec3d point{};
+    std::size_t start = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+        const std::size_t comma = axis < 2 ? text.find(',', start) : text.size();
+        if (comma == std::string::npos) break;
+        const std::string field = text.substr(start, comma - start);
+        const char* end = field.data() + field.size();
+        const auto [ptr, error] = std::from_chars(field.data(), end, point[axis]);
+        if (field.empty() || error != std::errc() || ptr != end || !std::isfinite(point[axis])) break;
+        if (axis == 2) return point;
+        start = comma + 1;
+    }
+    throw InputError("--seed \"" + text + "\": expected three finite numbers X,Y,Z (a world-space point)");
+}
+
+Vec3d volumeCentre(const Volume& volume) {
+    Vec3d centre{};
+    for (int axis = 0; axis < 3; ++axis) {
+        centre[axis] = volume.origin()[axis] + 0.5 * volume.spacing()[axis] * double(volume.dims()[axis] - 1);
+    }
+    return centre;
+}
+
+// The meshes to draw, largest first for "all".
+std::vector<Mesh> extractSurfaces(const RenderOptions& options, const Source& source, TableKind table) {
+    std::vector<Mesh> meshes;
+    if (options.method == "mc") {
+        meshes.push_back(marchingCubes(source.volume, source.iso, table));
+    } else if (options.method == "track") {
+        const Vec3d point = options.seed.empty() ? volumeCentre(source.volume) : parsePoint(options.seed);
+        const GridEdge seed = nearestCrossedEdge(source.volume, source.iso, point);
+        meshes.push_back(trackSurface(source.volume, source.iso, seed, table).mesh);
+    } else {
+        for (Surface& surface : extractAllSurfaces(source.volume, source.iso, table)) {
+            meshes.push_back(std::move(surface.mesh));
+        }
+    }
+    return meshes;
+}
+
+int runRender(const RenderOptions& options) {
+    const TableKind table = parseTableKind(options.table);
+    render::SnapshotOptions snapshotOptions;
+    parseSize(options.size, snapshotOptions.width, snapshotOptions.height);
+    if (!options.camera.empty()) snapshotOptions.camera = render::parseCamera(options.camera);
+    if (!options.seed.empty() && options.method != "track") throw InputError("--seed: only used with --method track");
+    snapshotOptions.wireframe = options.wireframe;
+    snapshotOptions.boundingBox = !options.noBox;
+    snapshotOptions.selected = options.select;
+
+    const Source source = loadSource(options.source);
+    auto start = Clock::now();
+    const std::vector<Mesh> meshes = extractSurfaces(options, source, table);
+    const double extractMs = millisecondsSince(start);
+    if (options.select && *options.select >= meshes.size()) {
+        throw InputError(
+            "--select " + std::to_string(*options.select) + ": out of range, there " +
+            (meshes.size() == 1 ? std::string("is 1 surface") : "are " + std::to_string(meshes.size()) + " surfaces") +
+            " (0 is the largest)");
+    }
+
+    start = Clock::now();
+    const headless::HeadlessContext context;
+    std::vector<const Mesh*> surfaces;
+    std::size_t triangles = 0;
+    for (const Mesh& mesh : meshes) {
+        surfaces.push_back(&mesh);
+        triangles += mesh.triangleCount();
+    }
+    const render::Snapshot snapshot =
+        render::renderSnapshot(surfaces, render::volumeBounds(source.volume), snapshotOptions);
+    const double renderMs = millisecondsSince(start);
+    render::writePng(snapshot.image, options.out);
+
+    std::printf("%s: %dx%d, %s %s, %zu surface%s, %zu triangles, --camera %s; extract %.1f ms, render %.1f ms (%s)\n",
+                options.out.c_str(), snapshot.image.width, snapshot.image.height, source.name.c_str(),
+                options.method.c_str(), meshes.size(), meshes.size() == 1 ? "" : "s", triangles,
+                render::formatCamera(snapshot.camera).c_str(), extractMs, renderMs, context.info().renderer.c_str());
+    return 0;
+}
+
+}  // namespace
+
+RunCommand addRenderCommand(CLI::App& app) {
+    auto options = std::make_shared<RenderOptions>();
+    CLI::App* command =
+        app.add_subcommand("render", "Draw the isosurfaces into a PNG, headless (OSMesa, no display needed)");
+    addSourceOptions(*command, options->source);
+    command
+        ->add_option("--method", options->method,
+                     "mc: every cell as one surface; track: the surface through --seed; all: every surface, "
+                     "each in its own colour, largest first")
+        ->check(CLI::IsMember({"mc", "track", "all"}));
+    command->add_option("--seed", options->seed,
+                        "X,Y,Z: world point near the surface to track (default: the volume's centre)");
+    command->add_option("--table", options->table, "Triangle table: consistent (default) or classic")
+        ->check(CLI::IsMember({"consistent", "classic"}));
+    command->add_option("--out", options->out, "The PNG file to write")->required();
+    command->add_option("--size", options->size, "WIDTHxHEIGHT in pixels, each 1..8192 (default 640x480)");
+    command->add_option("--camera", options->camera,
+                        "yaw,pitch,distance,tx,ty,tz[,fov]: orbit angles in degrees (z up), distance to and "
+                        "position of the target in world units, vertical field of view (default 30); "
+                        "default: framing the volume. The camera used is printed.");
+    command->add_flag("--wireframe", options->wireframe, "Draw triangle edges over the surfaces");
+    command->add_flag("--no-box", options->noBox, "Leave out the volume's bounding box");
+    command->add_option("--select", options->select, "Highlight surface INDEX (0 = the largest)");
+    return [options] { return runRender(*options); };
+}
+
+}  // namespace isotrack::cli

@@ -1,0 +1,55 @@
+#include "gl/vertex_array.h"
+
+#include <glad/gl.h>
+
+#include <cstdint>
+
+#include "gl/buffer.h"
+#include "gl/check.h"
+
+namespace isotrack::gl {
+
+void detail::destroyVertexArray(unsigned id) { glDeleteVertexArrays(1, &id); }
+
+namespace {
+
+GLuint createVertexArray() {
+    GLuint id = 0;
+    ISOTRACK_GL_CALL(glGenVertexArrays(1, &id));
+    if (id == 0) throw Error("glGenVertexArrays returned no vertex array");
+    return id;
+}
+
+}  // namespace
+
+VertexArray::VertexArray() : handle_(createVertexArray()) {}
+
+void VertexArray::setFloatAttribute(unsigned location, const Buffer& buffer, int components, std::size_t stride,
+                                    std::size_t offset) {
+    ISOTRACK_GL_CALL(glBindVertexArray(handle_.id()));
+    ISOTRACK_GL_CALL(glBindBuffer(GL_ARRAY_BUFFER, buffer.id()));
+    ISOTRACK_GL_CALL(glEnableVertexAttribArray(location));
+    ISOTRACK_GL_CALL(glVertexAttribPointer(location, components, GL_FLOAT, GL_FALSE, static_cast<GLsizei>(stride),
+                                           reinterpret_cast<const void*>(static_cast<std::uintptr_t>(offset))));
+    ISOTRACK_GL_CALL(glBindVertexArray(0));
+}
+
+void VertexArray::setIndexBuffer(const Buffer& buffer) {
+    ISOTRACK_GL_CALL(glBindVertexArray(handle_.id()));
+    ISOTRACK_GL_CALL(glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffer.id()));
+    ISOTRACK_GL_CALL(glBindVertexArray(0));
+}
+
+void VertexArray::drawTriangles(std::size_t indexCount) const {
+    if (indexCount == 0) return;
+    ISOTRACK_GL_CALL(glBindVertexArray(handle_.id()));
+    ISOTRACK_GL_CALL(glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(indexCount), GL_UNSIGNED_INT, nullptr));
+}
+
+void VertexArray::drawLines(std::size_t vertexCount) const {
+    if (vertexCount == 0) return;
+    ISOTRACK_GL_CALL(glBindVertexArray(handle_.id()));
+    ISOTRACK_GL_CALL(glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(vertexCount)));
+}
+
+}  // namespace isotrack::gl

@@ -1,0 +1,55 @@
+#version 330 core
+// Two-sided Blinn-Phong with a key and a fill light fixed to the camera.
+//
+// isotrack's normals point from above the isovalue to below it, i.e. out of the
+// object, and triangles wind counter-clockwise seen from outside, so front faces
+// are the outside. Back faces (the inside, seen through an open border) use the
+// flipped normal and a darker colour so the two sides read differently.
+
+in vec3 vPositionView;
+in vec3 vNormalView;
+
+uniform vec3 uColour;
+uniform float uHighlight;  // 1 for the selected surface, else 0
+
+out vec4 fragColour;
+
+const vec3 kKeyDirection = vec3(-0.35, 0.55, 0.76);   // towards the light, view space
+const vec3 kFillDirection = vec3(0.62, -0.28, 0.73);
+const float kAmbient = 0.16;
+const float kFill = 0.30;
+const float kSpecular = 0.28;
+const float kShininess = 48.0;
+const float kBackSideDarkening = 0.62;
+const vec3 kHighlightColour = vec3(1.0, 1.0, 0.92);
+const float kStripePeriod = 10.0;  // pixels
+
+float diffuse(vec3 n, vec3 l) { return max(dot(n, l), 0.0); }
+
+float specular(vec3 n, vec3 l, vec3 v) {
+    vec3 h = normalize(l + v);
+    return pow(max(dot(n, h), 0.0), kShininess);
+}
+
+void main() {
+    vec3 n = normalize(vNormalView);
+    vec3 albedo = uColour;
+    if (!gl_FrontFacing) {
+        n = -n;
+        albedo *= kBackSideDarkening;
+    }
+    vec3 v = normalize(-vPositionView);
+    vec3 key = normalize(kKeyDirection);
+    vec3 fill = normalize(kFillDirection);
+
+    vec3 colour = albedo * (kAmbient + diffuse(n, key) + kFill * diffuse(n, fill));
+    colour += vec3(kSpecular * specular(n, key, v));
+
+    // The selection glows white at its silhouette and carries diagonal stripes in
+    // screen space: recognisable whatever its own colour is.
+    float rim = pow(1.0 - max(dot(n, v), 0.0), 1.5);
+    float stripe = step(mod(gl_FragCoord.x + gl_FragCoord.y, kStripePeriod), 0.5 * kStripePeriod);
+    colour = mix(colour, kHighlightColour, uHighlight * (0.12 + 0.30 * stripe + 0.70 * rim));
+
+    fragColour = vec4(min(colour, vec3(1.0)), 1.0);
+}

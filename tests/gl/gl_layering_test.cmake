@@ -1,0 +1,17 @@
+# Fails when a file under app/ outside app/gl/ includes the GL loader <glad/gl.h>.
+#   cmake -DAPP_DIR=<app> -P gl_layering_test.cmake
+file(GLOB_RECURSE files ${APP_DIR}/*.h ${APP_DIR}/*.cpp)
+set(offenders "")
+foreach(f IN LISTS files)
+  if(f MATCHES "^${APP_DIR}/gl/")
+    continue()
+  endif()
+  file(STRINGS ${f} lines REGEX "#include[ \t]*[<\"]glad/")
+  if(lines)
+    list(APPEND offenders "${f}: ${lines}")
+  endif()
+endforeach()
+if(offenders)
+  message(FATAL_ERROR "only app/gl/ may include the GL loader:\n${offenders}")
+endif()
+message(STATUS "the GL loader is included only in app/gl/")
