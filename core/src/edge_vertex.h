@@ -13,8 +13,8 @@
 
 namespace isotrack::detail {
 
-// A threshold in the samples' own type with (sample > value) exactly when
-// (double(sample) > iso), so classification runs on native values in vector
+// A threshold in the samples' own type with (sample >= value) exactly when
+// (double(sample) >= iso), so classification runs on native values in vector
 // registers. `all`/`none` cover isovalues outside the type's range.
 template <class T>
 struct NativeThreshold {
@@ -23,17 +23,17 @@ struct NativeThreshold {
 
     explicit NativeThreshold(double iso) {
         if constexpr (std::is_integral_v<T>) {
-            const double f = std::floor(iso);
-            if (f < double(std::numeric_limits<T>::min())) {
+            const double c = std::ceil(iso);
+            if (c <= double(std::numeric_limits<T>::min())) {
                 all = true;
-            } else if (f >= double(std::numeric_limits<T>::max())) {
+            } else if (c > double(std::numeric_limits<T>::max())) {
                 none = true;
             } else {
-                value = static_cast<T>(f);
+                value = static_cast<T>(c);
             }
         } else if constexpr (std::is_same_v<T, float>) {
             float f = static_cast<float>(iso);
-            if (double(f) > iso) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+            if (double(f) < iso) f = std::nextafter(f, std::numeric_limits<float>::infinity());
             value = f;
         } else {
             value = static_cast<T>(iso);
@@ -66,8 +66,9 @@ public:
     std::size_t index(int x, int y, int z) const { return std::size_t(x) + strideY_ * std::size_t(y) + strideZ_ * std::size_t(z); }
     double iso() const { return iso_; }
     double at(std::size_t i) const { return static_cast<double>(samples_[i]); }
-    // The one classification rule of isotrack: above means strictly greater. NaN is below.
-    bool above(std::size_t i) const { return static_cast<double>(samples_[i]) > iso_; }
+    // The one classification rule of isotrack, VTK's: a sample at or above the
+    // isovalue is above; everything else, NaN included, is below.
+    bool above(std::size_t i) const { return static_cast<double>(samples_[i]) >= iso_; }
 
     // flags[i] = above(begin + i) for `count` samples.
     void classify(std::size_t begin, std::size_t count, std::uint8_t* flags) const {
@@ -77,7 +78,7 @@ public:
         }
         const T* samples = samples_ + begin;
         const T t = threshold_.value;
-        for (std::size_t i = 0; i < count; ++i) flags[i] = samples[i] > t;
+        for (std::size_t i = 0; i < count; ++i) flags[i] = samples[i] >= t;
     }
 
     // The vertex where the surface crosses the edge from sample (x, y, z) one step along `axis`.

@@ -3,7 +3,7 @@
 //
 // Passes, per slab between sample slices z and z+1 of a chunk:
 //  1. classify: one above/below flag per sample of slice z+1 (the single rule
-//     sample > iso), and per row the span of x-edges where the flag changes;
+//     sample >= iso), and per row the span of x-edges where the flag changes;
 //  2. trim: a row of cells can only hold surface where one of its four sample
 //     rows changes, or where rows that are each constant disagree; everything
 //     else is skipped without looking at its cells (after Flying Edges,

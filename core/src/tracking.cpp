@@ -4,7 +4,7 @@
 // (Leeds, 2013), and the surface tracking of Shekhar et al. (1996).
 //
 // A queue holds (cell, entry edge) pairs. For each pair:
-//  1. classify: the cell's configuration from its 8 samples (sample > iso);
+//  1. classify: the cell's configuration from its 8 samples (sample >= iso);
 //  2. find the piece: the continuation table names the piece of the cell's
 //     surface that holds the entry edge; a (cell, piece) seen before is skipped;
 //  3. emit: the piece's triangles, each corner a grid edge whose vertex is looked

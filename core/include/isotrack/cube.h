@@ -12,7 +12,7 @@
 //                           |/__ x
 //
 // A configuration is an 8-bit mask whose bit i is set when vertex i is above the
-// isovalue (sample > iso). This is the numbering of VTK's marching-cubes cases.
+// isovalue (sample >= iso, VTK's rule). This is the numbering of VTK's marching-cubes cases.
 #include <array>
 #include <cstdint>
 

@@ -2,7 +2,7 @@
 // Deterministic built-in scalar fields for demos, tests and benchmarks.
 //
 // Every field is a float32 N x N x N volume with spacing 1 and origin 0, so world
-// and voxel coordinates coincide. The object is where value > iso ("above").
+// and voxel coordinates coincide. The object is where value >= iso ("above").
 // Values depend only on the name and N: same bytes on every platform and run.
 #include <array>
 #include <string>

@@ -1,0 +1,175 @@
+#!/usr/bin/python3
+"""isotrack against VTK on the same volumes, in one run.
+
+For each volume: isotrack's exhaustive pass (mc), every surface (all) and one
+surface (track), at 1 and 2 threads, against VTK 9's vtkFlyingEdges3D (with
+normals) at 1 and 2 threads through vtkSMPTools, followed by
+vtkPolyDataConnectivityFilter in all-regions and closest-point modes. Times are
+extraction only (reading excluded), medians of --repeat runs. Prints a table of
+times and ratios (VTK time / isotrack time: above 1 means isotrack is faster).
+
+Usage: /usr/bin/python3 bench/compare_vtk.py [--isotrack build/app/isotrack] [--repeat 5] [--quick]
+Needs Debian's python3-vtk9 (run it with /usr/bin/python3) and, for the CT rows,
+assets/ct/cranium.nrrd from scripts/get_ct.sh.
+"""
+import argparse
+import json
+import os
+import statistics
+import subprocess
+import sys
+import time
+
+import vtk
+
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def read_nrrd(path):
+    """Reads a NRRD with VTK's serial reader (Debian's factory would hand out the MPI one)."""
+    vtk.vtkObjectFactory.SetAllEnableFlags(False, "vtkNrrdReader", "vtkPNrrdReader")
+    reader = vtk.vtkNrrdReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = vtk.vtkImageData()
+    image.DeepCopy(reader.GetOutput())
+    return image
+
+
+def median_time(run, repeat):
+    times = []
+    result = None
+    for _ in range(repeat):
+        start = time.perf_counter()
+        result = run()
+        times.append(time.perf_counter() - start)
+    return statistics.median(times), result
+
+
+def vtk_times(image, iso, seed, threads, repeat):
+    vtk.vtkSMPTools.SetBackend("TBB")
+    vtk.vtkSMPTools.Initialize(threads)
+    fe = vtk.vtkFlyingEdges3D()
+    fe.SetInputData(image)
+    fe.SetValue(0, iso)
+    fe.ComputeNormalsOn()
+
+    def flying_edges():
+        fe.Modified()
+        fe.Update()
+        return fe.GetOutput().GetNumberOfCells()
+
+    t_fe, triangles = median_time(flying_edges, repeat)
+    surface = vtk.vtkPolyData()
+    surface.DeepCopy(fe.GetOutput())
+
+    def connectivity(mode):
+        conn = vtk.vtkPolyDataConnectivityFilter()
+        conn.SetInputData(surface)
+        if mode == "all":
+            conn.SetExtractionModeToAllRegions()
+            conn.ColorRegionsOn()
+        else:
+            conn.SetExtractionModeToClosestPointRegion()
+            conn.SetClosestPoint(*seed)
+        conn.Update()
+        return conn.GetNumberOfExtractedRegions() if mode == "all" else conn.GetOutput().GetNumberOfCells()
+
+    t_all, regions = median_time(lambda: connectivity("all"), repeat)
+    t_one, one = median_time(lambda: connectivity("closest"), repeat)
+    return {"fe": t_fe, "fe_all": t_fe + t_all, "fe_one": t_fe + t_one, "triangles": triangles,
+            "regions": regions, "one_triangles": one}
+
+
+def isotrack_time(binary, path, iso, method, threads, repeat, seed=None):
+    cmd = [binary, "extract", "--volume", path, "--iso", repr(iso), "--method", method, "--threads", str(threads),
+           "--repeat", str(repeat), "--json"]
+    if seed is not None:
+        cmd += ["--seed", ",".join(repr(v) for v in seed)]
+    report = json.loads(subprocess.run(cmd, check=True, capture_output=True, text=True).stdout)
+    return report
+
+
+def smallest_surface_seed(binary, path, iso):
+    report = isotrack_time(binary, path, iso, "all", 2, 1)
+    smallest = report["surfaces"][-1]
+    lo, hi = smallest["bounds"]
+    return [lo[0], (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2]
+
+
+def ensure_field(binary, spec, directory):
+    path = os.path.join(directory, spec.replace(":", "_") + ".nrrd")
+    if not os.path.exists(path):
+        subprocess.run([binary, "field", spec, "--out", path], check=True, capture_output=True)
+    return path
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--isotrack", default=os.path.join(REPO, "build", "app", "isotrack"))
+    parser.add_argument("--repeat", type=int, default=5)
+    parser.add_argument("--quick", action="store_true", help="smaller volumes, for a smoke run")
+    args = parser.parse_args()
+    data = os.path.join(REPO, "build", "bench-data")
+    os.makedirs(data, exist_ok=True)
+
+    cases = []
+    ct = os.path.join(REPO, "assets", "ct", "cranium.nrrd")
+    if os.path.exists(ct):
+        # The skull, seeded near the top of the head; at -400 the skin.
+        cases.append(("CT iso 400", ct, 400.0, [122.0, 122.0, 160.0]))
+        cases.append(("CT iso -400", ct, -400.0, [122.0, 122.0, 160.0]))
+    else:
+        print("CT skipped: run scripts/get_ct.sh", file=sys.stderr)
+    n = 128 if args.quick else 256
+    cases.append((f"gyroid {n}^3", ensure_field(args.isotrack, f"gyroid:{n}", data), 0.0, None))
+    cases.append((f"blobs {n}^3", ensure_field(args.isotrack, f"blobs:{n}", data), 0.25, None))
+    m = 256 if args.quick else 512
+    cases.append((f"sphere {m}^3", ensure_field(args.isotrack, f"sphere:{m}", data), 0.0, None))
+
+    print(f"isotrack vs VTK {vtk.vtkVersion.GetVTKVersion()}, medians of {args.repeat} runs, seconds of extraction only;")
+    print("ratio = VTK time / isotrack time (above 1: isotrack faster)\n")
+    header = f"{'volume':<16} {'what':<34} {'isotrack ms':>12} {'VTK ms':>10} {'ratio':>7}"
+    print(header)
+    print("-" * len(header))
+    rows = []
+    for name, path, iso, seed in cases:
+        image = read_nrrd(path)
+        if seed is None:
+            seed = smallest_surface_seed(args.isotrack, path, iso)
+        for threads in (1, 2):
+            v = vtk_times(image, iso, seed, threads, args.repeat)
+            mc = isotrack_time(args.isotrack, path, iso, "mc", threads, args.repeat)
+            al = isotrack_time(args.isotrack, path, iso, "all", threads, args.repeat)
+            tr = isotrack_time(args.isotrack, path, iso, "track", threads, args.repeat, seed)
+            lines = [
+                (f"mc vs FlyingEdges, {threads}T", mc["seconds"], v["fe"]),
+                (f"all vs FE+connectivity, {threads}T", al["seconds"], v["fe_all"]),
+                (f"track vs FE+closest point, {threads}T", tr["seconds"], v["fe_one"]),
+            ]
+            for what, ours, theirs in lines:
+                print(f"{name:<16} {what:<34} {ours * 1e3:12.2f} {theirs * 1e3:10.2f} {theirs / ours:7.2f}")
+            print(f"{'':<16} {'(all / mc, same threads)':<34} {al['seconds'] / mc['seconds']:12.2f}")
+            rows.append({"volume": name, "threads": threads, "mc": mc["seconds"], "all": al["seconds"],
+                         "track": tr["seconds"], "fe": v["fe"], "fe_all": v["fe_all"], "fe_one": v["fe_one"],
+                         "triangles": mc["triangles"], "vtk_triangles": v["triangles"],
+                         "surfaces": al["components"], "vtk_regions": v["regions"],
+                         "track_triangles": tr["triangles"], "vtk_closest_triangles": v["one_triangles"]})
+            if mc["triangles"] != v["triangles"] or al["components"] != v["regions"]:
+                print(f"{'':<16} note: counts differ: isotrack {mc['triangles']} triangles / {al['components']} surfaces,"
+                      f" VTK {v['triangles']} / {v['regions']}")
+            if tr["triangles"] != v["one_triangles"]:
+                print(f"{'':<16} note: tracked {tr['triangles']} triangles, VTK closest region {v['one_triangles']}")
+        print()
+    by_volume = {}
+    for r in rows:
+        by_volume.setdefault(r["volume"], {})[r["threads"]] = r
+    print("two threads against one (isotrack mc):")
+    for name, r in by_volume.items():
+        print(f"  {name:<16} {r[1]['mc'] / r[2]['mc']:.2f}x")
+    with open(os.path.join(data, "compare_vtk.json"), "w") as f:
+        json.dump(rows, f, indent=1)
+
+
+if __name__ == "__main__":
+    main()
