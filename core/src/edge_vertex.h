@@ -93,8 +93,14 @@ public:
         double p[3] = {origin_[0] + x * spacing_[0], origin_[1] + y * spacing_[1], origin_[2] + z * spacing_[2]};
         p[axis] += t * spacing_[axis];
         double ga[3], gb[3];
-        gradient(x, y, z, ga);
-        gradient(x + (axis == 0), y + (axis == 1), z + (axis == 2), gb);
+        const int ex = x + (axis == 0), ey = y + (axis == 1), ez = z + (axis == 2);
+        if (x > 0 && y > 0 && z > 0 && ex + 1 < nx_ && ey + 1 < ny_ && ez + 1 < nz_) {
+            interiorGradient(a, ga);
+            interiorGradient(b, gb);
+        } else {
+            gradient(x, y, z, ga);
+            gradient(ex, ey, ez, gb);
+        }
         const double n[3] = {-(ga[0] + t * (gb[0] - ga[0])), -(ga[1] + t * (gb[1] - ga[1])), -(ga[2] + t * (gb[2] - ga[2]))};
         const double length2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
         for (int k = 0; k < 3; ++k) v.position[k] = static_cast<float>(p[k]);
@@ -111,13 +117,16 @@ public:
     // Central-difference gradient in world units; one-sided on the border.
     void gradient(int x, int y, int z, double g[3]) const {
         if (x > 0 && y > 0 && z > 0 && x + 1 < nx_ && y + 1 < ny_ && z + 1 < nz_) {
-            const std::size_t i = index(x, y, z);
-            g[0] = (at(i + 1) - at(i - 1)) * halfInverseSpacing_[0];
-            g[1] = (at(i + strideY_) - at(i - strideY_)) * halfInverseSpacing_[1];
-            g[2] = (at(i + strideZ_) - at(i - strideZ_)) * halfInverseSpacing_[2];
+            interiorGradient(index(x, y, z), g);
             return;
         }
         borderGradient(x, y, z, g);
+    }
+
+    void interiorGradient(std::size_t i, double g[3]) const {
+        g[0] = (at(i + 1) - at(i - 1)) * halfInverseSpacing_[0];
+        g[1] = (at(i + strideY_) - at(i - strideY_)) * halfInverseSpacing_[1];
+        g[2] = (at(i + strideZ_) - at(i - strideZ_)) * halfInverseSpacing_[2];
     }
 
     void borderGradient(int x, int y, int z, double g[3]) const {

@@ -45,6 +45,9 @@ struct RowSpan {
 };
 
 struct EdgeSlots {
+    // config of the cell whose two x-columns of four flags (bits: row y at z, row
+    // y+1 at z, row y at z+1, row y+1 at z+1) are `left | right << 4`.
+    std::array<std::uint8_t, 256> configOfColumns{};
     std::array<int, 12> axis{};
     std::array<int, 12> dz{};
     std::array<std::size_t, 12> offset{};  // within a slice, from the cell's origin sample
@@ -58,6 +61,12 @@ EdgeSlots edgeSlots(int nx) {
         s.axis[e] = cube::edgeAxis(e);
         s.dz[e] = o[2];
         s.offset[e] = std::size_t(o[0]) + std::size_t(nx) * std::size_t(o[1]);
+    }
+    for (int columns = 0; columns < 256; ++columns) {
+        const int l = columns & 15, r = columns >> 4;
+        s.configOfColumns[columns] = static_cast<std::uint8_t>((l & 1) | (r & 1) << 1 | (r >> 1 & 1) << 2 | (l >> 1 & 1) << 3 |
+                                                               (l >> 2 & 1) << 4 | (r >> 2 & 1) << 5 | (r >> 3 & 1) << 6 |
+                                                               (l >> 3 & 1) << 7);
     }
     for (int c = 0; c < 256; ++c) {
         unsigned mask = 0;
@@ -91,6 +100,7 @@ public:
             planar_[s].assign(2 * sliceSize_, kNoVertex);
         }
         vertical_.assign(sliceSize_, kNoVertex);
+        columns_.assign(std::size_t(nx_), 0);
     }
 
     void run() {
@@ -148,9 +158,10 @@ private:
         const std::uint8_t* hi0 = flags_[top].data() + row;
         const std::uint8_t* hi1 = hi0 + nx_;
         Mesh& mesh = chunk_.mesh;
+        std::uint8_t* columns = columns_.data();
+        for (int x = begin; x <= end; ++x) columns[x] = static_cast<std::uint8_t>(lo0[x] | lo1[x] << 1 | hi0[x] << 2 | hi1[x] << 3);
         for (int x = begin; x < end; ++x) {
-            const unsigned config = lo0[x] | lo0[x + 1] << 1 | lo1[x + 1] << 2 | lo1[x] << 3 | hi0[x] << 4 |
-                                    hi0[x + 1] << 5 | hi1[x + 1] << 6 | hi1[x] << 7;
+            const unsigned config = slots_.configOfColumns[columns[x] | columns[x + 1] << 4];
             if (config == 0 || config == 255) continue;
             std::array<std::uint32_t, 12> ids;
             const std::size_t cell = row + std::size_t(x);
@@ -161,15 +172,14 @@ private:
             const CaseContinuation& cased = table_[config];
             if (markPieces_) markPieceStarts(cased, mesh.indices.size() / 3);
             const int triangles = cased.pieces[cased.pieceCount - 1].firstTriangle + cased.pieces[cased.pieceCount - 1].triangleCount;
-            const std::size_t at = mesh.indices.size();
-            mesh.indices.resize(at + 3 * std::size_t(triangles));
-            std::uint32_t* out = mesh.indices.data() + at;
+            std::uint32_t out[3 * kMaxCaseTriangles];
             for (int t = 0; t < triangles; ++t) {
                 const auto& tri = cased.triangles[t];
                 out[3 * t] = ids[tri[0]];
                 out[3 * t + 1] = ids[tri[1]];
                 out[3 * t + 2] = ids[tri[2]];
             }
+            mesh.indices.insert(mesh.indices.end(), out, out + 3 * triangles);
         }
     }
 
@@ -216,6 +226,7 @@ private:
     std::array<std::vector<RowSpan>, 2> spans_;
     std::array<std::vector<std::uint32_t>, 2> planar_;  // x then y edges of a slice, ping-pong
     std::vector<std::uint32_t> vertical_;              // z edges of the current slab
+    std::vector<std::uint8_t> columns_;                // per x, the four flags of the cell row's corners
     std::array<std::uint32_t, 2> threshold_{};
     std::uint32_t verticalThreshold_ = 0;
     bool seamSlab_ = false;
