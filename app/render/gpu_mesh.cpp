@@ -37,7 +37,7 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
     indexCount_ = mesh.indices.size();
     vertices_.allocate(vertexCount_ * kVertexBytes, mesh.vertices.data(), gl::BufferUsage::Static);
     indices_.allocate(indexCount_ * kIndexBytes, mesh.indices.data(), gl::BufferUsage::Static);
-    uploadedBytes_ = mesh.byteSize();
+    uploadedBytes_ = mesh.drawByteSize();
     bindAttributes();
 }
 

@@ -417,7 +417,7 @@ std::vector<Surface> trackAllSurfaces(const Volume& volume, double iso, TableKin
     // Discovery order is the order of each surface's first cell; break ties by first grid edge.
     auto firstEdge = [&](const Surface& s) {
         std::uint64_t first = std::numeric_limits<std::uint64_t>::max();
-        for (const GridEdge& e : s.mesh.vertexEdges) first = std::min(first, std::uint64_t(volume.index(e.x, e.y, e.z)) * 3 + std::uint64_t(e.axis));
+        for (const GridEdge e : s.mesh.vertexEdges) first = std::min(first, std::uint64_t(volume.index(e.x, e.y, e.z)) * 3 + std::uint64_t(e.axis));
         return first;
     };
     std::vector<std::pair<std::uint64_t, std::size_t>> keys;
@@ -509,7 +509,7 @@ SurfaceStats measure(const Mesh& mesh, const Volume& volume, std::optional<bool>
     stats.closed = knownClosed ? *knownClosed && !mesh.indices.empty() : isClosed(mesh);
     if (stats.closed) stats.enclosedVolume = std::abs(signedVolume);
     const Dims& dims = volume.dims();
-    for (const GridEdge& e : mesh.vertexEdges) {
+    for (const GridEdge e : mesh.vertexEdges) {
         const int p[3] = {e.x, e.y, e.z};
         for (int k = 0; k < 3; ++k) {
             if (k != e.axis && (p[k] == 0 || p[k] == dims[k] - 1)) stats.touchesBorder = true;

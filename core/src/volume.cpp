@@ -43,6 +43,8 @@ Volume::Volume(Dims dims, ScalarType type, Vec3d spacing, Vec3d origin)
         std::to_string(dims[0]) + " x " + std::to_string(dims[1]) + " x " + std::to_string(dims[2]);
     if (dims[0] < 1 || dims[1] < 1 || dims[2] < 1)
         throw InputError("volume: dimensions must be positive, got " + dimsText);
+    if (dims[0] > kMaxDimension || dims[1] > kMaxDimension || dims[2] > kMaxDimension)
+        throw InputError("volume: dimensions must be at most " + std::to_string(kMaxDimension) + ", got " + dimsText);
     // Check step by step so the product itself can never overflow.
     const std::uint64_t maxSamples = kMaxVolumeBytes / scalarTypeSize(type);
     const auto nx = std::uint64_t(dims[0]), ny = std::uint64_t(dims[1]), nz = std::uint64_t(dims[2]);

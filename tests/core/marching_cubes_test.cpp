@@ -93,7 +93,7 @@ TEST_CASE("each crossed grid edge yields exactly one vertex, on that edge", "[co
         CHECK(mesh.vertices.size() == countCrossedEdges(volume, iso));
         CHECK(isotrack::testing::vertexEdgeSet(mesh, volume.dims()).size() == mesh.vertices.size());
         for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-            const GridEdge& e = mesh.vertexEdges[i];
+            const GridEdge e = mesh.vertexEdges[i];
             const int p[3] = {e.x, e.y, e.z};
             for (int k = 0; k < 3; ++k) {
                 const float lo = float(p[k]), hi = float(p[k] + (k == e.axis));

@@ -77,7 +77,7 @@ inline std::multiset<std::array<std::uint64_t, 3>> triangleSet(const Mesh& mesh,
 
 inline std::set<std::uint64_t> vertexEdgeSet(const Mesh& mesh, const Dims& dims) {
     std::set<std::uint64_t> out;
-    for (const GridEdge& e : mesh.vertexEdges) out.insert(edgeKey(e, dims));
+    for (const GridEdge e : mesh.vertexEdges) out.insert(edgeKey(e, dims));
     return out;
 }
 

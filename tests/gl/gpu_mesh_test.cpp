@@ -39,8 +39,8 @@ TEST_CASE("a GpuMesh built from a mesh has exactly its size", "[gl]") {
     const render::GpuMeshBytes bytes = gpu.bytes();
     CHECK(bytes.vertexBytes == mesh.vertices.size() * sizeof(Vertex));
     CHECK(bytes.indexBytes == mesh.indices.size() * sizeof(std::uint32_t));
-    CHECK(bytes.capacityBytes == mesh.byteSize());
-    CHECK(gpu.uploadedBytes() == mesh.byteSize());
+    CHECK(bytes.capacityBytes == mesh.drawByteSize());
+    CHECK(gpu.uploadedBytes() == mesh.drawByteSize());
     requireSameContents(gpu, mesh);
 }
 
@@ -68,14 +68,14 @@ TEST_CASE("appending uploads only the new ranges and doubles capacity", "[gl]") 
         gpu.append(growing, range);
         if (gpu.bytes().capacityBytes != previousCapacity) ++reallocations;
         previousCapacity = gpu.bytes().capacityBytes;
-        CHECK(gpu.uploadedBytes() == growing.byteSize());
+        CHECK(gpu.uploadedBytes() == growing.drawByteSize());
     }
     requireSameContents(gpu, growing);
     CHECK(growing.indices == whole.indices);
     // Doubling: a logarithmic number of reallocations, never more than twice the space needed
     // (beyond the minimum first allocation).
     CHECK(reallocations <= 2 * 12);
-    CHECK(gpu.bytes().capacityBytes <= 2 * growing.byteSize() + 64 * 1024);
+    CHECK(gpu.bytes().capacityBytes <= 2 * growing.drawByteSize() + 64 * 1024);
 }
 
 TEST_CASE("appending a range that does not continue the mesh is refused", "[gl]") {
@@ -84,7 +84,7 @@ TEST_CASE("appending a range that does not continue the mesh is refused", "[gl]"
     render::GpuMesh gpu(mesh);
     CHECK_THROWS_AS(gpu.append(mesh, render::MeshRange{0, 3, 0, 3}), std::invalid_argument);
     gpu.appendNew(mesh);  // nothing new: a no-op
-    CHECK(gpu.uploadedBytes() == mesh.byteSize());
+    CHECK(gpu.uploadedBytes() == mesh.drawByteSize());
 }
 
 TEST_CASE("a GpuMesh follows a SurfaceTracker step by step", "[gl][tracking]") {
@@ -101,6 +101,6 @@ TEST_CASE("a GpuMesh follows a SurfaceTracker step by step", "[gl][tracking]") {
         ++steps;
     }
     CHECK(steps > 3);
-    CHECK(gpu.uploadedBytes() == tracker.mesh().byteSize());
+    CHECK(gpu.uploadedBytes() == tracker.mesh().drawByteSize());
     requireSameContents(gpu, tracker.mesh());
 }

@@ -22,15 +22,31 @@ struct GridEdge {
     }
 };
 
+// A GridEdge in 8 bytes (20 bits per coordinate, 2 for the axis), as meshes keep one per vertex.
+class PackedGridEdge {
+public:
+    PackedGridEdge() = default;
+    PackedGridEdge(const GridEdge& e)  // NOLINT(google-explicit-constructor): lossless for coordinates < 2^20
+        : bits_(std::uint64_t(e.x) | std::uint64_t(e.y) << 20 | std::uint64_t(e.z) << 40 | std::uint64_t(e.axis) << 60) {}
+    operator GridEdge() const {  // NOLINT(google-explicit-constructor)
+        return GridEdge{int(bits_ & kMask), int(bits_ >> 20 & kMask), int(bits_ >> 40 & kMask), int(bits_ >> 60)};
+    }
+
+private:
+    static constexpr std::uint64_t kMask = (std::uint64_t(1) << 20) - 1;
+    std::uint64_t bits_ = 0;
+};
+
 struct Mesh {
     std::vector<Vertex> vertices;
-    std::vector<std::uint32_t> indices;  // three per triangle, counter-clockwise seen from below
-    std::vector<GridEdge> vertexEdges;   // per vertex, the grid edge it was computed on
+    std::vector<std::uint32_t> indices;       // three per triangle, counter-clockwise seen from below
+    std::vector<PackedGridEdge> vertexEdges;  // per vertex, the grid edge it was computed on
 
     std::size_t triangleCount() const { return indices.size() / 3; }
-    std::size_t byteSize() const {
-        return vertices.size() * sizeof(Vertex) + indices.size() * sizeof(std::uint32_t);
-    }
+    // What a GPU holds of the mesh: vertices and indices.
+    std::size_t drawByteSize() const { return vertices.size() * sizeof(Vertex) + indices.size() * sizeof(std::uint32_t); }
+    // Everything, with the grid edge behind each vertex.
+    std::size_t byteSize() const { return drawByteSize() + vertexEdges.size() * sizeof(PackedGridEdge); }
 };
 
 }  // namespace isotrack

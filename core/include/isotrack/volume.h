@@ -19,6 +19,8 @@ std::size_t scalarTypeSize(ScalarType type);
 
 // Largest sample buffer a Volume may hold; loaders check against it before allocating.
 inline constexpr std::uint64_t kMaxVolumeBytes = std::uint64_t(16) << 30;
+// Grid coordinates are packed in 20 bits per axis (see PackedGridEdge).
+inline constexpr int kMaxDimension = 1 << 20;
 
 using Dims = std::array<int, 3>;
 using Vec3d = std::array<double, 3>;
