@@ -51,6 +51,7 @@ struct FaceSteps {
     std::array<std::array<std::int8_t, 12>, 6> across{};
     std::array<std::array<int, 3>, 12> edgeOrigin{};
     std::array<int, 12> edgeAxis{};
+    std::array<int, 12> edgeLocal{};  // offset of the edge's origin in a sparse block's local index
     FaceSteps() {
         for (int f = 0; f < cube::kFaceCount; ++f) {
             step[f][cube::faceAxis(f)] = cube::faceSide(f) ? 1 : -1;
@@ -61,6 +62,7 @@ struct FaceSteps {
         for (int e = 0; e < cube::kEdgeCount; ++e) {
             edgeOrigin[e] = cube::edgeOrigin(e);
             edgeAxis[e] = cube::edgeAxis(e);
+            edgeLocal[e] = detail::SparseBlocks::local(edgeOrigin[e][0], edgeOrigin[e][1], edgeOrigin[e][2]);
         }
     }
 };
@@ -125,13 +127,16 @@ public:
     }
 
     void enqueue(TrackState& state, int x, int y, int z, int edge) const override {
-        detail::SparseBlocks::Block& block = state.blocks.at(x, y, z);
-        const int cell = detail::SparseBlocks::local(x, y, z);
-        if (block.config[cell] == 0) block.config[cell] = config(x, y, z);
-        const std::uint8_t c = block.config[cell];
+        enqueueIn(state, state.blocks.at(x, y, z), detail::SparseBlocks::local(x, y, z), x, y, z, edge);
+    }
+
+    // As enqueue, with the cell's block and local index already known.
+    void enqueueIn(TrackState& state, detail::SparseBlocks::Block& block, int cell, int x, int y, int z, int edge) const {
+        if (block.config[std::size_t(cell)] == 0) block.config[std::size_t(cell)] = config(x, y, z);
+        const std::uint8_t c = block.config[std::size_t(cell)];
         const int piece = table_[c].pieceOfEdge[edge];
         if (piece < 0) return;
-        std::uint8_t& marks = state.denseVisited ? state.denseVisited[grid_.index(x, y, z)] : block.visited[cell];
+        std::uint8_t& marks = state.denseVisited ? state.denseVisited[grid_.index(x, y, z)] : block.visited[std::size_t(cell)];
         const auto bit = static_cast<std::uint8_t>(1u << piece);
         if (marks & bit) return;
         marks = static_cast<std::uint8_t>(marks | bit);
@@ -146,10 +151,19 @@ public:
             ++visited;
             const CaseContinuation& cased = table_[entry.config];
             const Piece& piece = cased.pieces[entry.piece];
+            // The cell's block holds its corners too unless it sits on the block's upper faces.
+            constexpr int kLast = detail::SparseBlocks::kSide - 1;
+            detail::SparseBlocks::Block& block = state.blocks.at(entry.x, entry.y, entry.z);
+            const int cell = detail::SparseBlocks::local(entry.x, entry.y, entry.z);
+            const int lx = entry.x & kLast, ly = entry.y & kLast, lz = entry.z & kLast;
+            const bool cornersInBlock = lx < kLast && ly < kLast && lz < kLast;
             std::array<std::uint32_t, 12> vertexOf;
             for (unsigned mask = piece.edgeMask; mask != 0; mask &= mask - 1) {
                 const int edge = __builtin_ctz(mask);
-                vertexOf[edge] = vertexOnEdge(state, entry, edge);
+                std::uint32_t& id = cornersInBlock ? block.vertex[std::size_t(3 * (cell + steps_.edgeLocal[edge]) + steps_.edgeAxis[edge])]
+                                                   : vertexSlot(state, entry, edge);
+                if (id == detail::SparseBlocks::kNoVertex) id = newVertex(state, entry, edge);
+                vertexOf[edge] = id;
             }
             const std::size_t at = state.mesh.indices.size();
             state.mesh.indices.resize(at + 3 * std::size_t(piece.triangleCount));
@@ -157,17 +171,24 @@ public:
             for (int t = piece.firstTriangle; t < piece.firstTriangle + piece.triangleCount; ++t) {
                 for (int corner = 0; corner < 3; ++corner) *out++ = vertexOf[cased.triangles[t][corner]];
             }
+            const int local[3] = {lx, ly, lz};
             for (int f = 0; f < cube::kFaceCount; ++f) {
                 if (piece.exits[f][0] < 0) continue;
                 const int axis = cube::faceAxis(f);
+                const int step = steps_.step[f][axis];
                 const int to[3] = {entry.x + steps_.step[f][0], entry.y + steps_.step[f][1], entry.z + steps_.step[f][2]};
                 if (to[axis] < 0 || to[axis] > last[axis]) {
                     state.leftVolume = true;  // the surface is cut open by the volume's border here
                     continue;
                 }
+                const int toLocal = local[axis] + step;
+                const bool sameBlock = toLocal >= 0 && toLocal <= kLast;
+                detail::SparseBlocks::Block& target = sameBlock ? block : state.blocks.at(to[0], to[1], to[2]);
+                const int targetCell = sameBlock ? cell + step * detail::SparseBlocks::kLocalStep[std::size_t(axis)]
+                                                 : detail::SparseBlocks::local(to[0], to[1], to[2]);
                 for (std::int8_t exit : piece.exits[f]) {
                     if (exit < 0) break;
-                    enqueue(state, to[0], to[1], to[2], steps_.across[f][exit]);
+                    enqueueIn(state, target, targetCell, to[0], to[1], to[2], steps_.across[f][exit]);
                 }
             }
         }
@@ -183,17 +204,19 @@ public:
     }
 
 private:
-    std::uint32_t vertexOnEdge(TrackState& state, const Entry& entry, int edge) const {
+    std::uint32_t& vertexSlot(TrackState& state, const Entry& entry, int edge) const {
+        const auto& o = steps_.edgeOrigin[edge];
+        const int x = entry.x + o[0], y = entry.y + o[1], z = entry.z + o[2];
+        return state.blocks.at(x, y, z).vertex[std::size_t(3 * detail::SparseBlocks::local(x, y, z) + steps_.edgeAxis[edge])];
+    }
+
+    std::uint32_t newVertex(TrackState& state, const Entry& entry, int edge) const {
         const auto& o = steps_.edgeOrigin[edge];
         const int axis = steps_.edgeAxis[edge];
         const int x = entry.x + o[0], y = entry.y + o[1], z = entry.z + o[2];
-        std::uint32_t& id = state.blocks.at(x, y, z).vertex[std::size_t(3 * detail::SparseBlocks::local(x, y, z) + axis)];
-        if (id == detail::SparseBlocks::kNoVertex) {
-            id = static_cast<std::uint32_t>(state.mesh.vertices.size());
-            state.mesh.vertices.push_back(grid_.edgeVertex(x, y, z, axis));
-            state.mesh.vertexEdges.push_back(GridEdge{x, y, z, axis});
-        }
-        return id;
+        state.mesh.vertices.push_back(grid_.edgeVertex(x, y, z, axis));
+        state.mesh.vertexEdges.push_back(GridEdge{x, y, z, axis});
+        return static_cast<std::uint32_t>(state.mesh.vertices.size() - 1);
     }
 
     detail::SampleGrid<T> grid_;
