@@ -383,6 +383,9 @@ bool SurfaceTracker::done() const { return impl_->state.head >= impl_->state.que
 const Mesh& SurfaceTracker::mesh() const { return impl_->state.mesh; }
 std::size_t SurfaceTracker::cellsVisited() const { return impl_->state.cellsVisited; }
 bool SurfaceTracker::leftVolume() const { return impl_->state.leftVolume; }
+std::size_t SurfaceTracker::workingBytes() const {
+    return impl_->state.blocks.byteSize() + impl_->state.queue.capacity() * sizeof(Entry);
+}
 Mesh SurfaceTracker::takeMesh() { return std::move(impl_->state.mesh); }
 
 // ---- whole surfaces -------------------------------------------------------

@@ -191,6 +191,12 @@ TEST_CASE("the smallest blob alone: one vertex per crossed edge around it", "[co
     CHECK(s.stats.closed);
     CHECK(connectedComponents(s.mesh) == 1);
     CHECK(s.stats.cellsVisited * 4 < volume.sampleCount() / 1000);
+
+    // Its bookkeeping follows the surface: far less than a byte per voxel of the volume.
+    SurfaceTracker tracker(volume, iso);
+    tracker.start(nearestCrossedEdge(volume, iso, smallest.centre));
+    while (!tracker.done()) tracker.step(1000);
+    CHECK(tracker.workingBytes() < volume.sampleCount() / 50);
 }
 
 TEST_CASE("every surface together is the exhaustive mesh, triangle for triangle", "[core][tracking]") {

@@ -92,6 +92,8 @@ public:
     std::size_t cellsVisited() const;
     // True once the surface has reached the volume's border and been cut open there.
     bool leftVolume() const;
+    // Bytes of the tracker's own bookkeeping (sparse blocks and queue), mesh excluded.
+    std::size_t workingBytes() const;
     Mesh takeMesh();
 
 private:
