@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
     add(isotrack::cli::addExtractCommand);
     add(isotrack::cli::addFieldCommand);
     add(isotrack::cli::addRenderCommand);
+    add(isotrack::cli::addInfoCommand);
     app.require_subcommand(0, 1);
 
     try {

@@ -14,6 +14,9 @@
 #   cranium.raw   raw little-endian int16 samples (matrix.dat verbatim)
 #   cranium.nhdr  detached NRRD header pointing at cranium.raw
 #   cranium.nrrd  attached-header NRRD (header + raw bytes)
+#   variants/     the same CT as gzip NRRD, MetaImage (.mhd, .mha), VTK
+#                 legacy and big-endian NIfTI (.nii, .nii.gz), made by
+#                 scripts/make_ct_variants.py
 # Dimensions and spacing are read from main.plist inside the tar. The tar
 # gives no origin, so no "space origin" is written (readers use 0,0,0).
 #
@@ -63,9 +66,12 @@ up_to_date=1
 for f in "$raw" "$nhdr" "$nrrd"; do
     if [[ ! -s $f || ! $f -nt $SRC ]]; then up_to_date=0; fi
 done
+make_variants() { "$PY" "$script_dir/make_ct_variants.py" "$target" || die "make_ct_variants.py failed"; }
+
 if [[ $up_to_date -eq 1 ]]; then
     echo "get_ct.sh: up to date" >&2
     printf '%s\n' "$raw" "$nhdr" "$nrrd"
+    make_variants
     exit 0
 fi
 
@@ -136,3 +142,4 @@ mv -f "$tmp/cranium.raw" "$raw"
 mv -f "$tmp/cranium.nhdr" "$nhdr"
 mv -f "$tmp/cranium.nrrd" "$nrrd"
 printf '%s\n' "$raw" "$nhdr" "$nrrd"
+make_variants

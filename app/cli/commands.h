@@ -14,5 +14,6 @@ using RunCommand = std::function<int()>;
 RunCommand addExtractCommand(CLI::App& app);
 RunCommand addFieldCommand(CLI::App& app);
 RunCommand addRenderCommand(CLI::App& app);
+RunCommand addInfoCommand(CLI::App& app);
 
 }  // namespace isotrack::cli

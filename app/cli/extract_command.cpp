@@ -2,8 +2,11 @@
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
+#include <algorithm>
+#include <filesystem>
 #include <memory>
 #include <optional>
+#include <thread>
 #include <vector>
 
 #include "isotrack/errors.h"
@@ -11,6 +14,7 @@
 
 #include "cli/commands.h"
 #include "cli/source.h"
+#include "isotrack/continuation.h"
 #include "isotrack/io.h"
 #include "isotrack/marching_cubes.h"
 #include "isotrack/tables.h"
@@ -19,12 +23,18 @@
 namespace isotrack::cli {
 namespace {
 
+int defaultThreads() { return std::max(1, int(std::thread::hardware_concurrency())); }
+
 struct ExtractOptions {
     SourceOptions source;
     std::string table = "consistent";
     std::string method = "mc";
     std::vector<double> seed;
+    int threads = defaultThreads();
+    int repeat = 1;
     std::string out;
+    std::string outDir;     // --method all: one file per surface
+    std::string outFormat;  // of the --out-dir files: ply, obj or stl
     bool json = false;
 };
 
@@ -34,7 +44,8 @@ struct Extraction {
     std::optional<std::size_t> components;
     std::optional<std::size_t> cellsVisited;
     nlohmann::json surfaces = nlohmann::json::array();
-    double seconds = 0.0;
+    std::vector<std::string> surfaceFiles;  // for --out-dir
+    std::vector<double> seconds;  // one per run
 };
 
 nlohmann::json surfaceJson(const SurfaceStats& s) {
@@ -60,52 +71,97 @@ void appendSurface(const Surface& surface, std::int32_t component, Extraction& o
     out.faceComponent.insert(out.faceComponent.end(), surface.mesh.triangleCount(), component);
 }
 
-Extraction extract(const ExtractOptions& options, const Source& source, TableKind table) {
-    Extraction out;
+// The --out-dir files' extension: --out-format, else --out's, else .ply.
+std::string surfaceExtension(const ExtractOptions& options) {
+    if (!options.outFormat.empty()) return "." + options.outFormat;
+    return options.out.empty() ? ".ply" : meshFormatExtension(meshFormatOf(options.out));
+}
+
+// DIR/surface_000.EXT, DIR/surface_001.EXT, ... largest surface first.
+std::vector<std::string> writeSurfaces(const ExtractOptions& options, const std::vector<Surface>& surfaces) {
+    std::error_code ec;
+    std::filesystem::create_directories(options.outDir, ec);
+    if (ec) throw InputError("--out-dir " + options.outDir + ": cannot create: " + ec.message());
+    const std::string extension = surfaceExtension(options);
+    std::vector<std::string> files;
+    for (std::size_t i = 0; i < surfaces.size(); ++i) {
+        char name[64];
+        std::snprintf(name, sizeof name, "surface_%03zu%s", i, extension.c_str());
+        files.push_back((std::filesystem::path(options.outDir) / name).string());
+        writeMesh(files.back(), surfaces[i].mesh);
+    }
+    return files;
+}
+
+// One run of the chosen method; only extraction is timed.
+Extraction extractOnce(const ExtractOptions& options, const Source& source, TableKind table) {
     using Clock = std::chrono::steady_clock;
+    Extraction out;
+    const auto start = Clock::now();
     if (options.method == "mc") {
-        const auto start = Clock::now();
-        out.mesh = marchingCubes(source.volume, source.iso, table);
-        out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        out.mesh = marchingCubes(source.volume, source.iso, table, options.threads);
+        out.seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
         return out;
     }
     if (options.method == "track") {
-        if (options.seed.size() != 3) throw InputError("--method track needs --seed X,Y,Z (world coordinates)");
-        const auto start = Clock::now();
         const GridEdge seed = nearestCrossedEdge(source.volume, source.iso, {options.seed[0], options.seed[1], options.seed[2]});
         Surface surface = trackSurface(source.volume, source.iso, seed, table);
-        out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        out.seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
         out.components = 1;
         out.cellsVisited = surface.stats.cellsVisited;
         out.surfaces.push_back(surfaceJson(surface.stats));
         out.mesh = std::move(surface.mesh);
         return out;
     }
-    const auto start = Clock::now();
-    const std::vector<Surface> surfaces = extractAllSurfaces(source.volume, source.iso, table);
-    out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    const std::vector<Surface> surfaces = extractAllSurfaces(source.volume, source.iso, table, options.threads);
+    out.seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
     out.components = surfaces.size();
     std::size_t cells = 0;
     for (std::size_t i = 0; i < surfaces.size(); ++i) {
         cells += surfaces[i].stats.cellsVisited;
         out.surfaces.push_back(surfaceJson(surfaces[i].stats));
-        if (!options.out.empty()) appendSurface(surfaces[i], static_cast<std::int32_t>(i), out);
-        else out.mesh.indices.resize(out.mesh.indices.size() + surfaces[i].mesh.indices.size()),
-             out.mesh.vertices.resize(out.mesh.vertices.size() + surfaces[i].mesh.vertices.size());
+        appendSurface(surfaces[i], static_cast<std::int32_t>(i), out);
     }
     out.cellsVisited = cells;
+    if (!options.outDir.empty()) out.surfaceFiles = writeSurfaces(options, surfaces);
     return out;
+}
+
+Extraction extract(const ExtractOptions& options, const Source& source, TableKind table) {
+    if (options.method == "track" && options.seed.size() != 3) {
+        throw InputError("--method track needs --seed X,Y,Z (world coordinates)");
+    }
+    continuationTable(table);  // the tables are generated once, before any timing
+    std::vector<double> seconds;
+    Extraction out;
+    ExtractOptions quiet = options;  // only the last run writes --out-dir files
+    quiet.outDir.clear();
+    for (int run = 0; run < options.repeat; ++run) {
+        out = extractOnce(run + 1 == options.repeat ? options : quiet, source, table);
+        seconds.push_back(out.seconds.front());
+    }
+    out.seconds = seconds;
+    return out;
+}
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2.0;
 }
 
 int runExtract(const ExtractOptions& options) {
     const TableKind table = parseTableKind(options.table);
+    if (!options.out.empty()) meshFormatOf(options.out);  // an unknown extension fails before the work
+    if (!options.outDir.empty() && options.method != "all")
+        throw InputError("--out-dir writes one file per surface and needs --method all, not " + options.method);
     const Source source = loadSource(options.source);
     const Dims& dims = source.volume.dims();
 
     const Extraction result = extract(options, source, table);
     const Mesh& mesh = result.mesh;
-    const double seconds = result.seconds;
-    if (!options.out.empty()) writePly(options.out, mesh, options.method == "all" ? &result.faceComponent : nullptr);
+    const double seconds = median(result.seconds);
+    if (!options.out.empty()) writeMesh(options.out, mesh, options.method == "all" ? &result.faceComponent : nullptr);
 
     const std::size_t cellsTotal =
         std::size_t(std::max(dims[0] - 1, 0)) * std::size_t(std::max(dims[1] - 1, 0)) * std::size_t(std::max(dims[2] - 1, 0));
@@ -124,10 +180,13 @@ int runExtract(const ExtractOptions& options) {
             {"cells_visited", result.cellsVisited ? nlohmann::json(*result.cellsVisited) : nlohmann::json(nullptr)},
             {"cells_total", cellsTotal},
             {"seconds", seconds},
+            {"seconds_all", result.seconds},
+            {"threads", options.method == "track" ? 1 : options.threads},
             {"mesh_bytes", mesh.byteSize()},
             {"volume_bytes", source.volume.byteSize()},
         };
         if (!options.out.empty()) report["out"] = options.out;
+        if (!options.outDir.empty()) report["out_files"] = result.surfaceFiles;
         if (options.method != "mc") report["surfaces"] = result.surfaces;
         std::printf("%s\n", report.dump().c_str());
     } else {
@@ -135,6 +194,9 @@ int runExtract(const ExtractOptions& options) {
         if (result.components) std::printf(" in %zu surface%s", *result.components, *result.components == 1 ? "" : "s");
         std::printf(" at iso %g (%s table, method %s) in %.3f ms%s%s\n", source.iso, tableKindName(table),
                     options.method.c_str(), seconds * 1e3, options.out.empty() ? "" : " -> ", options.out.c_str());
+        if (!options.outDir.empty())
+            std::printf("%zu surface file%s in %s\n", result.surfaceFiles.size(), result.surfaceFiles.size() == 1 ? "" : "s",
+                        options.outDir.c_str());
     }
     return 0;
 }
@@ -153,7 +215,18 @@ RunCommand addExtractCommand(CLI::App& app) {
     command->add_option("--seed", options->seed, "World point X,Y,Z: tracking starts at the crossed edge nearest to it")
         ->delimiter(',')
         ->expected(3);
-    command->add_option("--out", options->out, "Write the mesh to FILE.ply (binary little-endian)");
+    command->add_option("--threads", options->threads, "Threads for mc and all (default: all cores)")
+        ->check(CLI::Range(1, 256));
+    command->add_option("--repeat", options->repeat, "Run the extraction K times; seconds is the median")
+        ->check(CLI::Range(1, 1000));
+    command->add_option("--out", options->out,
+                        "Write the mesh to FILE: .ply (binary, with a per-face component for --method all), .obj or .stl");
+    auto* outDir = command->add_option("--out-dir", options->outDir,
+                                       "With --method all: write each surface to DIR/surface_000.EXT, largest first");
+    command->add_option("--out-format", options->outFormat,
+                        "Format of the --out-dir files: ply, obj or stl (default: --out's extension, else ply)")
+        ->check(CLI::IsMember({"ply", "obj", "stl"}))
+        ->needs(outDir);
     command->add_flag("--json", options->json, "Print one JSON object on stdout");
     return [options] { return runExtract(*options); };
 }

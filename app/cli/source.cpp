@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 #include <cmath>
+#include <map>
 
 #include "isotrack/errors.h"
 #include "isotrack/fields.h"
@@ -9,14 +10,59 @@
 
 namespace isotrack::cli {
 
+namespace {
+
+const std::map<std::string, ScalarType> kRawTypes = {
+    {"uint8", ScalarType::UInt8},     {"int8", ScalarType::Int8},     {"uint16", ScalarType::UInt16},
+    {"int16", ScalarType::Int16},     {"uint32", ScalarType::UInt32}, {"int32", ScalarType::Int32},
+    {"float32", ScalarType::Float32}, {"float64", ScalarType::Float64},
+};
+
+}  // namespace
+
+void addRawOptions(CLI::App& command, RawOptions& raw, CLI::Option* volume) {
+    std::vector<std::string> typeNames;
+    for (const auto& entry : kRawTypes) typeNames.push_back(entry.first);
+    auto* dims = command.add_option("--dims", raw.dims, "Read --volume as raw samples, x fastest: NX,NY,NZ")
+                     ->delimiter(',')
+                     ->expected(3)
+                     ->check(CLI::PositiveNumber);
+    auto* type = command.add_option("--type", raw.type, "Raw sample type (with --dims)")->check(CLI::IsMember(typeNames));
+    auto* spacing = command.add_option("--spacing", raw.spacing, "Raw sample spacing SX,SY,SZ (default 1,1,1)")
+                        ->delimiter(',')
+                        ->expected(3)
+                        ->check(CLI::PositiveNumber);
+    auto* endian = command.add_option("--endian", raw.endian, "Raw byte order: little (default) or big")
+                       ->check(CLI::IsMember({"little", "big"}));
+    dims->needs(volume);
+    dims->needs(type);
+    type->needs(dims);
+    spacing->needs(dims);
+    endian->needs(dims);
+}
+
 void addSourceOptions(CLI::App& command, SourceOptions& options) {
     std::string names;
     for (const FieldInfo& field : builtinFields()) names += std::string(names.empty() ? "" : ", ") + field.name;
-    auto* volume = command.add_option("--volume", options.volumePath, "Volume file (.nrrd, .nhdr)");
+    auto* volume = command.add_option("--volume", options.volumePath,
+                                      "Volume file (.nrrd .nhdr .nii .nii.gz .mhd .mha .vtk; raw with --dims)");
     auto* field = command.add_option("--field", options.fieldSpec, "Built-in field NAME[:N] (" + names + ")");
     volume->excludes(field);
     field->excludes(volume);
     command.add_option("--iso", options.iso, "Isovalue (default: the field's own, or the middle of the data range)");
+    addRawOptions(command, options.raw, volume);
+}
+
+Volume loadVolumeFile(const std::string& path, const RawOptions& raw) {
+    if (raw.dims.empty()) return loadVolume(path);
+    RawLayout layout;
+    for (std::size_t a = 0; a < 3; ++a) layout.dims[a] = raw.dims.at(a);
+    const auto type = kRawTypes.find(raw.type);
+    if (type == kRawTypes.end()) throw InputError("--type: unknown sample type \"" + raw.type + "\"");
+    layout.type = type->second;
+    if (!raw.spacing.empty()) layout.spacing = {raw.spacing.at(0), raw.spacing.at(1), raw.spacing.at(2)};
+    layout.bigEndian = raw.endian == "big";
+    return loadRaw(path, layout);
 }
 
 Source loadSource(const SourceOptions& options) {
@@ -30,7 +76,7 @@ Source loadSource(const SourceOptions& options) {
         source.name = spec.name + ":" + std::to_string(spec.size);
         source.iso = options.iso.value_or(fieldDefaultIso(spec.name));
     } else {
-        source.volume = loadVolume(options.volumePath);
+        source.volume = loadVolumeFile(options.volumePath, options.raw);
         source.name = options.volumePath;
         if (options.iso) {
             source.iso = *options.iso;

@@ -1,25 +1,43 @@
 #pragma once
 // The volume a command works on: a file (--volume) or a built-in field (--field),
 // and the isovalue (--iso, defaulting per field, or to the middle of a file's range).
+// A headerless file is read as raw samples when its layout is given with --dims.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "isotrack/volume.h"
 
 namespace CLI {
 class App;
-}
+class Option;
+}  // namespace CLI
 
 namespace isotrack::cli {
+
+// --dims NX,NY,NZ --type T [--spacing SX,SY,SZ] [--endian little|big]
+struct RawOptions {
+    std::vector<int> dims;  // empty: the file has a header, the extension picks the loader
+    std::string type;
+    std::vector<double> spacing;
+    std::string endian = "little";
+};
 
 struct SourceOptions {
     std::string volumePath;
     std::string fieldSpec;
     std::optional<double> iso;
+    RawOptions raw;
 };
 
-// Adds --volume, --field (exactly one required) and --iso to `command`.
+// Adds --volume, --field (exactly one required), --iso and the raw layout options to `command`.
 void addSourceOptions(CLI::App& command, SourceOptions& options);
+
+// Adds the raw layout options; they need `volume` (the --volume option).
+void addRawOptions(CLI::App& command, RawOptions& raw, CLI::Option* volume);
+
+// Reads the file: as raw samples when raw.dims is set, else by its extension.
+Volume loadVolumeFile(const std::string& path, const RawOptions& raw);
 
 struct Source {
     Volume volume;

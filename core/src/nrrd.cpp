@@ -1,6 +1,4 @@
 // NRRD volumes (http://teem.sourceforge.net/nrrd/format.html), 3D only.
-#include <zlib.h>
-
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -18,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "io_common.h"
 #include "isotrack/errors.h"
 #include "isotrack/io.h"
 
@@ -26,73 +25,10 @@ namespace isotrack {
 namespace {
 
 namespace fs = std::filesystem;
+using namespace detail;
 
 constexpr std::size_t kMaxHeaderBytes = std::size_t(1) << 20;
 constexpr std::size_t kIoChunk = std::size_t(1) << 20;
-// deflate never expands more than about 1032:1; bounds gzip output by the file size.
-constexpr std::uint64_t kMaxDeflateRatio = 1032;
-
-struct FileCloser {
-    void operator()(std::FILE* f) const { std::fclose(f); }
-};
-using FilePtr = std::unique_ptr<std::FILE, FileCloser>;
-
-FilePtr openFile(const std::string& path, const char* mode) {
-    std::error_code ec;
-    if (fs::is_directory(path, ec)) throw FormatError(path + ": cannot open: " + std::strerror(EISDIR));
-    FilePtr f(std::fopen(path.c_str(), mode));
-    if (!f) throw FormatError(path + ": cannot open: " + std::strerror(errno));
-    return f;
-}
-
-bool hostIsBigEndian() {
-    const std::uint16_t probe = 1;
-    unsigned char first = 0;
-    std::memcpy(&first, &probe, 1);
-    return first == 0;
-}
-
-void swapBytes(std::byte* data, std::size_t count, std::size_t width) {
-    for (std::size_t i = 0; i < count; ++i) std::reverse(data + i * width, data + (i + 1) * width);
-}
-
-// Header text goes into one-line messages, so it is trimmed and made printable.
-std::string printable(const std::string& s) {
-    std::string out;
-    for (char c : s.substr(0, 60)) out += (c >= 0x20 && c < 0x7f) ? c : '?';
-    if (s.size() > 60) out += "...";
-    return out;
-}
-
-std::vector<std::string> splitWords(const std::string& s) {
-    std::istringstream in(s);
-    std::vector<std::string> words;
-    for (std::string w; in >> w;) words.push_back(w);
-    return words;
-}
-
-std::string joinWords(const std::string& s) {
-    std::string out;
-    for (const std::string& w : splitWords(s)) out += (out.empty() ? "" : " ") + w;
-    return out;
-}
-
-std::optional<long long> parseInteger(const std::string& s) {
-    if (s.empty()) return std::nullopt;
-    errno = 0;
-    char* end = nullptr;
-    const long long v = std::strtoll(s.c_str(), &end, 10);
-    if (errno != 0 || end != s.c_str() + s.size()) return std::nullopt;
-    return v;
-}
-
-std::optional<double> parseFinite(const std::string& s) {
-    if (s.empty()) return std::nullopt;
-    char* end = nullptr;
-    const double v = std::strtod(s.c_str(), &end);
-    if (end != s.c_str() + s.size() || !std::isfinite(v)) return std::nullopt;
-    return v;
-}
 
 // "(a,b,c) (d,e,f) ..." as NRRD writes vectors; nullopt on anything else, "none" included.
 std::optional<std::vector<Vec3d>> parseVectors(const std::string& s) {
@@ -212,12 +148,15 @@ Header readHeader(std::FILE* f, const std::string& path) {
     return header;
 }
 
-// Interprets the header and locates the samples, all before anything is allocated.
+// Interprets the header and locates the samples; readSamples checks the sizes.
 class NrrdReader {
 public:
-    NrrdReader(std::string path, Header header) : path_(std::move(path)), header_(std::move(header)) {}
+    NrrdReader(std::string path, Header header) : path_(std::move(path)), header_(std::move(header)) {
+        geometry_.path = path_;
+        geometry_.sizeField = "sizes";
+    }
 
-    Volume read(FilePtr headerFile);
+    Volume read(std::FILE* headerFile);
 
 private:
     [[noreturn]] void fail(const std::string& field, const std::string& problem) const {
@@ -234,16 +173,11 @@ private:
     }
     long long skipField(const std::string& field, long long minimum) const;
     void parseGeometry();
-    std::uint64_t neededBytes() const;
-    void readRaw(std::FILE* f, const std::string& dataPath, std::uint64_t needed, Volume& vol) const;
-    void readGzip(std::FILE* f, const std::string& dataPath, std::uint64_t needed, Volume& vol) const;
+    std::uint64_t skipLines(long long lines, const SampleData& data, std::FILE* headerFile) const;
 
     std::string path_;
     Header header_;
-    ScalarType type_ = ScalarType::UInt8;
-    Dims dims_{};
-    Vec3d spacing_{1, 1, 1};
-    Vec3d origin_{0, 0, 0};
+    VolumeHeader geometry_;
 };
 
 long long NrrdReader::skipField(const std::string& field, long long minimum) const {
@@ -265,7 +199,7 @@ void NrrdReader::parseGeometry() {
     if (t == std::end(kTypeNames))
         fail("type", "unsupported type \"" + printable(typeText) +
                          "\" (supported: uint8, int8, uint16, int16, uint32, int32, float, double)");
-    type_ = t->type;
+    geometry_.type = t->type;
 
     const std::string& sizesText = require("sizes");
     const std::vector<std::string> sizes = splitWords(sizesText);
@@ -273,10 +207,11 @@ void NrrdReader::parseGeometry() {
     for (std::size_t a = 0; sizesOk && a < 3; ++a) {
         const auto v = parseInteger(sizes[a]);
         sizesOk = v && *v > 0 && *v <= INT_MAX;
-        if (sizesOk) dims_[a] = int(*v);
+        if (sizesOk) geometry_.dims[a] = int(*v);
     }
     if (!sizesOk) fail("sizes", "expected 3 positive integers, got \"" + printable(sizesText) + "\"");
 
+    Vec3d& spacing = geometry_.spacing;
     if (const std::string* dirs = find("space directions")) {
         const auto vectors = parseVectors(*dirs);
         if (!vectors || vectors->size() != 3)
@@ -284,9 +219,9 @@ void NrrdReader::parseGeometry() {
         // Only the lengths survive: Volume is axis-aligned.
         for (std::size_t a = 0; a < 3; ++a) {
             const Vec3d& v = (*vectors)[a];
-            spacing_[a] = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+            spacing[a] = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
         }
-        if (std::any_of(spacing_.begin(), spacing_.end(), [](double s) { return !(s > 0) || !std::isfinite(s); }))
+        if (std::any_of(spacing.begin(), spacing.end(), [](double s) { return !(s > 0) || !std::isfinite(s); }))
             fail("space directions", "expected 3 non-zero vectors, got \"" + printable(*dirs) + "\"");
     } else if (const std::string* spacings = find("spacings")) {
         const std::vector<std::string> words = splitWords(*spacings);
@@ -294,7 +229,7 @@ void NrrdReader::parseGeometry() {
         for (std::size_t a = 0; ok && a < 3; ++a) {
             const auto v = parseFinite(words[a]);
             ok = v && *v > 0;
-            if (ok) spacing_[a] = *v;
+            if (ok) spacing[a] = *v;
         }
         if (!ok) fail("spacings", "expected 3 positive numbers, got \"" + printable(*spacings) + "\"");
     }
@@ -303,164 +238,91 @@ void NrrdReader::parseGeometry() {
         const auto vectors = parseVectors(*originText);
         if (!vectors || vectors->size() != 1)
             fail("space origin", "expected one vector like (0,0,0), got \"" + printable(*originText) + "\"");
-        origin_ = vectors->front();
+        geometry_.origin = vectors->front();
     }
+    checkGeometry(geometry_, find("space directions") ? "space directions" : "spacings", "space origin");
 }
 
-std::uint64_t NrrdReader::neededBytes() const {
-    // Step by step so hostile sizes cannot overflow the product.
-    const std::uint64_t maxSamples = kMaxVolumeBytes / scalarTypeSize(type_);
-    const auto nx = std::uint64_t(dims_[0]), ny = std::uint64_t(dims_[1]), nz = std::uint64_t(dims_[2]);
-    if (nx > maxSamples || ny > maxSamples / nx || nz > maxSamples / (nx * ny))
-        fail("sizes", std::to_string(nx) + " x " + std::to_string(ny) + " x " + std::to_string(nz) + " " +
-                          nrrdTypeName(type_) + " samples exceed the " + std::to_string(kMaxVolumeBytes >> 30) +
-                          " GiB volume limit");
-    return nx * ny * nz * scalarTypeSize(type_);
+// "line skip" counts lines of the data file, so the data has to be read to find them.
+std::uint64_t NrrdReader::skipLines(long long lines, const SampleData& data, std::FILE* headerFile) const {
+    FilePtr detached;
+    std::FILE* f = headerFile;
+    if (data.path != path_) {
+        detached = openForReading(data.path, dataWhere(geometry_, data));
+        f = detached.get();
+    }
+    std::uint64_t offset = data.offset;
+    if (std::fseek(f, long(offset), SEEK_SET) != 0) throw FormatError(path_ + ": cannot seek: " + std::strerror(errno));
+    for (long long i = 0; i < lines; ++i) {
+        int c = 0;
+        while ((c = std::fgetc(f)) != EOF && c != '\n') ++offset;
+        if (c == EOF) fail("line skip", std::to_string(lines) + " lines run past the end of the data");
+        ++offset;
+    }
+    return offset;
 }
 
-Volume NrrdReader::read(FilePtr headerFile) {
+Volume NrrdReader::read(std::FILE* headerFile) {
     parseGeometry();
     const std::string encoding = require("encoding");
     const bool gzip = encoding == "gzip" || encoding == "gz";
     if (!gzip && encoding != "raw")
         fail("encoding", "unsupported encoding \"" + printable(encoding) + "\" (supported: raw, gzip)");
 
-    bool swap = false;
+    SampleData data;
+    data.compression = gzip ? Compression::Gzip : Compression::None;
     if (const std::string* endian = find("endian")) {
         if (*endian != "little" && *endian != "big")
             fail("endian", "expected \"little\" or \"big\", got \"" + printable(*endian) + "\"");
-        swap = (*endian == "big") != hostIsBigEndian();
-    } else if (scalarTypeSize(type_) > 1) {
-        throw FormatError(path_ + ": missing required field \"endian\" for type " + nrrdTypeName(type_));
+        data.bigEndian = *endian == "big";
+    } else if (scalarTypeSize(geometry_.type) > 1) {
+        throw FormatError(path_ + ": missing required field \"endian\" for type " + nrrdTypeName(geometry_.type));
+    } else {
+        data.bigEndian = hostIsBigEndian();
     }
     const long long lineSkip = skipField("line skip", 0);
     const long long byteSkip = skipField("byte skip", -1);
-    if (gzip && byteSkip != 0) fail("byte skip", "only supported with raw encoding, got " + std::to_string(byteSkip));
+    if (gzip && byteSkip < 0) fail("byte skip", "-1 (data at the end) needs raw encoding");
 
     // Samples follow the header unless a "data file" names where they are.
-    FilePtr dataFile = std::move(headerFile);
-    std::string dataPath = path_;
-    std::uint64_t offset = header_.length;
+    data.path = path_;
+    data.offset = header_.length;
     if (const std::string* name = find("data file")) {
         if (*name == "LIST" || name->find('%') != std::string::npos)
             fail("data file", "multi-file data is not supported, got \"" + printable(*name) + "\"");
         const fs::path p(*name);
-        dataPath = (p.is_absolute() ? p : fs::path(path_).parent_path() / p).string();
-        dataFile = openFile(dataPath, "rb");
-        offset = 0;
+        data.path = (p.is_absolute() ? p : fs::path(path_).parent_path() / p).string();
+        data.offset = 0;
     } else if (!header_.endsWithBlankLine) {
         throw FormatError(path_ + ": header ends without a blank line and no \"data file\" field");
     }
-    std::error_code ec;
-    const std::uint64_t fileSize = fs::file_size(dataPath, ec);
-    if (ec) throw FormatError(dataPath + ": cannot read: " + ec.message());
-
-    std::FILE* f = dataFile.get();
-    if (std::fseek(f, long(offset), SEEK_SET) != 0) throw FormatError(dataPath + ": cannot seek: " + std::strerror(errno));
-    for (long long i = 0; i < lineSkip; ++i) {
-        int c = 0;
-        while ((c = std::fgetc(f)) != EOF && c != '\n') ++offset;
-        if (c == EOF) fail("line skip", std::to_string(lineSkip) + " lines run past the end of " + dataPath);
-        ++offset;
+    if (lineSkip > 0) data.offset = skipLines(lineSkip, data, headerFile);
+    if (byteSkip == -1) {
+        // The samples are the last bytes of the file.
+        const std::uint64_t size = fileSizeOf(data.path, dataWhere(geometry_, data));
+        const std::uint64_t needed = sampleBytes(geometry_);
+        if (size >= needed) data.offset = std::max(data.offset, size - needed);
+    } else if (gzip) {
+        data.skip = std::uint64_t(byteSkip);  // counts decompressed bytes
+    } else {
+        data.offset += std::uint64_t(byteSkip);
     }
-    const std::uint64_t needed = neededBytes();
-    const std::string shape = std::to_string(dims_[0]) + " x " + std::to_string(dims_[1]) + " x " +
-                              std::to_string(dims_[2]) + " " + nrrdTypeName(type_);
-    if (byteSkip == -1)
-        offset = fileSize >= needed ? std::max(offset, fileSize - needed) : offset;
-    else
-        offset += std::uint64_t(byteSkip);
-    const std::uint64_t available = fileSize > offset ? fileSize - offset : 0;
-    if (!gzip && available < needed)
-        fail("sizes", shape + " needs " + std::to_string(needed) + " data bytes but " + dataPath + " has only " +
-                          std::to_string(available) + " (truncated?)");
-    if (gzip && needed > available * kMaxDeflateRatio + 1024)
-        fail("sizes", shape + " needs " + std::to_string(needed) + " bytes, more than " + std::to_string(available) +
-                          " gzip bytes in " + dataPath + " can hold");
-    if (std::fseek(f, long(offset), SEEK_SET) != 0) throw FormatError(dataPath + ": cannot seek: " + std::strerror(errno));
-
-    Volume vol(dims_, type_, spacing_, origin_);
-    if (gzip)
-        readGzip(f, dataPath, needed, vol);
-    else
-        readRaw(f, dataPath, needed, vol);
-    if (swap) swapBytes(vol.bytes(), vol.sampleCount(), scalarTypeSize(type_));
-    return vol;
-}
-
-void NrrdReader::readRaw(std::FILE* f, const std::string& dataPath, std::uint64_t needed, Volume& vol) const {
-    for (std::uint64_t done = 0; done < needed;) {
-        const std::size_t chunk = std::size_t(std::min<std::uint64_t>(needed - done, kIoChunk));
-        const std::size_t got = std::fread(vol.bytes() + done, 1, chunk, f);
-        if (got != chunk) {
-            if (std::ferror(f)) throw FormatError(dataPath + ": cannot read: " + std::strerror(errno));
-            throw FormatError(dataPath + ": data is truncated: got " + std::to_string(done + got) + " of " +
-                              std::to_string(needed) + " bytes");
-        }
-        done += got;
-    }
-}
-
-void NrrdReader::readGzip(std::FILE* f, const std::string& dataPath, std::uint64_t needed, Volume& vol) const {
-    z_stream zs{};
-    if (inflateInit2(&zs, 16 + MAX_WBITS) != Z_OK) throw FormatError(dataPath + ": cannot start gzip decoder");
-    const std::unique_ptr<z_stream, int (*)(z_stream*)> guard(&zs, inflateEnd);
-    std::vector<unsigned char> in(kIoChunk);
-    unsigned char probe = 0;
-    bool probing = false, ended = false;
-    std::uint64_t produced = 0;
-    while (!ended) {
-        if (zs.avail_out == 0) {
-            // Full: one more byte of output would mean the stream holds more than "sizes" says.
-            probing = produced == needed;
-            const std::uint64_t chunk = probing ? 1 : std::min<std::uint64_t>(needed - produced, std::uint64_t(1) << 30);
-            zs.next_out = probing ? &probe : reinterpret_cast<unsigned char*>(vol.bytes()) + produced;
-            zs.avail_out = uInt(chunk);
-        }
-        if (zs.avail_in == 0) {
-            const std::size_t got = std::fread(in.data(), 1, in.size(), f);
-            if (got == 0) {
-                if (std::ferror(f)) throw FormatError(dataPath + ": cannot read: " + std::strerror(errno));
-                break;
-            }
-            zs.next_in = in.data();
-            zs.avail_in = uInt(got);
-        }
-        const uInt before = zs.avail_out;
-        const int ret = inflate(&zs, Z_NO_FLUSH);
-        if (probing && zs.avail_out == 0)
-            throw FormatError(dataPath + ": gzip data holds more than the " + std::to_string(needed) +
-                              " bytes field \"sizes\" describes");
-        if (!probing) produced += before - zs.avail_out;
-        if (ret == Z_STREAM_END) {
-            ended = true;
-        } else if (ret != Z_OK && !(ret == Z_BUF_ERROR && zs.avail_in == 0)) {
-            throw FormatError(dataPath + ": gzip data is corrupt: " + (zs.msg ? zs.msg : "error " + std::to_string(ret)));
-        }
-    }
-    if (produced < needed)
-        throw FormatError(dataPath + ": gzip data is truncated: got " + std::to_string(produced) + " of " +
-                          std::to_string(needed) + " bytes");
-    if (!ended) throw FormatError(dataPath + ": gzip data is truncated: stream has no end");
-}
-
-std::string lowerExtension(const std::string& path) {
-    std::string ext = fs::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
+    // Raw data may be followed by anything; a gzip stream must hold the samples exactly.
+    data.trailingBytesAllowed = !gzip;
+    return readSamples(geometry_, data);
 }
 
 }  // namespace
 
 Volume loadNrrd(const std::string& path) {
-    FilePtr f = openFile(path, "rb");
+    FilePtr f = openForReading(path);
     Header header = readHeader(f.get(), path);
-    return NrrdReader(path, std::move(header)).read(std::move(f));
+    return NrrdReader(path, std::move(header)).read(f.get());
 }
 
 void writeNrrd(const Volume& volume, const std::string& path) {
     if (volume.byteSize() == 0) throw InputError(path + ": cannot write an empty volume");
-    FilePtr f = openFile(path, "wb");
+    FilePtr f = openForWriting(path);
     char buf[256];
     std::string header = "NRRD0004\n# written by isotrack\n";
     header += std::string("type: ") + nrrdTypeName(volume.type()) + "\ndimension: 3\nspace dimension: 3\n";
@@ -491,13 +353,6 @@ void writeNrrd(const Volume& volume, const std::string& path) {
         done += n;
     }
     if (!ok || std::fclose(f.release()) != 0) throw FormatError(path + ": cannot write: " + std::strerror(errno));
-}
-
-Volume loadVolume(const std::string& path) {
-    const std::string ext = lowerExtension(path);
-    if (ext == ".nrrd" || ext == ".nhdr") return loadNrrd(path);
-    throw FormatError(path + ": unsupported volume file extension \"" + printable(ext) +
-                      "\" (supported: .nrrd, .nhdr)");
 }
 
 }  // namespace isotrack

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "io_common.h"
 #include "isotrack/errors.h"
 #include "isotrack/io.h"
 
@@ -25,25 +26,8 @@ constexpr std::size_t kMaxHeaderBytes = std::size_t(64) << 10;
 constexpr std::size_t kVertexBytes = 6 * 4;
 constexpr std::size_t kFaceBytes = 1 + 3 * 4;  // plus 4 with a component
 
-struct FileCloser {
-    void operator()(std::FILE* f) const { std::fclose(f); }
-};
-using FilePtr = std::unique_ptr<std::FILE, FileCloser>;
-
-FilePtr openFile(const std::string& path, const char* mode) {
-    std::error_code ec;
-    if (fs::is_directory(path, ec)) throw FormatError(path + ": cannot open: " + std::strerror(EISDIR));
-    FilePtr f(std::fopen(path.c_str(), mode));
-    if (!f) throw FormatError(path + ": cannot open: " + std::strerror(errno));
-    return f;
-}
-
-std::string printable(const std::string& s) {
-    std::string out;
-    for (char c : s.substr(0, 60)) out += (c >= 0x20 && c < 0x7f) ? c : '?';
-    if (s.size() > 60) out += "...";
-    return out;
-}
+using detail::FilePtr;
+using detail::printable;
 
 // Byte-by-byte little endian, so the file layout does not depend on the host.
 void putU32(std::vector<unsigned char>& out, std::uint32_t v) {
@@ -127,7 +111,7 @@ void writePly(const std::string& path, const Mesh& mesh, const std::vector<std::
         throw InputError(path + ": " + std::to_string(faceComponent->size()) + " face components for " +
                          std::to_string(faceCount) + " triangles");
 
-    FilePtr f = openFile(path, "wb");
+    FilePtr f = detail::openForWriting(path);
     std::string header = "ply\nformat binary_little_endian 1.0\ncomment written by isotrack\n";
     header += "element vertex " + std::to_string(vertexCount) + "\n";
     header += "property float x\nproperty float y\nproperty float z\n";
@@ -155,7 +139,7 @@ void writePly(const std::string& path, const Mesh& mesh, const std::vector<std::
 }
 
 Mesh readPly(const std::string& path, std::vector<std::int32_t>* faceComponent) {
-    FilePtr f = openFile(path, "rb");
+    FilePtr f = detail::openForReading(path);
     std::error_code ec;
     const std::uint64_t fileSize = fs::file_size(path, ec);
     if (ec) throw FormatError(path + ": cannot read: " + ec.message());

@@ -245,14 +245,11 @@ TEST_CASE("NRRD loader refuses malformed files", "[core][io]") {
                     FormatError);
     CHECK_THROWS_AS(load(withField(kHeader16, "sizes: 2 2 2", "sizes: 2147483647 2147483647 2147483647") + data),
                     FormatError);
-    {
-        // Must fail fast on the size check, not by trying to allocate.
-        const auto start = std::chrono::steady_clock::now();
-        CHECK_THROWS_AS(load(withField(kHeader16, "sizes: 2 2 2", "sizes: 100000 100000 100000") + data), FormatError);
-        CHECK_THROWS_WITH(load(withField(kHeader16, "sizes: 2 2 2", "sizes: 1000 1000 1000") + data),
-                          Catch::Contains("field \"sizes\"") && Catch::Contains("has only 16"));
-        CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(1));
-    }
+    // Refused on the size check, before anything is allocated (the hostile-file
+    // tests also bound every refusal's largest allocation).
+    CHECK_THROWS_AS(load(withField(kHeader16, "sizes: 2 2 2", "sizes: 100000 100000 100000") + data), FormatError);
+    CHECK_THROWS_WITH(load(withField(kHeader16, "sizes: 2 2 2", "sizes: 1000 1000 1000") + data),
+                      Catch::Contains("field \"sizes\"") && Catch::Contains("has only 16"));
     CHECK_THROWS_WITH(load(kHeader16 + data.substr(0, 15)), Catch::Contains("has only 15"));
 
     CHECK_THROWS_WITH(load(withField(kHeader16, "type: short", "type: quaternion") + data),

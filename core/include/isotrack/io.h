@@ -1,10 +1,15 @@
 #pragma once
-// Reading and writing volumes (NRRD) and meshes (PLY).
+// Reading volumes (NRRD, NIfTI-1, MetaImage, VTK legacy, raw) and writing them
+// (NRRD); writing meshes (PLY, OBJ, STL) and reading PLY back.
 //
 // Loaders throw FormatError with a one-line message naming the file, the field and
-// the value. They validate sizes against the bytes actually available before
-// allocating, so hostile files fail fast instead of exhausting memory.
+// the value. They validate sizes against the bytes actually available (for
+// compressed data, the inflated size, measured first) before allocating, so
+// hostile files fail fast instead of exhausting memory. Samples keep their
+// native type; spacing and origin are kept, orientation is dropped (a Volume is
+// axis-aligned).
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,17 +18,71 @@
 
 namespace isotrack {
 
+// ---- Volumes ---------------------------------------------------------------
+
+enum class VolumeFormat : std::uint8_t { Nrrd, Nifti, MetaImage, VtkLegacy, Raw };
+
+const char* volumeFormatName(VolumeFormat format);
+
+// The format loadVolume reads `path` as, from its extension (case-insensitive):
+// .nrrd .nhdr, .nii .nii.gz, .mhd .mha, .vtk, .raw; nullopt for anything else.
+std::optional<VolumeFormat> volumeFormatOf(const std::string& path);
+
+// Chooses a loader by extension. A .raw file (or any other) needs loadRaw and
+// its layout; asking loadVolume for one is a FormatError listing the formats.
+Volume loadVolume(const std::string& path);
+
 // 3D NRRD, attached (.nrrd) or detached (.nhdr + "data file:") header; raw or
 // gzip encoding; either endian; any scalar type Volume can hold. Spacing comes
-// from "spacings:" or the lengths of "space directions:" (orientation is dropped);
-// origin from "space origin:".
+// from "spacings:" or the lengths of "space directions:"; origin from "space origin:".
 Volume loadNrrd(const std::string& path);
 
 // Attached header, raw, little endian; keeps spacing and origin exactly.
 void writeNrrd(const Volume& volume, const std::string& path);
 
-// Chooses a loader by extension (.nrrd, .nhdr, case-insensitive).
-Volume loadVolume(const std::string& path);
+// NIfTI-1 single file (.nii, or gzip-compressed .nii.gz), either endian (told by
+// sizeof_hdr), datatypes uint8/int8/int16/uint16/int32/uint32/float32/float64.
+// 3D only: dim[0] == 3, or more with every extra dimension 1. Spacing is
+// pixdim[1..3]; origin the sform translation when sform_code > 0, else qoffset
+// when qform_code > 0. When scl_slope is non-zero and (slope, inter) is not
+// (1, 0) the samples become float32 slope * v + inter; otherwise they stay native.
+Volume loadNifti(const std::string& path);
+
+// MetaImage: .mhd with a detached ElementDataFile (relative to the header) or
+// .mha with LOCAL data; MET_UCHAR/CHAR/SHORT/USHORT/INT/UINT/FLOAT/DOUBLE, one
+// channel; BinaryDataByteOrderMSB; ElementSpacing; Offset (or Origin, Position);
+// HeaderSize; CompressedData True (a zlib stream).
+Volume loadMetaImage(const std::string& path);
+
+// VTK legacy STRUCTURED_POINTS, BINARY (big-endian, per the VTK spec) or ASCII:
+// DIMENSIONS, SPACING (or ASPECT_RATIO), ORIGIN, POINT_DATA n, and the first
+// SCALARS name type [1] (LOOKUP_TABLE optional) as the samples.
+Volume loadVtkLegacy(const std::string& path);
+
+// A headerless file of samples, x fastest, nothing before or after them.
+struct RawLayout {
+    Dims dims{0, 0, 0};
+    ScalarType type = ScalarType::UInt8;
+    Vec3d spacing{1, 1, 1};
+    Vec3d origin{0, 0, 0};
+    bool bigEndian = false;
+};
+
+// The file must hold exactly dims * sizeof(type) bytes.
+Volume loadRaw(const std::string& path, const RawLayout& layout);
+
+// ---- Meshes ----------------------------------------------------------------
+
+enum class MeshFormat : std::uint8_t { Ply, Obj, Stl };
+
+// The format writeMesh writes `path` as (.ply, .obj, .stl, case-insensitive).
+// Throws InputError naming the extension and the supported ones.
+MeshFormat meshFormatOf(const std::string& path);
+const char* meshFormatExtension(MeshFormat format);  // ".ply", ".obj", ".stl"
+
+// Writes PLY, OBJ or STL by extension. faceComponent (one entry per triangle)
+// becomes PLY's per-face "component" and OBJ's groups; STL has no place for it.
+void writeMesh(const std::string& path, const Mesh& mesh, const std::vector<std::int32_t>* faceComponent = nullptr);
 
 // Binary little-endian PLY: float x y z nx ny nz per vertex, uchar/int index
 // lists per face, plus an int "component" per face when faceComponent is given
@@ -35,5 +94,14 @@ void writePly(const std::string& path, const Mesh& mesh, const std::vector<std::
 // vertexEdges is left empty (PLY does not store it). When faceComponent is given
 // it receives the per-face components, or is cleared if the file has none.
 Mesh readPly(const std::string& path, std::vector<std::int32_t>* faceComponent = nullptr);
+
+// Wavefront OBJ: "v x y z", "vn nx ny nz" per vertex, "f a//a b//b c//c" per
+// triangle (1-based), and "g component_N" before each run of faces of one
+// component when faceComponent is given.
+void writeObj(const std::string& path, const Mesh& mesh, const std::vector<std::int32_t>* faceComponent = nullptr);
+
+// Binary STL: one facet per triangle with the normal of the triangle itself
+// (right-handed, so it agrees with the vertex normals; zero for a degenerate one).
+void writeStl(const std::string& path, const Mesh& mesh);
 
 }  // namespace isotrack

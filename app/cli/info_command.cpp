@@ -1,0 +1,162 @@
+// isotrack info: what a volume file holds, before extracting anything from it.
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.h"
+#include "cli/source.h"
+#include "isotrack/io.h"
+#include "isotrack/volume.h"
+
+namespace isotrack::cli {
+namespace {
+
+constexpr int kBarWidth = 40;
+
+struct InfoOptions {
+    std::string path;
+    RawOptions raw;
+    int bins = 16;
+    bool json = false;
+};
+
+// Counts of finite samples in equal bins over [min, max]; NaN and infinities counted apart.
+struct Histogram {
+    double min = 0.0, max = 0.0;
+    std::vector<std::uint64_t> counts;
+    std::uint64_t nonFinite = 0;
+    bool empty() const { return counts.empty(); }
+    double binWidth() const { return counts.empty() ? 0.0 : (max - min) / double(counts.size()); }
+};
+
+Histogram histogram(const Volume& volume, int bins) {
+    Histogram h;
+    const auto range = volume.range();
+    const std::size_t n = volume.sampleCount();
+    if (!std::isfinite(range[0])) {
+        h.nonFinite = n;
+        return h;
+    }
+    h.min = range[0];
+    h.max = range[1];
+    h.counts.assign(std::size_t(bins), 0);
+    const double scale = h.max > h.min ? double(bins) / (h.max - h.min) : 0.0;
+    visitSamples(volume, [&](const auto* samples) {
+        for (std::size_t i = 0; i < n; ++i) {
+            const double v = double(samples[i]);
+            if (!std::isfinite(v)) {
+                ++h.nonFinite;
+                continue;
+            }
+            const auto bin = std::min(std::size_t((v - h.min) * scale), std::size_t(bins - 1));
+            ++h.counts[bin];
+        }
+    });
+    return h;
+}
+
+std::string formatBytes(std::uint64_t bytes) {
+    const char* units[] = {"bytes", "KiB", "MiB", "GiB"};
+    double v = double(bytes);
+    int unit = 0;
+    while (v >= 1024.0 && unit < 3) v /= 1024.0, ++unit;
+    char buf[64];
+    std::snprintf(buf, sizeof buf, unit == 0 ? "%.0f %s" : "%.1f %s", v, units[unit]);
+    return buf;
+}
+
+std::string formatName(const std::string& path, const RawOptions& raw) {
+    if (!raw.dims.empty()) return std::string("raw (") + raw.endian + " endian)";
+    const auto format = volumeFormatOf(path);
+    return format ? volumeFormatName(*format) : "unknown";
+}
+
+nlohmann::json infoJson(const InfoOptions& options, const Volume& volume, const Histogram& h) {
+    const Dims& d = volume.dims();
+    nlohmann::json j{
+        {"file", options.path},
+        {"format", formatName(options.path, options.raw)},
+        {"dims", {d[0], d[1], d[2]}},
+        {"samples", volume.sampleCount()},
+        {"scalar_type", scalarTypeName(volume.type())},
+        {"spacing", volume.spacing()},
+        {"origin", volume.origin()},
+        {"extent", {(d[0] - 1) * volume.spacing()[0], (d[1] - 1) * volume.spacing()[1], (d[2] - 1) * volume.spacing()[2]}},
+        {"memory_bytes", volume.byteSize()},
+        {"non_finite", h.nonFinite},
+    };
+    if (h.empty()) {
+        j["range"] = nullptr;
+        j["histogram"] = nullptr;
+    } else {
+        j["range"] = {h.min, h.max};
+        j["histogram"] = {{"min", h.min}, {"max", h.max}, {"bin_width", h.binWidth()}, {"counts", h.counts}};
+    }
+    return j;
+}
+
+void printInfo(const InfoOptions& options, const Volume& volume, const Histogram& h) {
+    const Dims& d = volume.dims();
+    const Vec3d& s = volume.spacing();
+    const Vec3d& o = volume.origin();
+    std::printf("%s\n", options.path.c_str());
+    std::printf("  format    %s\n", formatName(options.path, options.raw).c_str());
+    std::printf("  dims      %d x %d x %d (%zu samples)\n", d[0], d[1], d[2], volume.sampleCount());
+    std::printf("  type      %s\n", scalarTypeName(volume.type()));
+    std::printf("  spacing   %.10g %.10g %.10g\n", s[0], s[1], s[2]);
+    std::printf("  origin    %.10g %.10g %.10g\n", o[0], o[1], o[2]);
+    std::printf("  extent    %g x %g x %g\n", (d[0] - 1) * s[0], (d[1] - 1) * s[1], (d[2] - 1) * s[2]);
+    if (h.empty())
+        std::printf("  range     none: no finite samples\n");
+    else
+        std::printf("  range     %g .. %g\n", h.min, h.max);
+    if (h.nonFinite) std::printf("  nan/inf   %llu samples\n", static_cast<unsigned long long>(h.nonFinite));
+    if (volume.byteSize() < 1024)
+        std::printf("  memory    %zu bytes\n", volume.byteSize());
+    else
+        std::printf("  memory    %s (%zu bytes)\n", formatBytes(volume.byteSize()).c_str(), volume.byteSize());
+    if (h.empty()) return;
+
+    std::printf("  histogram %zu bins of width %g\n", h.counts.size(), h.binWidth());
+    const std::uint64_t peak = *std::max_element(h.counts.begin(), h.counts.end());
+    for (std::size_t b = 0; b < h.counts.size(); ++b) {
+        const std::uint64_t c = h.counts[b];
+        int bar = peak ? int(std::llround(double(c) / double(peak) * kBarWidth)) : 0;
+        if (c > 0 && bar == 0) bar = 1;  // a bin that holds anything shows
+        std::printf("  %12.6g  %-*s %llu\n", h.min + double(b) * h.binWidth(), kBarWidth, std::string(std::size_t(bar), '#').c_str(),
+                    static_cast<unsigned long long>(c));
+    }
+}
+
+int runInfo(const InfoOptions& options) {
+    const Volume volume = loadVolumeFile(options.path, options.raw);
+    const Histogram h = histogram(volume, options.bins);
+    if (options.json)
+        std::printf("%s\n", infoJson(options, volume, h).dump().c_str());
+    else
+        printInfo(options, volume, h);
+    return 0;
+}
+
+}  // namespace
+
+RunCommand addInfoCommand(CLI::App& app) {
+    auto options = std::make_shared<InfoOptions>();
+    CLI::App* command = app.add_subcommand("info", "Describe a volume file: format, size, type, geometry, values");
+    auto* volume = command->add_option("--volume", options->path,
+                                       "Volume file (.nrrd .nhdr .nii .nii.gz .mhd .mha .vtk; raw with --dims)")
+                       ->required();
+    addRawOptions(*command, options->raw, volume);
+    command->add_option("--bins", options->bins, "Histogram bins (default 16)")->check(CLI::Range(1, 256));
+    command->add_flag("--json", options->json, "Print one JSON object on stdout");
+    return [options] { return runInfo(*options); };
+}
+
+}  // namespace isotrack::cli

@@ -1,0 +1,219 @@
+// NIfTI-1 volumes (https://nifti.nimh.nih.gov/nifti-1), single file .nii or .nii.gz.
+//
+// The 348-byte header is read first (through the gzip decoder for .nii.gz), its
+// byte order told by sizeof_hdr == 348; the samples start at vox_offset.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <optional>
+#include <string>
+
+#include "io_common.h"
+#include "isotrack/errors.h"
+#include "isotrack/io.h"
+
+namespace isotrack {
+
+namespace {
+
+using namespace detail;
+
+constexpr std::size_t kHeaderBytes = 348;
+
+// Offsets into the header, from nifti1.h.
+constexpr std::size_t kSizeofHdr = 0, kDim = 40, kDatatype = 70, kBitpix = 72, kPixdim = 76, kVoxOffset = 108,
+                      kSclSlope = 112, kSclInter = 116, kQformCode = 252, kSformCode = 254, kQoffset = 268,
+                      kSrow = 280, kMagic = 344;
+
+struct Datatype {
+    int code;
+    const char* name;
+    std::optional<ScalarType> type;
+};
+
+const Datatype kDatatypes[] = {
+    {2, "uint8", ScalarType::UInt8},       {4, "int16", ScalarType::Int16},    {8, "int32", ScalarType::Int32},
+    {16, "float32", ScalarType::Float32},  {64, "float64", ScalarType::Float64}, {256, "int8", ScalarType::Int8},
+    {512, "uint16", ScalarType::UInt16},   {768, "uint32", ScalarType::UInt32}, {1, "binary", std::nullopt},
+    {32, "complex64", std::nullopt},       {128, "rgb24", std::nullopt},       {1024, "int64", std::nullopt},
+    {1280, "uint64", std::nullopt},        {1536, "float128", std::nullopt},   {1792, "complex128", std::nullopt},
+    {2048, "complex256", std::nullopt},    {2304, "rgba32", std::nullopt},
+};
+
+class HeaderBytes {
+public:
+    HeaderBytes(const unsigned char* bytes, bool swap) : bytes_(bytes), swap_(swap) {}
+
+    std::int16_t i16(std::size_t at) const { return get<std::int16_t>(at); }
+    std::int32_t i32(std::size_t at) const { return get<std::int32_t>(at); }
+    float f32(std::size_t at) const { return get<float>(at); }
+
+private:
+    template <class T>
+    T get(std::size_t at) const {
+        unsigned char b[sizeof(T)];
+        std::memcpy(b, bytes_ + at, sizeof(T));
+        if (swap_) std::reverse(b, b + sizeof(T));
+        T v;
+        std::memcpy(&v, b, sizeof(T));
+        return v;
+    }
+    const unsigned char* bytes_;
+    bool swap_;
+};
+
+// Reads the header bytes; .nii.gz through the gzip decoder.
+void readHeaderBytes(const std::string& path, bool gzip, unsigned char (&bytes)[kHeaderBytes]) {
+    FilePtr file = openForReading(path);
+    std::size_t got = 0;
+    if (gzip) {
+        Inflater inflater(file.get(), Compression::Gzip, path);
+        got = inflater.read(bytes, kHeaderBytes);
+    } else {
+        got = std::fread(bytes, 1, kHeaderBytes, file.get());
+    }
+    if (got < kHeaderBytes)
+        throw FormatError(path + ": not a NIfTI-1 file: " + std::to_string(got) + " bytes, shorter than the " +
+                          std::to_string(kHeaderBytes) + "-byte header");
+}
+
+class NiftiHeader {
+public:
+    NiftiHeader(std::string path, const unsigned char* bytes);
+
+    VolumeHeader geometry;
+    SampleData data;
+    double slope = 0.0, inter = 0.0;
+
+private:
+    [[noreturn]] void fail(const std::string& field, const std::string& problem) const {
+        throw FormatError(geometry.path + ": field \"" + field + "\": " + problem);
+    }
+    void readDims(const HeaderBytes& h);
+    void readType(const HeaderBytes& h);
+    void readGeometry(const HeaderBytes& h);
+    void readScaling(const HeaderBytes& h);
+};
+
+NiftiHeader::NiftiHeader(std::string path, const unsigned char* bytes) {
+    geometry.path = std::move(path);
+    geometry.sizeField = "dim";
+    std::int32_t sizeofHdr = 0;
+    std::memcpy(&sizeofHdr, bytes + kSizeofHdr, 4);
+    const bool swap = sizeofHdr != 348;
+    const HeaderBytes h(bytes, swap);
+    if (h.i32(kSizeofHdr) != 348) {
+        const bool nifti2 = sizeofHdr == 540 || HeaderBytes(bytes, true).i32(kSizeofHdr) == 540;
+        fail("sizeof_hdr", nifti2 ? "540 is NIfTI-2, which is not supported (only NIfTI-1)"
+                                  : "expected 348 in either byte order, got " + std::to_string(sizeofHdr));
+    }
+    data.bigEndian = swap != hostIsBigEndian();
+
+    const std::string magic(reinterpret_cast<const char*>(bytes + kMagic), 4);
+    if (magic == std::string("ni1\0", 4))
+        fail("magic", "\"ni1\" is a .hdr/.img pair, which is not supported (only single-file \"n+1\")");
+    if (magic != std::string("n+1\0", 4))
+        fail("magic", "expected \"n+1\", got \"" + printable(magic) + "\"");
+
+    readDims(h);
+    readType(h);
+    readGeometry(h);
+    readScaling(h);
+
+    const float voxOffset = h.f32(kVoxOffset);
+    if (!(voxOffset >= float(kHeaderBytes)) || !(voxOffset <= 1e12f) || voxOffset != std::floor(voxOffset))
+        fail("vox_offset", "expected a whole number >= 348, got " + numberText(voxOffset));
+    data.path = geometry.path;
+    data.trailingBytesAllowed = true;
+    data.skip = std::uint64_t(voxOffset);
+}
+
+void NiftiHeader::readDims(const HeaderBytes& h) {
+    std::int16_t dim[8];
+    std::string text;
+    for (std::size_t i = 0; i < 8; ++i) {
+        dim[i] = h.i16(kDim + 2 * i);
+        text += (i ? " " : "") + std::to_string(dim[i]);
+    }
+    if (dim[0] < 3 || dim[0] > 7) fail("dim", "expected 3 dimensions (dim[0] 3..7), got dim = " + text);
+    for (int i = 4; i <= dim[0]; ++i)
+        if (dim[i] != 1) fail("dim", "only 3D volumes are supported, got dim = " + text);
+    for (std::size_t a = 0; a < 3; ++a) {
+        if (dim[a + 1] < 1) fail("dim", "dimensions must be positive, got dim = " + text);
+        geometry.dims[a] = dim[a + 1];
+    }
+}
+
+void NiftiHeader::readType(const HeaderBytes& h) {
+    const int code = h.i16(kDatatype);
+    const Datatype* found = nullptr;
+    for (const Datatype& d : kDatatypes)
+        if (d.code == code) found = &d;
+    if (!found) fail("datatype", "unknown datatype " + std::to_string(code));
+    if (!found->type)
+        fail("datatype", "unsupported datatype " + std::to_string(code) + " (" + found->name +
+                             "; supported: uint8, int8, int16, uint16, int32, uint32, float32, float64)");
+    geometry.type = *found->type;
+    const int bitpix = h.i16(kBitpix);
+    if (std::size_t(bitpix) != 8 * scalarTypeSize(geometry.type))
+        fail("bitpix", std::to_string(bitpix) + " disagrees with datatype " + std::to_string(code) + " (" +
+                           found->name + ")");
+}
+
+void NiftiHeader::readGeometry(const HeaderBytes& h) {
+    for (std::size_t a = 0; a < 3; ++a) geometry.spacing[a] = double(h.f32(kPixdim + 4 * (a + 1)));
+    // Orientation is dropped; the translation of the chosen transform is the origin.
+    if (h.i16(kSformCode) > 0) {
+        for (std::size_t a = 0; a < 3; ++a) geometry.origin[a] = double(h.f32(kSrow + 16 * a + 12));
+        checkGeometry(geometry, "pixdim", "srow");
+    } else if (h.i16(kQformCode) > 0) {
+        for (std::size_t a = 0; a < 3; ++a) geometry.origin[a] = double(h.f32(kQoffset + 4 * a));
+        checkGeometry(geometry, "pixdim", "qoffset");
+    } else {
+        checkGeometry(geometry, "pixdim", "qoffset");
+    }
+}
+
+void NiftiHeader::readScaling(const HeaderBytes& h) {
+    const double s = double(h.f32(kSclSlope)), i = double(h.f32(kSclInter));
+    if (s == 0.0 || std::isnan(s)) return;  // 0 (and, by common practice, NaN) means "not scaled"
+    if (!std::isfinite(s)) fail("scl_slope", "expected a finite number, got " + numberText(s));
+    if (!std::isfinite(i)) fail("scl_inter", "expected a finite number, got " + numberText(i));
+    if (s == 1.0 && i == 0.0) return;
+    slope = s;
+    inter = i;
+}
+
+template <class T>
+void scaleInto(const T* in, float* out, std::size_t n, double slope, double inter) {
+    for (std::size_t k = 0; k < n; ++k) out[k] = static_cast<float>(slope * double(in[k]) + inter);
+}
+
+}  // namespace
+
+Volume loadNifti(const std::string& path) {
+    const bool gzip = lowerExtension(path) == ".nii.gz";
+    unsigned char bytes[kHeaderBytes];
+    readHeaderBytes(path, gzip, bytes);
+    NiftiHeader header(path, bytes);
+    if (gzip) {
+        header.data.compression = Compression::Gzip;
+    } else if (const std::uint64_t size = fileSizeOf(path, path); header.data.skip > size) {
+        throw FormatError(path + ": field \"vox_offset\": " + std::to_string(header.data.skip) +
+                          " is beyond the end of the " + std::to_string(size) + "-byte file");
+    }
+    // The float32 copy counts against the volume limit too, before either is allocated.
+    const bool scaled = header.slope != 0.0;
+    if (scaled) sampleBytes(header.geometry, ScalarType::Float32);
+
+    Volume native = readSamples(header.geometry, header.data);
+    if (!scaled) return native;
+    Volume scaledVolume(native.dims(), ScalarType::Float32, native.spacing(), native.origin());
+    visitSamples(native, [&](const auto* samples) {
+        scaleInto(samples, scaledVolume.data<float>(), native.sampleCount(), header.slope, header.inter);
+    });
+    return scaledVolume;
+}
+
+}  // namespace isotrack

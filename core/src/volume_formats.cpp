@@ -1,0 +1,70 @@
+// Choosing a volume loader by extension, and headerless raw files.
+#include <string>
+
+#include "io_common.h"
+#include "isotrack/errors.h"
+#include "isotrack/io.h"
+
+namespace isotrack {
+
+namespace {
+
+constexpr const char* kHeaderExtensions = ".nrrd, .nhdr, .nii, .nii.gz, .mhd, .mha, .vtk";
+
+}  // namespace
+
+const char* volumeFormatName(VolumeFormat format) {
+    switch (format) {
+        case VolumeFormat::Nrrd: return "NRRD";
+        case VolumeFormat::Nifti: return "NIfTI-1";
+        case VolumeFormat::MetaImage: return "MetaImage";
+        case VolumeFormat::VtkLegacy: return "VTK legacy";
+        case VolumeFormat::Raw: return "raw";
+    }
+    return "unknown";
+}
+
+std::optional<VolumeFormat> volumeFormatOf(const std::string& path) {
+    const std::string ext = detail::lowerExtension(path);
+    if (ext == ".nrrd" || ext == ".nhdr") return VolumeFormat::Nrrd;
+    if (ext == ".nii" || ext == ".nii.gz") return VolumeFormat::Nifti;
+    if (ext == ".mhd" || ext == ".mha") return VolumeFormat::MetaImage;
+    if (ext == ".vtk") return VolumeFormat::VtkLegacy;
+    if (ext == ".raw") return VolumeFormat::Raw;
+    return std::nullopt;
+}
+
+Volume loadVolume(const std::string& path) {
+    const auto format = volumeFormatOf(path);
+    if (!format)
+        throw FormatError(path + ": unsupported volume file extension \"" +
+                          detail::printable(detail::lowerExtension(path)) + "\" (supported: " + kHeaderExtensions +
+                          "; a headerless raw file needs its dims and type)");
+    switch (*format) {
+        case VolumeFormat::Nrrd: return loadNrrd(path);
+        case VolumeFormat::Nifti: return loadNifti(path);
+        case VolumeFormat::MetaImage: return loadMetaImage(path);
+        case VolumeFormat::VtkLegacy: return loadVtkLegacy(path);
+        case VolumeFormat::Raw: break;
+    }
+    throw FormatError(path + ": a raw file has no header: give its dims and type, or use a format that has one (" +
+                      kHeaderExtensions + ")");
+}
+
+Volume loadRaw(const std::string& path, const RawLayout& layout) {
+    detail::VolumeHeader header;
+    header.path = path;
+    header.sizeField = "dims";
+    header.dims = layout.dims;
+    header.type = layout.type;
+    header.spacing = layout.spacing;
+    header.origin = layout.origin;
+    detail::sampleBytes(header);
+    detail::checkGeometry(header, "spacing", "origin");
+    detail::SampleData data;
+    data.path = path;
+    data.bigEndian = layout.bigEndian;
+    return detail::readSamples(header, data);
+}
+
+}  // namespace isotrack

@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# isotrack extract on hostile volumes: exit status 1 (not 0, not a signal), and
+# stderr exactly one line that starts with "isotrack: " and names the file.
+# Usage: hostile_volumes.sh ISOTRACK WORK_DIR
+set -uo pipefail
+isotrack=$1
+work=$2
+rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 2
+
+nrrd_head='NRRD0004\ntype: short\ndimension: 3\nsizes: 4 3 2\nendian: little\nencoding: raw\n'
+samples=$(printf '%048d' 0)
+printf "$nrrd_head\n%s" "${samples:0:40}" > truncated.nrrd
+printf "${nrrd_head/4 3 2/4 0 2}\n%s" "$samples" > zero_dims.nrrd
+printf "${nrrd_head/4 3 2/100000 100000 100000}\n%s" "$samples" > absurd.nrrd
+printf "${nrrd_head/short/complex}\n%s" "$samples" > unknown_type.nrrd
+printf "${nrrd_head/raw/gzip}\n%s" "not gzip at all" > corrupt_gzip.nrrd
+printf "${nrrd_head}data file: gone.raw\n" > missing_data.nhdr
+head -c 3000 /dev/urandom > random.nii
+head -c 3000 /dev/urandom > random.nii.gz
+printf 'ObjectType = Image\nNDims = 3\nDimSize = 4 3 2\nElementType = MET_SHORT\nElementDataFile = LOCAL\n%s' \
+    "${samples:0:30}" > short.mha
+printf '# vtk DataFile Version 3.0\nt\nASCII\nDATASET STRUCTURED_POINTS\nDIMENSIONS 2 2 2\nPOINT_DATA 8\nSCALARS s float\nLOOKUP_TABLE default\n1 2 3\n' \
+    > truncated_ascii.vtk
+printf 'NRRD0004\ntype: float\ndimension: 3\nsizes: 2 2 2\nendian: little\nencoding: raw\n\n' > all_nan.nrrd
+for _ in 1 2 3 4 5 6 7 8; do printf '\x00\x00\xc0\x7f' >> all_nan.nrrd; done
+mkdir -p folder.nrrd
+printf 'abc' > scan.dcm
+
+failures=0
+check() {  # check FILE [extra isotrack args...]
+    local file=$1
+    shift
+    "$isotrack" extract --volume "$file" "$@" >stdout.txt 2>stderr.txt
+    local status=$?
+    local lines
+    lines=$(wc -l <stderr.txt)
+    local first
+    first=$(head -n1 stderr.txt)
+    if [[ $status -ne 1 ]]; then
+        echo "FAIL $file: exit status $status, expected 1 ($( ((status > 128)) && echo "signal $((status - 128))"))"
+    elif [[ $lines -ne 1 ]]; then
+        echo "FAIL $file: stderr has $lines lines, expected 1:"; cat stderr.txt
+    elif [[ $first != "isotrack: "* ]]; then
+        echo "FAIL $file: stderr does not start with \"isotrack: \": $first"
+    elif [[ $first != *"$file"* ]]; then
+        echo "FAIL $file: stderr does not name the file: $first"
+    else
+        echo "ok   $first"
+        return
+    fi
+    failures=$((failures + 1))
+}
+
+for f in truncated.nrrd zero_dims.nrrd absurd.nrrd unknown_type.nrrd corrupt_gzip.nrrd missing_data.nhdr \
+         random.nii random.nii.gz short.mha truncated_ascii.vtk all_nan.nrrd folder.nrrd scan.dcm absent.vtk; do
+    check "$f"
+done
+check short.mha --method all
+check all_nan.nrrd --method all
+printf '%048d' 0 > layout.raw
+check layout.raw --dims 4,3,3 --type int16
+
+if ((failures)); then
+    echo "$failures hostile volume(s) not refused as expected"
+    exit 1
+fi

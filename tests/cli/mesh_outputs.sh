@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# isotrack extract --out FILE.{ply,obj,stl} and --out-dir, isotrack info --json,
+# on a built-in field exported as each volume format's raw twin.
+# Usage: mesh_outputs.sh ISOTRACK WORK_DIR
+set -euo pipefail
+isotrack=$1
+work=$2
+rm -rf "$work" && mkdir -p "$work" && cd "$work"
+fail() { echo "FAIL: $*"; exit 1; }
+
+"$isotrack" field blobs:32 --out blobs.nrrd >/dev/null
+for ext in ply obj stl PLY; do
+    "$isotrack" extract --volume blobs.nrrd --out "blobs.$ext" --json > "out_$ext.json"
+    [[ -s blobs.$ext ]] || fail "blobs.$ext was not written"
+done
+grep -q '"triangles"' out_ply.json || fail "no JSON summary"
+
+# An unknown extension is refused before any work, naming it and the supported ones.
+if "$isotrack" extract --volume blobs.nrrd --out blobs.off 2>err.txt; then fail "--out blobs.off accepted"; fi
+grep -q '".off"' err.txt && grep -q '.ply, .obj, .stl' err.txt || fail "unhelpful message: $(cat err.txt)"
+
+# One file per surface; their triangles add up to the whole.
+"$isotrack" extract --volume blobs.nrrd --method all --out-dir surfaces --out-format stl --json > all.json
+count=$(ls surfaces/surface_*.stl | wc -l)
+[[ $count -ge 2 ]] || fail "expected several surfaces, got $count"
+[[ -f surfaces/surface_000.stl ]] || fail "no surface_000.stl"
+total=0
+for f in surfaces/surface_*.stl; do
+    n=$(od -An -tu4 -j80 -N4 "$f" | tr -d ' ')
+    total=$((total + n))
+done
+grep -q "\"triangles\":$total," all.json || fail "surface files hold $total triangles, summary says otherwise"
+"$isotrack" extract --volume blobs.nrrd --method all --out blobs_all.obj --out-dir objs >/dev/null
+[[ -f objs/surface_000.obj ]] || fail "--out-dir did not follow --out's format"
+if "$isotrack" extract --volume blobs.nrrd --out-dir x 2>err.txt; then fail "--out-dir without --method all accepted"; fi
+
+# info: raw twin of the NRRD (header stripped) reports the same dims, range and histogram.
+"$isotrack" info --volume blobs.nrrd --json > info_nrrd.json
+tail -c $((32 * 32 * 32 * 4)) blobs.nrrd > blobs.raw
+"$isotrack" info --volume blobs.raw --dims 32,32,32 --type float32 --json > info_raw.json
+strip() { sed -e 's/"file":"[^"]*",//' -e 's/"format":"[^"]*",//' "$1"; }
+[[ $(strip info_nrrd.json) == "$(strip info_raw.json)" ]] || fail "info differs: $(cat info_nrrd.json) vs $(cat info_raw.json)"
+"$isotrack" info --volume blobs.nrrd | grep -q "histogram 16 bins" || fail "no text histogram"
+echo "ok ($total triangles in $count surface files)"
