@@ -3,7 +3,10 @@
 #include <chrono>
 #include <cstdio>
 #include <algorithm>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <string>
 #include <memory>
 #include <optional>
 #include <thread>
@@ -46,6 +49,7 @@ struct Extraction {
     nlohmann::json surfaces = nlohmann::json::array();
     std::vector<std::string> surfaceFiles;  // for --out-dir
     std::vector<double> seconds;  // one per run
+    std::size_t residentBefore = 0, residentPeak = 0;  // bytes, around the first run
 };
 
 nlohmann::json surfaceJson(const SurfaceStats& s) {
@@ -127,6 +131,23 @@ Extraction extractOnce(const ExtractOptions& options, const Source& source, Tabl
     return out;
 }
 
+// Resident memory, from Linux's /proc: the current size, and the high-water mark
+// since the last reset (writing 5 to clear_refs resets it). Zero where unavailable.
+struct ResidentMemory {
+    static std::size_t field(const char* name) {
+        std::ifstream status("/proc/self/status");
+        std::string line;
+        const std::size_t length = std::strlen(name);
+        while (std::getline(status, line)) {
+            if (line.compare(0, length, name) == 0) return std::size_t(std::stoull(line.substr(length + 1))) * 1024;
+        }
+        return 0;
+    }
+    static void resetPeak() { std::ofstream("/proc/self/clear_refs") << "5"; }
+    static std::size_t current() { return field("VmRSS"); }
+    static std::size_t peak() { return field("VmHWM"); }
+};
+
 Extraction extract(const ExtractOptions& options, const Source& source, TableKind table) {
     if (options.method == "track" && options.seed.size() != 3) {
         throw InputError("--method track needs --seed X,Y,Z (world coordinates)");
@@ -136,11 +157,19 @@ Extraction extract(const ExtractOptions& options, const Source& source, TableKin
     Extraction out;
     ExtractOptions quiet = options;  // only the last run writes --out-dir files
     quiet.outDir.clear();
+    std::size_t before = 0, peak = 0;
     for (int run = 0; run < options.repeat; ++run) {
+        if (run == 0) {
+            ResidentMemory::resetPeak();
+            before = ResidentMemory::current();
+        }
         out = extractOnce(run + 1 == options.repeat ? options : quiet, source, table);
+        if (run == 0) peak = ResidentMemory::peak();
         seconds.push_back(out.seconds.front());
     }
     out.seconds = seconds;
+    out.residentBefore = before;
+    out.residentPeak = peak;
     return out;
 }
 
@@ -165,6 +194,8 @@ int runExtract(const ExtractOptions& options) {
 
     const std::size_t cellsTotal =
         std::size_t(std::max(dims[0] - 1, 0)) * std::size_t(std::max(dims[1] - 1, 0)) * std::size_t(std::max(dims[2] - 1, 0));
+    // The same triangles as an unindexed soup of positions and normals.
+    const std::size_t soupBytes = mesh.triangleCount() * 3 * sizeof(Vertex);
     if (options.json) {
         nlohmann::json report{
             {"source", source.name},
@@ -183,6 +214,11 @@ int runExtract(const ExtractOptions& options) {
             {"seconds_all", result.seconds},
             {"threads", options.method == "track" ? 1 : options.threads},
             {"mesh_bytes", mesh.byteSize()},
+            {"soup_bytes", soupBytes},
+            {"mesh_to_soup", soupBytes ? double(mesh.byteSize()) / double(soupBytes) : 0.0},
+            {"resident_before_bytes", result.residentBefore},
+            {"peak_resident_bytes", result.residentPeak},
+            {"peak_above_start_bytes", result.residentPeak > result.residentBefore ? result.residentPeak - result.residentBefore : 0},
             {"volume_bytes", source.volume.byteSize()},
         };
         if (!options.out.empty()) report["out"] = options.out;
