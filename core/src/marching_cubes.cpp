@@ -101,9 +101,35 @@ public:
         }
         vertical_.assign(sliceSize_, kNoVertex);
         columns_.assign(std::size_t(nx_), 0);
+        for (int c = 0; c < 256; ++c) {
+            const CaseContinuation& cased = table_[std::size_t(c)];
+            triangleCount_[std::size_t(c)] = cased.pieceCount == 0 ? 0 : cased.pieces[cased.pieceCount - 1].firstTriangle + cased.pieces[cased.pieceCount - 1].triangleCount;
+        }
+    }
+
+    // Counts the chunk's vertices (the crossed edges it owns: every crossed edge is
+    // used by a cell) and triangles, so its buffers are allocated once, at their
+    // final size, instead of growing by copies.
+    void reserveOutput() {
+        std::size_t vertices = 0, triangles = 0;
+        classifySlice(chunk_.zBegin, 0);
+        vertices += planarCrossings(0);
+        for (int z = chunk_.zBegin; z < chunk_.zEnd; ++z) {
+            const int bottom = (z - chunk_.zBegin) & 1, top = bottom ^ 1;
+            classifySlice(z + 1, top);
+            if (z + 1 < chunk_.zEnd || chunk_.last) vertices += planarCrossings(top);
+            vertices += differences(flags_[bottom].data(), flags_[top].data(), sliceSize_);
+            for (int y = 0; y + 1 < ny_; ++y) triangles += rowTriangles(y, bottom, top);
+        }
+        Mesh& mesh = chunk_.mesh;
+        mesh.vertices.reserve(vertices);
+        mesh.vertexEdges.reserve(vertices);
+        mesh.indices.reserve(3 * triangles);
+        if (markPieces_) chunk_.pieceStarts.reserve(triangles / 8 + 1);
     }
 
     void run() {
+        reserveOutput();
         Mesh& mesh = chunk_.mesh;
         classifySlice(chunk_.zBegin, 0);
         threshold_[0] = 0;
@@ -137,7 +163,9 @@ private:
         }
     }
 
-    void marchRow(int y, int z, int bottom, int top) {
+    // The cells [begin, end) of row y that can hold surface (trimming), with
+    // columns_ filled for them. False when the row is empty.
+    bool rowRange(int y, int bottom, int top, int& begin, int& end) {
         const RowSpan* rows[4] = {&spans_[bottom][std::size_t(y)], &spans_[bottom][std::size_t(y) + 1],
                                   &spans_[top][std::size_t(y)], &spans_[top][std::size_t(y) + 1]};
         int lo = nx_, hi = 0;
@@ -148,18 +176,52 @@ private:
             firstsAgree &= r->first == rows[0]->first;
             lastsAgree &= r->last == rows[0]->last;
         }
-        const int begin = firstsAgree ? lo : 0;
-        const int end = lastsAgree ? hi : nx_ - 1;
-        if (begin >= end) return;
-
+        begin = firstsAgree ? lo : 0;
+        end = lastsAgree ? hi : nx_ - 1;
+        if (begin >= end) return false;
         const std::size_t row = std::size_t(nx_) * std::size_t(y);
         const std::uint8_t* lo0 = flags_[bottom].data() + row;
         const std::uint8_t* lo1 = lo0 + nx_;
         const std::uint8_t* hi0 = flags_[top].data() + row;
         const std::uint8_t* hi1 = hi0 + nx_;
-        Mesh& mesh = chunk_.mesh;
         std::uint8_t* columns = columns_.data();
         for (int x = begin; x <= end; ++x) columns[x] = static_cast<std::uint8_t>(lo0[x] | lo1[x] << 1 | hi0[x] << 2 | hi1[x] << 3);
+        return true;
+    }
+
+    std::size_t rowTriangles(int y, int bottom, int top) {
+        int begin, end;
+        if (!rowRange(y, bottom, top, begin, end)) return 0;
+        std::size_t triangles = 0;
+        for (int x = begin; x < end; ++x) triangles += triangleCount_[slots_.configOfColumns[columns_[std::size_t(x)] | columns_[std::size_t(x) + 1] << 4]];
+        return triangles;
+    }
+
+    static std::size_t differences(const std::uint8_t* a, const std::uint8_t* b, std::size_t n) {
+        std::size_t count = 0;
+        for (std::size_t i = 0; i < n; ++i) count += a[i] != b[i];
+        return count;
+    }
+
+    // Crossed x- and y-edges of the slice in `slot`.
+    std::size_t planarCrossings(int slot) const {
+        const std::uint8_t* flags = flags_[slot].data();
+        std::size_t count = 0;
+        for (int y = 0; y < ny_; ++y) {
+            const std::uint8_t* row = flags + std::size_t(nx_) * std::size_t(y);
+            const RowSpan& span = spans_[slot][std::size_t(y)];
+            if (span.lo < span.hi) count += differences(row + span.lo, row + span.lo + 1, std::size_t(span.hi - span.lo));
+            if (y + 1 < ny_) count += differences(row, row + nx_, std::size_t(nx_));
+        }
+        return count;
+    }
+
+    void marchRow(int y, int z, int bottom, int top) {
+        int begin, end;
+        if (!rowRange(y, bottom, top, begin, end)) return;
+        const std::size_t row = std::size_t(nx_) * std::size_t(y);
+        Mesh& mesh = chunk_.mesh;
+        const std::uint8_t* columns = columns_.data();
         for (int x = begin; x < end; ++x) {
             const unsigned config = slots_.configOfColumns[columns[x] | columns[x + 1] << 4];
             if (config == 0 || config == 255) continue;
@@ -227,6 +289,7 @@ private:
     std::array<std::vector<std::uint32_t>, 2> planar_;  // x then y edges of a slice, ping-pong
     std::vector<std::uint32_t> vertical_;              // z edges of the current slab
     std::vector<std::uint8_t> columns_;                // per x, the four flags of the cell row's corners
+    std::array<std::uint8_t, 256> triangleCount_{};
     std::array<std::uint32_t, 2> threshold_{};
     std::uint32_t verticalThreshold_ = 0;
     bool seamSlab_ = false;
