@@ -1,7 +1,11 @@
 // Exhaustive marching cubes (Lorensen & Cline 1987) over slabs of cells, in
 // parallel chunks of slabs whose seams are stitched without welding.
 //
-// Passes, per slab between sample slices z and z+1 of a chunk:
+// The volume is cut into chunks of slabs, run on separate threads. Each chunk is
+// marched twice: a counting pass (classify, trim, count crossed edges and the
+// table's triangles per cell), then, once every chunk's counts have given it its
+// ranges of the final buffers (allocated once, at their final size), a writing
+// pass into those ranges. Per slab between sample slices z and z+1:
 //  1. classify: one above/below flag per sample of slice z+1 (the single rule
 //     sample >= iso), and per row the span of x-edges where the flag changes;
 //  2. trim: a row of cells can only hold surface where one of its four sample
@@ -13,11 +17,10 @@
 //     crossed grid edge gets its vertex computed once, by the first cell that
 //     needs it. Cache entries are never cleared: an entry is valid when it is at
 //     least the vertex count at which its slice entered the slab window.
-// Chunks of slabs run on separate threads. The x- and y-edges on the slice
-// between two chunks belong to the upper chunk; the lower chunk writes
-// placeholders for them, resolved from the upper chunk's first slice when the
-// chunks are concatenated. Temporaries are a few slices of flags and ids per
-// chunk, never per voxel of the volume.
+// The x- and y-edges on the slice between two chunks belong to the upper chunk;
+// the lower chunk writes placeholders for them, resolved from the upper chunk's
+// first slice once both are done (stitch). Temporaries are a few slices of flags
+// and ids per chunk, never per voxel of the volume.
 #include "isotrack/marching_cubes.h"
 
 #include <algorithm>
@@ -78,21 +81,26 @@ EdgeSlots edgeSlots(int nx) {
     return s;
 }
 
-// The mesh of slabs [zBegin, zEnd), with placeholders on slice zEnd unless last.
+// Slabs [zBegin, zEnd) of the volume. A first pass counts the chunk's vertices
+// and triangles; the second writes them straight into their ranges of the
+// final mesh, with placeholders for the vertices on slice zEnd unless last.
 struct Chunk {
     int zBegin = 0, zEnd = 0;
     bool last = false;
-    Mesh mesh;
-    std::vector<std::uint32_t> firstSliceIds;  // x- and y-edge ids of slice zBegin
-    std::vector<std::uint8_t> pieceStarts;     // optional: 1 bit per triangle, set on a piece's first
+    std::size_t vertexCount = 0, triangleCount = 0;
+    std::size_t vertexBase = 0, indexBase = 0;
+    std::size_t vertexCursor = 0, indexCursor = 0;  // written so far, relative to the bases
+    std::vector<std::size_t> seamIndices;           // positions in the final indices holding placeholders
+    std::vector<std::uint32_t> firstSliceIds;       // x- and y-edge ids of slice zBegin
+    std::vector<std::uint8_t> pieceStarts;          // optional: 1 bit per triangle, set on a piece's first
 };
 
 template <class T>
 class ChunkMarcher {
 public:
     ChunkMarcher(const detail::SampleGrid<T>& grid, const std::array<CaseContinuation, 256>& table,
-                 const EdgeSlots& slots, bool markPieces, Chunk& chunk)
-        : grid_(grid), table_(table), slots_(slots), markPieces_(markPieces), chunk_(chunk), nx_(grid.nx()), ny_(grid.ny()),
+                 const EdgeSlots& slots, bool markPieces, Chunk& chunk, Mesh& mesh)
+        : grid_(grid), table_(table), slots_(slots), markPieces_(markPieces), chunk_(chunk), mesh_(mesh), nx_(grid.nx()), ny_(grid.ny()),
           sliceSize_(std::size_t(grid.nx()) * std::size_t(grid.ny())) {
         for (int s = 0; s < 2; ++s) {
             flags_[s].assign(sliceSize_, 0);
@@ -110,7 +118,7 @@ public:
     // Counts the chunk's vertices (the crossed edges it owns: every crossed edge is
     // used by a cell) and triangles, so its buffers are allocated once, at their
     // final size, instead of growing by copies.
-    void reserveOutput() {
+    void count() {
         std::size_t vertices = 0, triangles = 0;
         classifySlice(chunk_.zBegin, 0);
         vertices += planarCrossings(0);
@@ -121,26 +129,26 @@ public:
             vertices += differences(flags_[bottom].data(), flags_[top].data(), sliceSize_);
             for (int y = 0; y + 1 < ny_; ++y) triangles += rowTriangles(y, bottom, top);
         }
-        Mesh& mesh = chunk_.mesh;
-        mesh.vertices.reserve(vertices);
-        mesh.vertexEdges.reserve(vertices);
-        mesh.indices.reserve(3 * triangles);
-        if (markPieces_) chunk_.pieceStarts.reserve(triangles / 8 + 1);
+        chunk_.vertexCount = vertices;
+        chunk_.triangleCount = triangles;
     }
 
+    // Writes the chunk into mesh_, whose buffers already have their final size.
     void run() {
-        reserveOutput();
-        Mesh& mesh = chunk_.mesh;
+        if (markPieces_) chunk_.pieceStarts.assign(chunk_.triangleCount / 8 + 1, 0);
         classifySlice(chunk_.zBegin, 0);
         threshold_[0] = 0;
         for (int z = chunk_.zBegin; z < chunk_.zEnd; ++z) {
             const int bottom = (z - chunk_.zBegin) & 1, top = bottom ^ 1;
             classifySlice(z + 1, top);
-            threshold_[top] = static_cast<std::uint32_t>(mesh.vertices.size());
+            threshold_[top] = static_cast<std::uint32_t>(chunk_.vertexBase + chunk_.vertexCursor);
             verticalThreshold_ = threshold_[top];
             seamSlab_ = !chunk_.last && z + 1 == chunk_.zEnd;
             for (int y = 0; y + 1 < ny_; ++y) marchRow(y, z, bottom, top);
             if (z == chunk_.zBegin) chunk_.firstSliceIds = planar_[bottom];
+        }
+        if (chunk_.vertexCursor != chunk_.vertexCount || chunk_.indexCursor != 3 * chunk_.triangleCount) {
+            throw std::logic_error("marching cubes: a chunk wrote other counts than it counted");
         }
     }
 
@@ -220,7 +228,6 @@ private:
         int begin, end;
         if (!rowRange(y, bottom, top, begin, end)) return;
         const std::size_t row = std::size_t(nx_) * std::size_t(y);
-        Mesh& mesh = chunk_.mesh;
         const std::uint8_t* columns = columns_.data();
         for (int x = begin; x < end; ++x) {
             const unsigned config = slots_.configOfColumns[columns[x] | columns[x + 1] << 4];
@@ -232,16 +239,18 @@ private:
                 ids[e] = vertexOnEdge(x, y, z, cell, e, bottom, top);
             }
             const CaseContinuation& cased = table_[config];
-            if (markPieces_) markPieceStarts(cased, mesh.indices.size() / 3);
-            const int triangles = cased.pieces[cased.pieceCount - 1].firstTriangle + cased.pieces[cased.pieceCount - 1].triangleCount;
-            std::uint32_t out[3 * kMaxCaseTriangles];
+            if (markPieces_) markPieceStarts(cased, chunk_.indexCursor / 3);
+            const int triangles = triangleCount_[config];
+            const std::size_t at = chunk_.indexBase + chunk_.indexCursor;
+            std::uint32_t* out = mesh_.indices.data() + at;
             for (int t = 0; t < triangles; ++t) {
                 const auto& tri = cased.triangles[t];
-                out[3 * t] = ids[tri[0]];
-                out[3 * t + 1] = ids[tri[1]];
-                out[3 * t + 2] = ids[tri[2]];
+                for (int k = 0; k < 3; ++k) {
+                    out[3 * t + k] = ids[tri[k]];
+                    if (ids[tri[k]] & kSeamBit) chunk_.seamIndices.push_back(at + std::size_t(3 * t + k));
+                }
             }
-            mesh.indices.insert(mesh.indices.end(), out, out + 3 * triangles);
+            chunk_.indexCursor += 3 * std::size_t(triangles);
         }
     }
 
@@ -249,7 +258,6 @@ private:
         std::vector<std::uint8_t>& bits = chunk_.pieceStarts;
         for (int p = 0; p < cased.pieceCount; ++p) {
             const std::size_t t = firstTriangle + cased.pieces[p].firstTriangle;
-            if (bits.size() <= t / 8) bits.resize(std::max(bits.size() * 2, t / 8 + 1), 0);
             bits[t / 8] = static_cast<std::uint8_t>(bits[t / 8] | 1u << (t % 8));
         }
     }
@@ -269,11 +277,11 @@ private:
             threshold = threshold_[s];
         }
         if (*slot != kNoVertex && *slot >= threshold) return *slot;
-        Mesh& mesh = chunk_.mesh;
-        *slot = static_cast<std::uint32_t>(mesh.vertices.size());
+        const std::size_t id = chunk_.vertexBase + chunk_.vertexCursor++;
+        *slot = static_cast<std::uint32_t>(id);
         const auto& o = cube::edgeOrigin(edge);
-        mesh.vertices.push_back(grid_.edgeVertex(x + o[0], y + o[1], z + o[2], axis));
-        mesh.vertexEdges.push_back(GridEdge{x + o[0], y + o[1], z + o[2], axis});
+        mesh_.vertices[id] = grid_.edgeVertex(x + o[0], y + o[1], z + o[2], axis);
+        mesh_.vertexEdges[id] = GridEdge{x + o[0], y + o[1], z + o[2], axis};
         return *slot;
     }
 
@@ -282,6 +290,7 @@ private:
     const EdgeSlots& slots_;
     const bool markPieces_;
     Chunk& chunk_;
+    Mesh& mesh_;
     const int nx_, ny_;
     const std::size_t sliceSize_;
     std::array<std::vector<std::uint8_t>, 2> flags_;
@@ -312,47 +321,39 @@ void parallelFor(int count, int threads, Fn&& fn) {
     for (auto& thread : pool) thread.join();
 }
 
-// Joins the chunks into one mesh, resolving seam placeholders.
-Mesh concatenate(std::vector<Chunk>& chunks, int threads, std::vector<std::uint8_t>* pieceStarts) {
-    if (chunks.size() == 1 && !pieceStarts) return std::move(chunks[0].mesh);
-    std::vector<std::size_t> vertexBase(chunks.size() + 1, 0), indexBase(chunks.size() + 1, 0);
-    for (std::size_t c = 0; c < chunks.size(); ++c) {
-        vertexBase[c + 1] = vertexBase[c] + chunks[c].mesh.vertices.size();
-        indexBase[c + 1] = indexBase[c] + chunks[c].mesh.indices.size();
+// Gives each chunk its ranges of the final buffers and sizes them once.
+void allocate(std::vector<Chunk>& chunks, Mesh& mesh) {
+    std::size_t vertices = 0, triangles = 0;
+    for (Chunk& chunk : chunks) {
+        chunk.vertexBase = vertices;
+        chunk.indexBase = 3 * triangles;
+        vertices += chunk.vertexCount;
+        triangles += chunk.triangleCount;
     }
-    if (vertexBase.back() >= kSeamBit) throw std::length_error("marching cubes: more than 2^31 vertices");
-    Mesh out;
-    out.vertices.resize(vertexBase.back());
-    out.vertexEdges.resize(vertexBase.back());
-    out.indices.resize(indexBase.back());
-    if (pieceStarts) pieceStarts->assign(indexBase.back() / 3 / 8 + 1, 0);
-    parallelFor(int(chunks.size()), threads, [&](int c) {
-        const Mesh& part = chunks[std::size_t(c)].mesh;
-        std::copy(part.vertices.begin(), part.vertices.end(), out.vertices.begin() + std::ptrdiff_t(vertexBase[std::size_t(c)]));
-        std::copy(part.vertexEdges.begin(), part.vertexEdges.end(), out.vertexEdges.begin() + std::ptrdiff_t(vertexBase[std::size_t(c)]));
-        const auto base = static_cast<std::uint32_t>(vertexBase[std::size_t(c)]);
-        const std::vector<std::uint32_t>* seam = std::size_t(c) + 1 < chunks.size() ? &chunks[std::size_t(c) + 1].firstSliceIds : nullptr;
-        const auto nextBase = static_cast<std::uint32_t>(vertexBase[std::size_t(c) + 1]);
-        std::uint32_t* dst = out.indices.data() + indexBase[std::size_t(c)];
-        for (std::size_t i = 0; i < part.indices.size(); ++i) {
-            const std::uint32_t id = part.indices[i];
-            dst[i] = (id & kSeamBit) ? nextBase + (*seam)[id & ~kSeamBit] : base + id;
-        }
-    });
-    if (pieceStarts) {
-        // Triangle counts per chunk need not be multiples of 8: copy bit by bit.
-        for (std::size_t c = 0; c < chunks.size(); ++c) {
-            const std::size_t first = indexBase[c] / 3, count = chunks[c].mesh.indices.size() / 3;
-            const auto& bits = chunks[c].pieceStarts;
-            for (std::size_t t = 0; t < count; ++t) {
-                if (t / 8 < bits.size() && (bits[t / 8] >> (t % 8) & 1u)) {
-                    const std::size_t g = first + t;
-                    (*pieceStarts)[g / 8] = static_cast<std::uint8_t>((*pieceStarts)[g / 8] | 1u << (g % 8));
-                }
+    if (vertices >= kSeamBit) throw std::length_error("marching cubes: more than 2^31 vertices");
+    mesh.vertices.resize(vertices);
+    mesh.vertexEdges.resize(vertices);
+    mesh.indices.resize(3 * triangles);
+}
+
+// Resolves the placeholders each chunk left for the next chunk's first slice,
+// and gathers the piece-start bits.
+void stitch(std::vector<Chunk>& chunks, Mesh& mesh, std::vector<std::uint8_t>* pieceStarts) {
+    for (std::size_t c = 0; c + 1 < chunks.size(); ++c) {
+        const std::vector<std::uint32_t>& next = chunks[c + 1].firstSliceIds;
+        for (std::size_t at : chunks[c].seamIndices) mesh.indices[at] = next[mesh.indices[at] & ~kSeamBit];
+    }
+    if (!pieceStarts) return;
+    pieceStarts->assign(mesh.indices.size() / 3 / 8 + 1, 0);
+    for (const Chunk& chunk : chunks) {
+        const std::size_t first = chunk.indexBase / 3;
+        for (std::size_t t = 0; t < chunk.triangleCount; ++t) {
+            if (chunk.pieceStarts[t / 8] >> (t % 8) & 1u) {
+                const std::size_t g = first + t;
+                (*pieceStarts)[g / 8] = static_cast<std::uint8_t>((*pieceStarts)[g / 8] | 1u << (g % 8));
             }
         }
     }
-    return out;
 }
 
 }  // namespace
@@ -372,14 +373,21 @@ Mesh marchingCubes(const Volume& volume, double iso, TableKind table, int thread
     }
     const auto& continuation = continuationTable(table);
     const EdgeSlots slots = edgeSlots(n[0]);
+    Mesh mesh;
     visitSamples(volume, [&](const auto* samples) {
         using T = std::remove_cv_t<std::remove_pointer_t<decltype(samples)>>;
         const detail::SampleGrid<T> grid(volume, samples, iso);
+        const bool mark = pieceStarts != nullptr;
         parallelFor(chunkCount, threads, [&](int c) {
-            ChunkMarcher<T>(grid, continuation, slots, pieceStarts != nullptr, chunks[std::size_t(c)]).run();
+            ChunkMarcher<T>(grid, continuation, slots, mark, chunks[std::size_t(c)], mesh).count();
+        });
+        allocate(chunks, mesh);
+        parallelFor(chunkCount, threads, [&](int c) {
+            ChunkMarcher<T>(grid, continuation, slots, mark, chunks[std::size_t(c)], mesh).run();
         });
     });
-    return concatenate(chunks, threads, pieceStarts);
+    stitch(chunks, mesh, pieceStarts);
+    return mesh;
 }
 
 std::size_t countCrossedEdges(const Volume& volume, double iso) {
