@@ -8,7 +8,8 @@
 // at a time (the tests hold them equal), at close to the cost of the exhaustive
 // pass alone, and with no per-voxel memory.
 #include <algorithm>
-#include <chrono>
+#include <cmath>
+#include <limits>
 #include <numeric>
 
 #include "isotrack/marching_cubes.h"
@@ -26,14 +27,23 @@ public:
         return v;
     }
 
-    // Links the larger root under the smaller, so a root is its component's first vertex.
-    void unite(std::uint32_t a, std::uint32_t b) {
-        a = find(a);
-        b = find(b);
-        if (a == b) return;
-        if (a < b) parent_[b] = a;
-        else parent_[a] = b;
+    // Joins the sets of a triangle's corners, linking larger roots under smaller
+    // ones, so a root is its component's first vertex.
+    void uniteTriangle(const std::uint32_t* v) {
+        std::uint32_t a = find(v[0]);
+        const std::uint32_t b = find(v[1]);
+        if (a != b) a = link(a, b);
+        const std::uint32_t c = find(v[2]);
+        if (a != c) link(a, c);
     }
+
+private:
+    std::uint32_t link(std::uint32_t a, std::uint32_t b) {
+        if (a < b) return parent_[b] = a;
+        return parent_[a] = b;
+    }
+
+public:
 
 private:
     std::vector<std::uint32_t> parent_;
@@ -50,67 +60,109 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
     std::vector<std::uint8_t> pieceStarts;
     const Mesh mesh = marchingCubes(volume, iso, table, threads, &pieceStarts);
     const std::size_t vertexCount = mesh.vertices.size(), triangleCount = mesh.triangleCount();
+    const Dims& dims = volume.dims();
 
     UnionFind sets(vertexCount);
-    for (std::size_t t = 0; t < triangleCount; ++t) {
-        const std::uint32_t* v = &mesh.indices[3 * t];
-        sets.unite(v[0], v[1]);
-        sets.unite(v[0], v[2]);
-    }
-    // Components numbered in order of their first vertex.
+    for (std::size_t t = 0; t < triangleCount; ++t) sets.uniteTriangle(&mesh.indices[3 * t]);
+    // Components numbered in order of their first vertex; each vertex's index in its component.
     std::vector<std::uint32_t> component(vertexCount), localIndex(vertexCount);
-    std::vector<std::size_t> vertices, triangles, pieces;
-    std::vector<std::uint64_t> firstEdge;
+    std::vector<std::size_t> vertices;
     for (std::uint32_t v = 0; v < vertexCount; ++v) {
         const std::uint32_t root = sets.find(v);
         if (root == v) {
             component[v] = static_cast<std::uint32_t>(vertices.size());
             vertices.push_back(0);
-            firstEdge.push_back(edgeOrder(mesh.vertexEdges[v], volume.dims()));
         } else {
             component[v] = component[root];
         }
-        const std::uint32_t c = component[v];
-        localIndex[v] = static_cast<std::uint32_t>(vertices[c]++);
-        firstEdge[c] = std::min(firstEdge[c], edgeOrder(mesh.vertexEdges[v], volume.dims()));
+        localIndex[v] = static_cast<std::uint32_t>(vertices[component[v]]++);
     }
-    triangles.assign(vertices.size(), 0);
-    pieces.assign(vertices.size(), 0);
+    const std::size_t count = vertices.size();
+    std::vector<std::size_t> triangles(count, 0), pieces(count, 0);
     for (std::size_t t = 0; t < triangleCount; ++t) {
         const std::uint32_t c = component[mesh.indices[3 * t]];
         ++triangles[c];
         pieces[c] += pieceStarts[t / 8] >> (t % 8) & 1u;
     }
 
-    std::vector<Surface> surfaces(vertices.size());
-    for (std::size_t c = 0; c < surfaces.size(); ++c) {
+    // One pass over vertices and one over triangles split the mesh and measure
+    // each surface on the way (bounds, border, area, enclosed volume).
+    std::vector<Surface> surfaces(count);
+    for (std::size_t c = 0; c < count; ++c) {
         surfaces[c].mesh.vertices.reserve(vertices[c]);
         surfaces[c].mesh.vertexEdges.reserve(vertices[c]);
         surfaces[c].mesh.indices.reserve(3 * triangles[c]);
+        for (int k = 0; k < 3; ++k) {
+            surfaces[c].stats.boundsMin[k] = std::numeric_limits<double>::infinity();
+            surfaces[c].stats.boundsMax[k] = -std::numeric_limits<double>::infinity();
+        }
     }
     for (std::uint32_t v = 0; v < vertexCount; ++v) {
-        Mesh& m = surfaces[component[v]].mesh;
-        m.vertices.push_back(mesh.vertices[v]);
-        m.vertexEdges.push_back(mesh.vertexEdges[v]);
+        Surface& s = surfaces[component[v]];
+        const Vertex& vertex = mesh.vertices[v];
+        s.mesh.vertices.push_back(vertex);
+        s.mesh.vertexEdges.push_back(mesh.vertexEdges[v]);
+        for (int k = 0; k < 3; ++k) {
+            s.stats.boundsMin[k] = std::min(s.stats.boundsMin[k], double(vertex.position[k]));
+            s.stats.boundsMax[k] = std::max(s.stats.boundsMax[k], double(vertex.position[k]));
+        }
+        if (!s.stats.touchesBorder) {
+            const GridEdge e = mesh.vertexEdges[v];
+            const int p[3] = {e.x, e.y, e.z};
+            for (int k = 0; k < 3; ++k) {
+                if (k != e.axis && (p[k] == 0 || p[k] == dims[k] - 1)) s.stats.touchesBorder = true;
+            }
+        }
     }
+    std::vector<double> signedVolume(count, 0.0);
     for (std::size_t t = 0; t < triangleCount; ++t) {
         const std::uint32_t* v = &mesh.indices[3 * t];
-        Mesh& m = surfaces[component[v[0]]].mesh;
-        m.indices.insert(m.indices.end(), {localIndex[v[0]], localIndex[v[1]], localIndex[v[2]]});
+        const std::uint32_t c = component[v[0]];
+        Surface& s = surfaces[c];
+        s.mesh.indices.insert(s.mesh.indices.end(), {localIndex[v[0]], localIndex[v[1]], localIndex[v[2]]});
+        // Per triangle in float (edges are a voxel long), summed in double.
+        const float* a = mesh.vertices[v[0]].position;
+        const float* b = mesh.vertices[v[1]].position;
+        const float* d = mesh.vertices[v[2]].position;
+        const float e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        const float e2[3] = {d[0] - a[0], d[1] - a[1], d[2] - a[2]};
+        const float n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+        s.stats.area += 0.5 * double(std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]));
+        signedVolume[c] += (double(a[0]) * n[0] + double(a[1]) * n[1] + double(a[2]) * n[2]) / 6.0;
     }
-    for (std::size_t c = 0; c < surfaces.size(); ++c) {
-        // With the consistent table a surface is closed unless it reaches the border.
-        surfaces[c].stats = measureSurface(surfaces[c].mesh, volume, table == TableKind::Consistent);
-        surfaces[c].stats.cellsVisited = pieces[c];
+    for (std::size_t c = 0; c < count; ++c) {
+        SurfaceStats& stats = surfaces[c].stats;
+        stats.triangles = triangles[c];
+        stats.vertices = vertices[c];
+        stats.bytes = surfaces[c].mesh.byteSize();
+        stats.cellsVisited = pieces[c];
+        // The consistent table leaves no holes: a surface is closed unless the border cuts it.
+        stats.closed = table == TableKind::Consistent ? !stats.touchesBorder : measureSurface(surfaces[c].mesh, volume).closed;
+        if (stats.closed) stats.enclosedVolume = std::abs(signedVolume[c]);
     }
-    std::vector<std::size_t> order(surfaces.size());
+
+    // Largest first; equal sizes by their first grid edge in memory order, as trackAllSurfaces.
+    auto firstEdge = [&](std::size_t c) {
+        std::uint64_t first = std::numeric_limits<std::uint64_t>::max();
+        for (const GridEdge e : surfaces[c].mesh.vertexEdges) first = std::min(first, edgeOrder(e, dims));
+        return first;
+    };
+    std::vector<std::size_t> order(count);
     std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        if (triangles[a] != triangles[b]) return triangles[a] > triangles[b];
-        return firstEdge[a] < firstEdge[b];
-    });
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return triangles[a] > triangles[b]; });
+    for (std::size_t i = 0; i < count;) {
+        std::size_t j = i + 1;
+        while (j < count && triangles[order[j]] == triangles[order[i]]) ++j;
+        if (j - i > 1) {
+            std::vector<std::pair<std::uint64_t, std::size_t>> keyed;
+            for (std::size_t k = i; k < j; ++k) keyed.push_back({firstEdge(order[k]), order[k]});
+            std::sort(keyed.begin(), keyed.end());
+            for (std::size_t k = i; k < j; ++k) order[k] = keyed[k - i].second;
+        }
+        i = j;
+    }
     std::vector<Surface> sorted;
-    sorted.reserve(surfaces.size());
+    sorted.reserve(count);
     for (std::size_t c : order) sorted.push_back(std::move(surfaces[c]));
     return sorted;
 }
