@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "viewer/viewer_options.h"
 
 int main(int argc, char** argv) {
     CLI::App app{"isotrack: extract and track isosurfaces of 3D scalar volumes, one connected surface at a time",
@@ -23,6 +24,8 @@ int main(int argc, char** argv) {
     add(isotrack::cli::addRenderCommand);
     add(isotrack::cli::addInfoCommand);
     app.require_subcommand(0, 1);
+    // No subcommand: the interactive viewer, with its own top-level options.
+    const isotrack::viewer::ViewerCommandLine viewer = isotrack::viewer::addViewerOptions(app);
 
     try {
         app.parse(argc, argv);
@@ -41,8 +44,7 @@ int main(int argc, char** argv) {
         for (auto& [command, run] : commands) {
             if (command->parsed()) return run();
         }
-        std::fputs(app.help().c_str(), stdout);
-        return 0;
+        return isotrack::viewer::runViewerCommand(viewer);
     } catch (const std::bad_alloc&) {
         std::fprintf(stderr, "isotrack: out of memory\n");
     } catch (const std::exception& e) {

@@ -8,9 +8,11 @@
 
 in vec3 vPositionView;
 in vec3 vNormalView;
+in float vGrowth;  // 0 at the seed .. 1 at the newest vertex, when colouring by growth
 
 uniform vec3 uColour;
 uniform float uHighlight;  // 1 for the selected surface, else 0
+uniform float uGrowthScale;  // > 0: colour by growth order instead of uColour
 
 out vec4 fragColour;
 
@@ -24,6 +26,15 @@ const float kBackSideDarkening = 0.62;
 const vec3 kHighlightColour = vec3(1.0, 1.0, 0.92);
 const float kStripePeriod = 10.0;  // pixels
 
+// Dark violet (first reached) through teal to yellow (last reached).
+vec3 growthColour(float t) {
+    const vec3 first = vec3(0.28, 0.05, 0.40);
+    const vec3 middle = vec3(0.13, 0.57, 0.55);
+    const vec3 last = vec3(0.99, 0.91, 0.14);
+    t = clamp(t, 0.0, 1.0);
+    return t < 0.5 ? mix(first, middle, 2.0 * t) : mix(middle, last, 2.0 * t - 1.0);
+}
+
 float diffuse(vec3 n, vec3 l) { return max(dot(n, l), 0.0); }
 
 float specular(vec3 n, vec3 l, vec3 v) {
@@ -34,6 +45,7 @@ float specular(vec3 n, vec3 l, vec3 v) {
 void main() {
     vec3 n = normalize(vNormalView);
     vec3 albedo = uColour;
+    if (uGrowthScale > 0.0) albedo = growthColour(vGrowth);
     if (!gl_FrontFacing) {
         n = -n;
         albedo *= kBackSideDarkening;

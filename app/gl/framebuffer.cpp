@@ -129,4 +129,45 @@ std::vector<std::uint8_t> Framebuffer::readRgba(int width, int height) const {
     return pixels;
 }
 
+void Framebuffer::clearIdAndDepth(std::uint32_t value) const {
+    bind();
+    const GLuint id[4] = {value, 0, 0, 0};
+    ISOTRACK_GL_CALL(glClearBufferuiv(GL_COLOR, 0, id));
+    ISOTRACK_GL_CALL(glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0));
+}
+
+std::uint32_t Framebuffer::readUint(int x, int y) const {
+    GLuint value = 0;
+    ISOTRACK_GL_CALL(glBindFramebuffer(GL_READ_FRAMEBUFFER, handle_.id()));
+    ISOTRACK_GL_CALL(glReadBuffer(GL_COLOR_ATTACHMENT0));
+    ISOTRACK_GL_CALL(glPixelStorei(GL_PACK_ALIGNMENT, 1));
+    ISOTRACK_GL_CALL(glReadPixels(x, y, 1, 1, GL_RED_INTEGER, GL_UNSIGNED_INT, &value));
+    return value;
+}
+
+float Framebuffer::readDepth(int x, int y) const {
+    GLfloat depth = 1.0f;
+    ISOTRACK_GL_CALL(glBindFramebuffer(GL_READ_FRAMEBUFFER, handle_.id()));
+    ISOTRACK_GL_CALL(glPixelStorei(GL_PACK_ALIGNMENT, 1));
+    ISOTRACK_GL_CALL(glReadPixels(x, y, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &depth));
+    return depth;
+}
+
+void Framebuffer::blitColourToDefault(int width, int height, int x, int y) const {
+    ISOTRACK_GL_CALL(glBindFramebuffer(GL_READ_FRAMEBUFFER, handle_.id()));
+    ISOTRACK_GL_CALL(glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0));
+    ISOTRACK_GL_CALL(
+        glBlitFramebuffer(0, 0, width, height, x, y, x + width, y + height, GL_COLOR_BUFFER_BIT, GL_NEAREST));
+    ISOTRACK_GL_CALL(glBindFramebuffer(GL_FRAMEBUFFER, 0));
+}
+
+std::vector<std::uint8_t> Framebuffer::readDefaultRgba(int width, int height) {
+    std::vector<std::uint8_t> pixels(std::size_t(width) * std::size_t(height) * 4);
+    ISOTRACK_GL_CALL(glBindFramebuffer(GL_READ_FRAMEBUFFER, 0));
+    ISOTRACK_GL_CALL(glReadBuffer(GL_BACK));
+    ISOTRACK_GL_CALL(glPixelStorei(GL_PACK_ALIGNMENT, 1));
+    ISOTRACK_GL_CALL(glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data()));
+    return pixels;
+}
+
 }  // namespace isotrack::gl

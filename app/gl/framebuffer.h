@@ -75,6 +75,24 @@ public:
     // The colour attachment's RGBA bytes, bottom row first as GL stores them.
     std::vector<std::uint8_t> readRgba(int width, int height) const;
 
+    // For id buffers (an R32UI colour attachment): glClear is undefined on
+    // integer targets, so the colour is cleared to `value` with glClearBuffer,
+    // and depth to 1. Binds this framebuffer.
+    void clearIdAndDepth(std::uint32_t value) const;
+    // One pixel (GL's origin: bottom-left) of the R32UI colour attachment, and
+    // of the depth attachment as a window-space depth in [0, 1].
+    std::uint32_t readUint(int x, int y) const;
+    float readDepth(int x, int y) const;
+
+    // Copies this framebuffer's colour [0, width) x [0, height) into the default
+    // framebuffer at (x, y) (GL's bottom-left origin), pixel for pixel; leaves
+    // the default framebuffer bound.
+    void blitColourToDefault(int width, int height, int x, int y) const;
+
+    // The RGBA bytes of the default framebuffer's back buffer (a window's
+    // frame before it is swapped), bottom row first.
+    static std::vector<std::uint8_t> readDefaultRgba(int width, int height);
+
     unsigned id() const { return handle_.id(); }
 
 private:

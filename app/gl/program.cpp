@@ -94,6 +94,7 @@ int Program::uniformLocation(const char* name) const { return glGetUniformLocati
 
 void Program::set(int location, float value) { ISOTRACK_GL_CALL(glUniform1f(location, value)); }
 void Program::set(int location, int value) { ISOTRACK_GL_CALL(glUniform1i(location, value)); }
+void Program::set(int location, unsigned value) { ISOTRACK_GL_CALL(glUniform1ui(location, value)); }
 void Program::set(int location, const glm::vec3& value) {
     ISOTRACK_GL_CALL(glUniform3fv(location, 1, glm::value_ptr(value)));
 }

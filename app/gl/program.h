@@ -62,6 +62,7 @@ public:
     // Set uniforms of this program; it must be the one in use.
     static void set(int location, float value);
     static void set(int location, int value);
+    static void set(int location, unsigned value);
     static void set(int location, const glm::vec3& value);
     static void set(int location, const glm::vec4& value);
     static void set(int location, const glm::mat4& value);

@@ -89,6 +89,20 @@ void GpuMesh::appendNew(const Mesh& mesh) {
                            indexCount_, mesh.indices.size() - std::min(indexCount_, mesh.indices.size())});
 }
 
+void GpuMesh::shrinkToFit() {
+    const std::size_t vertexBytes = vertexCount_ * kVertexBytes, indexBytes = indexCount_ * kIndexBytes;
+    bool replaced = false;
+    if (vertices_.size() > vertexBytes) {
+        vertices_ = regrow(vertices_, vertexBytes, vertexBytes);
+        replaced = true;
+    }
+    if (indices_.size() > indexBytes) {
+        indices_ = regrow(indices_, indexBytes, indexBytes);
+        replaced = true;
+    }
+    if (replaced) bindAttributes();
+}
+
 GpuMeshBytes GpuMesh::bytes() const {
     return {vertexCount_ * kVertexBytes, indexCount_ * kIndexBytes, vertices_.size() + indices_.size()};
 }

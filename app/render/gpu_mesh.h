@@ -42,6 +42,9 @@ public:
     void append(const Mesh& mesh, const SurfaceTracker::Step& step);
     // Uploads whatever `mesh` holds beyond what is already uploaded.
     void appendNew(const Mesh& mesh);
+    // Once a grown mesh is complete: buffers of exactly its size, the contents
+    // copied GPU-side (nothing is sent again), the spare capacity freed.
+    void shrinkToFit();
 
     std::size_t vertexCount() const { return vertexCount_; }
     std::size_t indexCount() const { return indexCount_; }

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "gl/state.h"
+#include "render/pick_target.h"
 #include "render/shader_library.h"
 
 namespace isotrack::render {
@@ -38,21 +39,38 @@ std::array<glm::vec3, 24> boxLines(const Bounds& b) {
     return lines;
 }
 
+bool drawable(const GpuMesh& mesh, const SurfaceStyle& style) { return style.visible && mesh.indexCount() > 0; }
+
 }  // namespace
 
+Bounds boundsWithOffsets(const Bounds& bounds, const std::vector<glm::vec3>& offsets) {
+    Bounds scene = bounds;
+    for (const glm::vec3& offset : offsets) {
+        scene.min = glm::min(scene.min, bounds.min + offset);
+        scene.max = glm::max(scene.max, bounds.max + offset);
+    }
+    return scene;
+}
+
 Renderer::Renderer()
-    : surfaceProgram_{buildProgram("surface.vert", "surface.frag"), 0, 0, 0, 0, 0},
-      lineProgram_{buildProgram("lines.vert", "lines.frag"), 0, 0, 0} {
+    : surfaceProgram_{buildProgram("surface.vert", "surface.frag"), 0, 0, 0, 0, 0, 0},
+      lineProgram_{buildProgram("lines.vert", "lines.frag"), 0, 0, 0},
+      pickProgram_{buildProgram("pick.vert", "pick.frag"), 0, 0, 0} {
     const gl::Program& surface = surfaceProgram_.program;
     surfaceProgram_.view = surface.uniformLocation("uView");
     surfaceProgram_.projection = surface.uniformLocation("uProjection");
     surfaceProgram_.offset = surface.uniformLocation("uOffset");
     surfaceProgram_.colour = surface.uniformLocation("uColour");
     surfaceProgram_.highlight = surface.uniformLocation("uHighlight");
+    surfaceProgram_.growthScale = surface.uniformLocation("uGrowthScale");
     const gl::Program& lines = lineProgram_.program;
     lineProgram_.viewProjection = lines.uniformLocation("uViewProjection");
     lineProgram_.offset = lines.uniformLocation("uOffset");
     lineProgram_.colour = lines.uniformLocation("uColour");
+    const gl::Program& pick = pickProgram_.program;
+    pickProgram_.viewProjection = pick.uniformLocation("uViewProjection");
+    pickProgram_.offset = pick.uniformLocation("uOffset");
+    pickProgram_.id = pick.uniformLocation("uId");
 
     boxVertices_.allocate(sizeof(glm::vec3) * 24, nullptr, gl::BufferUsage::Static);
     boxArray_.setFloatAttribute(0, boxVertices_, 3, sizeof(glm::vec3), 0);
@@ -75,78 +93,129 @@ void Renderer::setBounds(const Bounds& bounds) {
 }
 
 Bounds Renderer::sceneBounds() const {
-    Bounds scene = bounds_;
+    std::vector<glm::vec3> offsets;
     for (const DrawnSurface& surface : surfaces_) {
-        if (!surface.style.visible) continue;
-        scene.min = glm::min(scene.min, bounds_.min + surface.style.offset);
-        scene.max = glm::max(scene.max, bounds_.max + surface.style.offset);
+        if (surface.style.visible) offsets.push_back(surface.style.offset);
     }
-    return scene;
+    return boundsWithOffsets(bounds_, offsets);
 }
 
 void Renderer::draw(const Camera& camera, const FrameOptions& options) const {
-    gl::setViewport(0, 0, options.width, options.height);
+    const FrameView frame = frameView(camera, options, sceneBounds());
+    beginFrame(frame, options);
+
+    beginSurfaces(frame, options.wireframe);
+    for (std::size_t i = 0; i < surfaces_.size(); ++i) {
+        SurfaceShading shading;
+        shading.highlighted = options.selected == i;
+        drawSurface(surfaces_[i].mesh, surfaces_[i].style, shading);
+    }
+    endSurfaces(options.wireframe);
+
+    if (options.wireframe || options.boundingBox) {
+        beginLines(frame);
+        if (options.wireframe) {
+            setWireframeMode(true);
+            for (const DrawnSurface& surface : surfaces_) drawSurfaceWireframe(surface.mesh, surface.style);
+            setWireframeMode(false);
+        }
+        if (options.boundingBox) drawBoundingBox();
+    }
+}
+
+FrameView Renderer::frameView(const Camera& camera, const FrameOptions& options, const Bounds& scene) {
+    float near = 0.0f, far = 0.0f;
+    clipPlanes(camera, scene, near, far);
+    const float aspect = static_cast<float>(options.width) / static_cast<float>(std::max(options.height, 1));
+    FrameView frame;
+    frame.view = camera.view();
+    frame.projection = camera.projection(aspect, near, far);
+    frame.x = options.x;
+    frame.y = options.y;
+    frame.width = options.width;
+    frame.height = options.height;
+    return frame;
+}
+
+void Renderer::beginFrame(const FrameView& frame, const FrameOptions& options) {
+    gl::setViewport(frame.x, frame.y, frame.width, frame.height);
     gl::setDepthTest(true);
     gl::setDepthWrite(true);
     gl::setDepthLessEqual(false);
     gl::setFaceCulling(false);  // two-sided: open surfaces show their inside
     gl::clear(glm::vec4(options.background, 1.0f));
-
-    float near = 0.0f, far = 0.0f;
-    clipPlanes(camera, sceneBounds(), near, far);
-    const float aspect = static_cast<float>(options.width) / static_cast<float>(std::max(options.height, 1));
-    const glm::mat4 view = camera.view();
-    const glm::mat4 projection = camera.projection(aspect, near, far);
-
-    drawSurfaces(view, projection, options);
-    if (options.wireframe || options.boundingBox) {
-        lineProgram_.program.use();
-        gl::setDepthLessEqual(true);
-        if (options.wireframe) drawWireframe(projection * view);
-        if (options.boundingBox) drawBoundingBox(projection * view);
-    }
 }
 
-void Renderer::drawSurfaces(const glm::mat4& view, const glm::mat4& projection, const FrameOptions& options) const {
+void Renderer::beginSurfaces(const FrameView& frame, bool underWireframe) const {
     const SurfaceProgram& p = surfaceProgram_;
     p.program.use();
-    gl::Program::set(p.view, view);
-    gl::Program::set(p.projection, projection);
-    if (options.wireframe) {
+    gl::Program::set(p.view, frame.view);
+    gl::Program::set(p.projection, frame.projection);
+    if (underWireframe) {
         gl::setPolygonOffsetFill(kWireOffsetFactor, kWireOffsetUnits);
     } else {
         gl::setPolygonOffsetFill(0.0f, 0.0f);
     }
-    for (std::size_t i = 0; i < surfaces_.size(); ++i) {
-        const DrawnSurface& surface = surfaces_[i];
-        if (!surface.style.visible || surface.mesh.indexCount() == 0) continue;
-        gl::Program::set(p.offset, surface.style.offset);
-        gl::Program::set(p.colour, surface.style.colour);
-        gl::Program::set(p.highlight, options.selected == i ? 1.0f : 0.0f);
-        surface.mesh.draw();
-    }
-    if (options.wireframe) gl::setPolygonOffsetFill(0.0f, 0.0f);
 }
 
-void Renderer::drawWireframe(const glm::mat4& viewProjection) const {
-    const LineProgram& p = lineProgram_;
-    gl::Program::set(p.viewProjection, viewProjection);
-    gl::setPolygonLines(true);
-    for (const DrawnSurface& surface : surfaces_) {
-        if (!surface.style.visible || surface.mesh.indexCount() == 0) continue;
-        gl::Program::set(p.offset, surface.style.offset);
-        gl::Program::set(p.colour, surface.style.colour * kWireDarkening);
-        surface.mesh.draw();
-    }
-    gl::setPolygonLines(false);
+void Renderer::drawSurface(const GpuMesh& mesh, const SurfaceStyle& style, const SurfaceShading& shading) const {
+    if (!drawable(mesh, style)) return;
+    const SurfaceProgram& p = surfaceProgram_;
+    gl::Program::set(p.offset, style.offset);
+    gl::Program::set(p.colour, style.colour);
+    gl::Program::set(p.highlight, shading.highlighted ? 1.0f : 0.0f);
+    gl::Program::set(p.growthScale, shading.colourByGrowth
+                                        ? 1.0f / static_cast<float>(std::max<std::size_t>(mesh.vertexCount(), 1))
+                                        : 0.0f);
+    mesh.draw();
 }
 
-void Renderer::drawBoundingBox(const glm::mat4& viewProjection) const {
+void Renderer::endSurfaces(bool underWireframe) {
+    if (underWireframe) gl::setPolygonOffsetFill(0.0f, 0.0f);
+}
+
+void Renderer::beginLines(const FrameView& frame) const {
     const LineProgram& p = lineProgram_;
-    gl::Program::set(p.viewProjection, viewProjection);
+    p.program.use();
+    gl::setDepthLessEqual(true);
+    gl::Program::set(p.viewProjection, frame.viewProjection());
+}
+
+void Renderer::setWireframeMode(bool lines) { gl::setPolygonLines(lines); }
+
+void Renderer::drawSurfaceWireframe(const GpuMesh& mesh, const SurfaceStyle& style) const {
+    if (!drawable(mesh, style)) return;
+    const LineProgram& p = lineProgram_;
+    gl::Program::set(p.offset, style.offset);
+    gl::Program::set(p.colour, style.colour * kWireDarkening);
+    mesh.draw();
+}
+
+void Renderer::drawBoundingBox() const {
+    const LineProgram& p = lineProgram_;
     gl::Program::set(p.offset, glm::vec3(0.0f));
     gl::Program::set(p.colour, kBoxColour);
     boxArray_.drawLines(24);
+}
+
+void Renderer::beginPick(const FrameView& frame, const PickTarget& target) const {
+    target.bindAndClear();
+    gl::setViewport(0, 0, target.width(), target.height());
+    gl::setDepthTest(true);
+    gl::setDepthWrite(true);
+    gl::setDepthLessEqual(false);
+    gl::setPolygonOffsetFill(0.0f, 0.0f);
+    const PickProgram& p = pickProgram_;
+    p.program.use();
+    gl::Program::set(p.viewProjection, frame.viewProjection());
+}
+
+void Renderer::drawSurfaceId(const GpuMesh& mesh, const glm::vec3& offset, std::uint32_t id) const {
+    if (mesh.indexCount() == 0) return;
+    const PickProgram& p = pickProgram_;
+    gl::Program::set(p.offset, offset);
+    gl::Program::set(p.id, static_cast<unsigned>(id));
+    mesh.draw();
 }
 
 }  // namespace isotrack::render

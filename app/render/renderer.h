@@ -1,15 +1,21 @@
 #pragma once
 // Draws isotrack's scene: surfaces, an optional wireframe over them, and the
 // volume's bounding box, into whatever framebuffer is bound (a window's, or an
-// OffscreenTarget).
+// OffscreenTarget); and surface ids into a PickTarget for picking.
 //
-// Every surface has its own GpuMesh and a plain SurfaceStyle that a viewer can
-// edit between frames (visibility, colour, offset). Drawing sets each piece of
-// state once per pass and only uniforms per surface; it never uploads meshes.
+// Two ways in. The retained one: addSurface() a GpuMesh with a plain
+// SurfaceStyle a viewer can edit between frames, then draw() them all (what
+// `isotrack render` and the golden tests use). The immediate one, for a viewer
+// whose structures own their GpuMeshes and draw themselves: beginFrame(), then
+// beginSurfaces() and drawSurface() per surface, beginLines() and the box;
+// beginPick() and drawSurfaceId() for the id buffer. Each pass sets its state
+// once and only uniforms per surface; nothing here uploads meshes.
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include "gl/buffer.h"
@@ -20,6 +26,8 @@
 #include "render/gpu_mesh.h"
 
 namespace isotrack::render {
+
+class PickTarget;
 
 struct SurfaceStyle {
     bool visible = true;
@@ -38,7 +46,25 @@ struct FrameOptions {
     bool wireframe = false;
     bool boundingBox = true;
     std::optional<std::size_t> selected;  // surface index to highlight
+    int x = 0, y = 0;                     // viewport origin (bottom-left) in the framebuffer
 };
+
+// One frame's camera as matrices and the viewport it draws into; every pass of
+// the frame (colour and pick) uses the same one.
+struct FrameView {
+    glm::mat4 view{1.0f}, projection{1.0f};
+    int x = 0, y = 0, width = 1, height = 1;
+    glm::mat4 viewProjection() const { return projection * view; }
+};
+
+// How drawSurface shades one surface beyond its style.
+struct SurfaceShading {
+    bool highlighted = false;     // the selection: rim glow and stripes
+    bool colourByGrowth = false;  // vertex order as a colour ramp (tracked surfaces)
+};
+
+// `bounds` grown to hold itself moved by each of `offsets` (surfaces drawn displaced).
+Bounds boundsWithOffsets(const Bounds& bounds, const std::vector<glm::vec3>& offsets);
 
 class Renderer {
 public:
@@ -57,25 +83,50 @@ public:
     void setBounds(const Bounds& bounds);
     const Bounds& bounds() const { return bounds_; }
 
+    // Draws every added surface.
     void draw(const Camera& camera, const FrameOptions& options) const;
+
+    // ---- immediate passes --------------------------------------------------
+    // The matrices for `camera`, with clip planes around `scene` (the volume's
+    // box, grown by any surface offsets).
+    static FrameView frameView(const Camera& camera, const FrameOptions& options, const Bounds& scene);
+    // Viewport, depth state, and a clear of the whole bound framebuffer.
+    static void beginFrame(const FrameView& frame, const FrameOptions& options);
+
+    void beginSurfaces(const FrameView& frame, bool underWireframe) const;
+    void drawSurface(const GpuMesh& mesh, const SurfaceStyle& style, const SurfaceShading& shading) const;
+    static void endSurfaces(bool underWireframe);
+
+    // Lines: wireframes over surfaces (between setWireframeMode(true) and
+    // setWireframeMode(false)) and the volume's box.
+    void beginLines(const FrameView& frame) const;
+    static void setWireframeMode(bool lines);
+    void drawSurfaceWireframe(const GpuMesh& mesh, const SurfaceStyle& style) const;
+    void drawBoundingBox() const;
+
+    // Binds `target`, clears it to id 0 (nothing) and depth 1, and sets the pick program.
+    void beginPick(const FrameView& frame, const PickTarget& target) const;
+    void drawSurfaceId(const GpuMesh& mesh, const glm::vec3& offset, std::uint32_t id) const;
 
 private:
     struct SurfaceProgram {
         gl::Program program;
-        int view, projection, offset, colour, highlight;
+        int view, projection, offset, colour, highlight, growthScale;
     };
     struct LineProgram {
         gl::Program program;
         int viewProjection, offset, colour;
     };
+    struct PickProgram {
+        gl::Program program;
+        int viewProjection, offset, id;
+    };
 
     Bounds sceneBounds() const;
-    void drawSurfaces(const glm::mat4& view, const glm::mat4& projection, const FrameOptions& options) const;
-    void drawWireframe(const glm::mat4& viewProjection) const;
-    void drawBoundingBox(const glm::mat4& viewProjection) const;
 
     SurfaceProgram surfaceProgram_;
     LineProgram lineProgram_;
+    PickProgram pickProgram_;
     gl::Buffer boxVertices_;
     gl::VertexArray boxArray_;
     Bounds bounds_;

@@ -1,0 +1,47 @@
+#include "render/pick_target.h"
+
+#include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
+#include <glm/vec4.hpp>
+
+namespace isotrack::render {
+
+PickTarget::PickTarget(int width, int height)
+    : width_(width),
+      height_(height),
+      ids_(width, height, gl::PixelFormat::R32UI),
+      depth_(width, height, gl::PixelFormat::Depth24Stencil8) {
+    framebuffer_.attachColour(ids_);
+    framebuffer_.attachDepthStencil(depth_);
+    framebuffer_.checkComplete();
+    gl::Framebuffer::bindDefault();
+}
+
+void PickTarget::bindAndClear() const { framebuffer_.clearIdAndDepth(0); }
+
+void PickTarget::unbind() { gl::Framebuffer::bindDefault(); }
+
+std::uint32_t PickTarget::idAt(int x, int y) const {
+    if (x < 0 || y < 0 || x >= width_ || y >= height_) return 0;
+    return framebuffer_.readUint(x, height_ - 1 - y);
+}
+
+float PickTarget::depthAt(int x, int y) const {
+    if (x < 0 || y < 0 || x >= width_ || y >= height_) return 1.0f;
+    return framebuffer_.readDepth(x, height_ - 1 - y);
+}
+
+glm::vec3 unproject(const FrameView& frame, float x, float y, float depth) {
+    const glm::vec4 ndc{2.0f * x / static_cast<float>(frame.width) - 1.0f,
+                        1.0f - 2.0f * y / static_cast<float>(frame.height), 2.0f * depth - 1.0f, 1.0f};
+    const glm::vec4 world = glm::inverse(frame.viewProjection()) * ndc;
+    return glm::vec3(world) / world.w;
+}
+
+void pixelRay(const FrameView& frame, float x, float y, glm::vec3& origin, glm::vec3& direction) {
+    origin = unproject(frame, x, y, 0.0f);
+    direction = glm::normalize(unproject(frame, x, y, 1.0f) - origin);
+}
+
+}  // namespace isotrack::render

@@ -1,0 +1,99 @@
+#pragma once
+// One surface in the viewer, Polyscope-style: it owns its CPU mesh (or the
+// tracker still growing it), its GPU mesh and its style, and it draws itself
+// (draw), its id for picking (drawPick), and describes itself for the panel
+// (buildUI: a plain row, which ui/ turns into widgets).
+//
+// A growing surface is fed a budget per frame: grow() runs the tracker for that
+// long (or that many cells) and appends exactly the new vertex and index ranges
+// to the GPU buffers; area and bounds accumulate from the new triangles, so
+// finishing costs nothing extra.
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+#include <glm/vec3.hpp>
+
+#include "isotrack/tracking.h"
+#include "render/gpu_mesh.h"
+#include "render/renderer.h"
+#include "ui/panel_state.h"
+
+namespace isotrack::viewer {
+
+struct LoadedVolume;
+
+struct GrowthBudget {
+    std::chrono::nanoseconds time{std::chrono::milliseconds(4)};
+    std::size_t cells = 0;  // when > 0, this many cells instead of a time budget
+};
+
+struct GrowthStep {
+    std::size_t cells = 0;
+    std::chrono::nanoseconds extract{0}, upload{0};
+};
+
+class SurfaceStructure {
+public:
+    // A finished surface, uploaded in one go.
+    SurfaceStructure(std::uint32_t id, Surface surface, const glm::vec3& colour, std::optional<Vec3d> seedPoint);
+    // A surface to grow from `seed`, tracked on `volume` (kept alive by this).
+    SurfaceStructure(std::uint32_t id, std::shared_ptr<const LoadedVolume> volume, double iso, TableKind table,
+                     const GridEdge& seed, const Vec3d& seedPoint, const glm::vec3& colour);
+    ~SurfaceStructure();
+    SurfaceStructure(const SurfaceStructure&) = delete;
+    SurfaceStructure& operator=(const SurfaceStructure&) = delete;
+
+    void draw(const render::Renderer& renderer, bool selected, bool colourByGrowth) const;
+    void drawWireframe(const render::Renderer& renderer) const;
+    void drawPick(const render::Renderer& renderer) const;
+    void buildUI(ui::PanelState& state) const;
+
+    bool growing() const { return tracker_ != nullptr; }
+    GrowthStep grow(const GrowthBudget& budget);
+    // Starts growing again from the seed, with empty buffers.
+    void restartGrowth();
+
+    std::uint32_t id() const { return id_; }
+    std::uint32_t pickId() const { return id_ + 1; }  // 0 is the background
+    const Mesh& mesh() const;
+    const SurfaceStats& stats() const { return stats_; }
+    const std::optional<Vec3d>& seedPoint() const { return seedPoint_; }
+    bool tracked() const { return seedPoint_.has_value(); }
+    bool containsEdge(const GridEdge& edge) const;
+
+    render::SurfaceStyle& style() { return style_; }
+    const render::SurfaceStyle& style() const { return style_; }
+    // The user's move; the exploded view adds explodeOffset on top.
+    glm::vec3 userOffset{0.0f};
+    void setExplode(float factor, const glm::vec3& volumeCentre);
+    glm::vec3 offset() const { return style_.offset; }
+    glm::vec3 centre() const;  // of its bounds, unmoved
+
+    std::size_t cpuBytes() const;  // vertices, indices and their grid edges (Mesh::byteSize)
+    std::size_t gpuBytes() const { return gpu_.bytes().capacityBytes; }
+    std::size_t drawnIndexCount() const { return gpu_.indexCount(); }
+
+private:
+    void accumulate(const Mesh& mesh, std::size_t firstIndex, std::size_t firstVertex);
+    void finishGrowth();
+
+    std::uint32_t id_;
+    Mesh mesh_;
+    SurfaceStats stats_;
+    render::GpuMesh gpu_;
+    render::SurfaceStyle style_;
+    glm::vec3 explodeOffset_{0.0f};
+    std::optional<Vec3d> seedPoint_;
+
+    // While growing.
+    std::shared_ptr<const LoadedVolume> volume_;
+    std::unique_ptr<SurfaceTracker> tracker_;
+    double iso_ = 0.0;
+    TableKind table_ = TableKind::Consistent;
+    GridEdge seed_{};
+};
+
+}  // namespace isotrack::viewer

@@ -1,0 +1,158 @@
+#pragma once
+// The interactive viewer: a window with the 3D view on the right and the panel
+// on the left, driven by ImGui's standard GLFW + OpenGL3 frame loop.
+//
+// One frame: input (events, camera, clicks and picking), script (the next
+// commands of a --script session), extract (the worker's finished results are
+// taken; growing surfaces advance within their per-frame budget), upload (new
+// meshes and grown ranges go to the GPU), ui (the panel from plain state, its
+// actions applied), draw (the scene, timed on the GPU too, then the panel),
+// present (swap). Every stage is timed by the Profiler.
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "isotrack/tables.h"
+#include "render/camera.h"
+#include "render/renderer.h"
+#include "ui/actions.h"
+#include "ui/panel.h"
+#include "viewer/camera_controller.h"
+#include "viewer/extraction_worker.h"
+#include "viewer/picker.h"
+#include "viewer/profiler.h"
+#include "viewer/scene.h"
+#include "viewer/script.h"
+#include "viewer/view_cache.h"
+#include "viewer/window.h"
+
+namespace isotrack::viewer {
+
+struct ViewerOptions {
+    std::string volumePath;
+    std::string fieldSpec;  // default when neither is given: kDefaultField
+    std::optional<double> iso;
+    std::string table = "consistent";
+    std::string method = "all";
+    std::string script;
+    bool json = false;
+    std::string profile;
+    bool deterministic = false;
+    bool noVsync = false;  // vsync is on in interactive sessions unless this; scripts never wait for it
+    int width = 1280, height = 800;
+    int threads = 0;  // extraction threads; 0: one fewer than the cores (at least 1)
+};
+
+inline constexpr const char* kDefaultField = "blobs:128";
+
+class Viewer {
+public:
+    // Opens the window (throws DisplayError without a display).
+    Viewer(const ViewerOptions& options, std::optional<Script> script);
+    ~Viewer();
+    Viewer(const Viewer&) = delete;
+    Viewer& operator=(const Viewer&) = delete;
+
+    // Runs frames until the window closes or the script quits; returns the exit
+    // status (1 after a script error, which has been printed).
+    int run();
+    // The --json summary of the session so far.
+    nlohmann::json summary() const;
+
+private:
+    struct ScriptRun;
+
+    void frame();
+    bool idle() const;
+
+    // viewer_scene.cpp: extraction, results, growth, picking
+    void submit();
+    void takeResult();
+    void applyResult(ExtractionResult result);
+    void grow();
+    void click(float x, float y, bool track);
+    void trackFrom(const Vec3d& point);
+    double currentIso() const;
+    std::vector<Vec3d> trackedSeeds() const;
+    void cancelExtraction();
+
+    // viewer_actions.cpp
+    void apply(const ui::Action& action);
+    void applyKey(KeyCommand key);
+    void frameCamera(bool selectionOnly);
+    void exportSurface(std::uint32_t id, const std::string& path);
+
+    // viewer_report.cpp: panel state, summary, screenshots
+    ui::PanelState panelState() const;
+    std::size_t gpuOtherBytes() const;
+    std::size_t cpuBytes() const;
+    std::size_t gpuBytes() const;
+    nlohmann::json memoryJson() const;
+    void writeScreenshot(const std::string& path) const;
+
+    // viewer_script.cpp
+    void advanceScript();
+    bool runCommand(const ScriptCommand& command);  // false: wait before the next one
+    bool waitDone();
+    void failScript(const std::string& message);
+    SurfaceStructure& surfaceAt(const ScriptCommand& command, std::size_t argument);
+
+    void layout();
+    void drawView();
+    render::FrameOptions frameOptions() const;
+    render::FrameView frameView() const;
+    void status(const std::string& message);
+
+    ViewerOptions options_;
+    Window window_;
+    std::unique_ptr<render::Renderer> renderer_;
+    Profiler profiler_;
+    Scene scene_;
+    Picker picker_;
+    ViewCache viewCache_;
+    CameraController controller_;
+    render::Camera camera_;
+    ui::Panel panel_;
+    std::vector<ui::Action> actions_;
+
+    // What the user asked for; the worker makes it so.
+    ExtractionWorker worker_;
+    std::uint64_t generation_ = 0;
+    SourceSpec source_;
+    std::optional<double> iso_;
+    TableKind table_ = TableKind::Consistent;
+    ui::Method method_ = ui::Method::All;
+    double lastExtractMs_ = 0.0;
+    std::string extractionError_;
+    std::string status_;
+
+    // Growth.
+    bool playing_ = true;
+    bool stepOnce_ = false;
+    int cellsPerFrame_ = 0;
+    float growthBudgetMs_ = 4.0f;
+    std::size_t grownCells_ = 0;  // this frame
+
+    // Layout, in window pixels and framebuffer pixels.
+    int windowWidth_ = 1, windowHeight_ = 1, framebufferWidth_ = 1, framebufferHeight_ = 1;
+    ViewRect view_;
+    float pixelScale_ = 1.0f;
+
+    std::unique_ptr<ScriptRun> script_;
+    std::optional<std::string> screenshotPath_;
+    int screenshots_ = 0;  // taken with F12
+    nlohmann::json checkpoints_ = nlohmann::json::array();
+    nlohmann::json picks_ = nlohmann::json::array();  // the last few clicks, for the summary
+    bool quit_ = false;
+    int exitCode_ = 0;
+    int idleFrames_ = 0;
+};
+
+// Runs the viewer for `isotrack` without a subcommand; returns the exit status.
+int runViewer(const ViewerOptions& options);
+
+}  // namespace isotrack::viewer

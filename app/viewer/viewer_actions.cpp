@@ -1,0 +1,149 @@
+// What the panel, the keys and scripts ask for, applied between frames.
+#include <algorithm>
+#include <type_traits>
+
+#include "isotrack/io.h"
+#include "viewer/viewer.h"
+
+namespace isotrack::viewer {
+namespace {
+
+glm::vec3 toVec3(const std::array<float, 3>& v) { return {v[0], v[1], v[2]}; }
+
+template <class... Ts>
+struct Overloaded : Ts... {
+    using Ts::operator()...;
+};
+template <class... Ts>
+Overloaded(Ts...) -> Overloaded<Ts...>;
+
+}  // namespace
+
+void Viewer::apply(const ui::Action& action) {
+    std::visit(Overloaded{
+                   [&](const ui::LoadField& a) {
+                       source_ = SourceSpec{SourceSpec::Field, a.name + ":" + std::to_string(a.size)};
+                       iso_.reset();
+                       submit();
+                   },
+                   [&](const ui::LoadFile& a) {
+                       source_ = SourceSpec{SourceSpec::File, a.path};
+                       iso_.reset();
+                       submit();
+                   },
+                   [&](const ui::SetIso& a) {
+                       iso_ = a.iso;
+                       submit();
+                   },
+                   [&](const ui::SetTable& a) {
+                       table_ = a.table == ui::Table::Classic ? TableKind::Classic : TableKind::Consistent;
+                       submit();
+                   },
+                   [&](const ui::SetMethod& a) {
+                       method_ = a.method;
+                       submit();
+                   },
+                   [&](const ui::Growth& a) {
+                       switch (a.kind) {
+                           case ui::Growth::Play: playing_ = true; break;
+                           case ui::Growth::Pause: playing_ = false; break;
+                           case ui::Growth::Step:
+                               playing_ = false;
+                               stepOnce_ = true;
+                               break;
+                           case ui::Growth::Restart:
+                               for (auto& surface : scene_.surfaces()) {
+                                   if (!scene_.selected || scene_.selected == surface->id()) surface->restartGrowth();
+                               }
+                               scene_.refreshOffsets();
+                               break;
+                       }
+                   },
+                   [&](const ui::SetCellsPerFrame& a) { cellsPerFrame_ = a.cells; },
+                   [&](const ui::SetGrowthBudget& a) { growthBudgetMs_ = std::clamp(a.ms, 0.25f, 1000.0f); },
+                   [&](const ui::SetColourByGrowth& a) { scene_.colourByGrowth = a.on; },
+                   [&](const ui::Select& a) { scene_.selected = a.id; },
+                   [&](const ui::SetVisible& a) {
+                       if (SurfaceStructure* s = scene_.find(a.id)) s->style().visible = a.visible;
+                   },
+                   [&](const ui::Isolate& a) {
+                       for (auto& surface : scene_.surfaces()) surface->style().visible = surface->id() == a.id;
+                       scene_.selected = a.id;
+                   },
+                   [&](const ui::ShowAll&) {
+                       for (auto& surface : scene_.surfaces()) surface->style().visible = true;
+                   },
+                   [&](const ui::Delete& a) { scene_.remove(a.id); },
+                   [&](const ui::Export& a) { exportSurface(a.id, a.path); },
+                   [&](const ui::SetColour& a) {
+                       if (SurfaceStructure* s = scene_.find(a.id)) s->style().colour = toVec3(a.colour);
+                   },
+                   [&](const ui::SetOffset& a) {
+                       if (SurfaceStructure* s = scene_.find(a.id)) {
+                           s->userOffset = toVec3(a.offset);
+                           scene_.refreshOffsets();
+                       }
+                   },
+                   [&](const ui::SetExplode& a) { scene_.setExplode(a.factor); },
+                   [&](const ui::SetWireframe& a) { scene_.wireframe = a.on; },
+                   [&](const ui::SetBoundingBox& a) { scene_.boundingBox = a.on; },
+                   [&](const ui::FrameSelection&) { frameCamera(true); },
+                   [&](const ui::FrameAll&) { frameCamera(false); },
+               },
+               action);
+}
+
+void Viewer::applyKey(KeyCommand key) {
+    const std::optional<std::uint32_t> selected = scene_.selected;
+    switch (key) {
+        case KeyCommand::FrameSelection: apply(ui::FrameSelection{}); break;
+        case KeyCommand::FrameAll: apply(ui::FrameAll{}); break;
+        case KeyCommand::Deselect: apply(ui::Select{std::nullopt}); break;
+        case KeyCommand::PlayPause: apply(ui::Growth{playing_ ? ui::Growth::Pause : ui::Growth::Play}); break;
+        case KeyCommand::Step: apply(ui::Growth{ui::Growth::Step}); break;
+        case KeyCommand::ShowAll: apply(ui::ShowAll{}); break;
+        case KeyCommand::ToggleWireframe: apply(ui::SetWireframe{!scene_.wireframe}); break;
+        case KeyCommand::ToggleGrowthColour: apply(ui::SetColourByGrowth{!scene_.colourByGrowth}); break;
+        case KeyCommand::HideSelected:
+            if (selected) apply(ui::SetVisible{*selected, false});
+            break;
+        case KeyCommand::IsolateSelected:
+            if (selected) apply(ui::Isolate{*selected});
+            break;
+        case KeyCommand::DeleteSelected:
+            if (selected) apply(ui::Delete{*selected});
+            break;
+        case KeyCommand::Quit: quit_ = true; break;
+        case KeyCommand::Screenshot: {
+            screenshotPath_ = "isotrack_screenshot_" + std::to_string(++screenshots_) + ".png";
+            status("screenshot: " + *screenshotPath_);
+            break;
+        }
+        case KeyCommand::ExportSelected:
+            if (selected) apply(ui::Export{*selected, ui::exportPath("surface_{id}.ply", *selected)});
+            break;
+    }
+}
+
+void Viewer::frameCamera(bool selectionOnly) {
+    render::Bounds bounds = scene_.drawBounds();
+    const SurfaceStructure* selected = selectionOnly ? scene_.selection() : nullptr;
+    if (selected != nullptr && selected->mesh().triangleCount() > 0) {
+        const SurfaceStats& stats = selected->stats();
+        for (int axis = 0; axis < 3; ++axis) {
+            bounds.min[axis] = static_cast<float>(stats.boundsMin[axis]) + selected->offset()[axis];
+            bounds.max[axis] = static_cast<float>(stats.boundsMax[axis]) + selected->offset()[axis];
+        }
+    }
+    camera_ = frameKeepingAngles(camera_, bounds);
+}
+
+void Viewer::exportSurface(std::uint32_t id, const std::string& path) {
+    const SurfaceStructure* surface = scene_.find(id);
+    if (surface == nullptr) return;
+    writePly(path, surface->mesh());
+    status("surface " + std::to_string(id) + ": wrote " + std::to_string(surface->mesh().triangleCount()) +
+           " triangles to " + path);
+}
+
+}  // namespace isotrack::viewer

@@ -1,0 +1,143 @@
+// What the viewer reports: the panel's plain state, memory, the --json summary
+// and screenshots.
+#include "gl/framebuffer.h"
+#include "isotrack/fields.h"
+#include "render/image.h"
+#include "viewer/memory.h"
+#include "viewer/viewer.h"
+
+namespace isotrack::viewer {
+
+namespace {
+
+// The box's 24 line vertices.
+constexpr std::size_t kBoxBytes = 24 * 3 * sizeof(float);
+
+}  // namespace
+
+std::size_t Viewer::cpuBytes() const { return scene_.cpuVolumeBytes() + scene_.cpuMeshBytes() + tableBytes(); }
+
+std::size_t Viewer::gpuOtherBytes() const {
+    return picker_.gpuBytes() + viewCache_.gpuBytes() + kBoxBytes + Window::imguiFontBytes();
+}
+
+std::size_t Viewer::gpuBytes() const { return scene_.gpuSurfaceBytes() + gpuOtherBytes(); }
+
+nlohmann::json Viewer::memoryJson() const {
+    return {{"cpu_bytes", cpuBytes()},
+            {"gpu_bytes", gpuBytes()},
+            {"rss_bytes", residentBytes()},
+            {"surfaces", scene_.surfaces().size()},
+            {"frame", profiler_.frames()}};
+}
+
+ui::PanelState Viewer::panelState() const {
+    ui::PanelState state;
+    state.displayWidth = windowWidth_;
+    state.displayHeight = windowHeight_;
+    for (const FieldInfo& field : builtinFields()) {
+        state.data.fields.push_back(ui::FieldChoice{field.name, field.defaultSize, field.description});
+    }
+    scene_.buildUI(state);
+
+    ui::ExtractionState& extraction = state.extraction;
+    extraction.iso = currentIso();
+    extraction.table = table_ == TableKind::Classic ? ui::Table::Classic : ui::Table::Consistent;
+    extraction.method = method_;
+    const WorkerProgress progress = worker_.progress();
+    extraction.busy = progress.busy;
+    extraction.busyWhat = progress.what;
+    extraction.busySeconds = progress.seconds;
+    extraction.fraction = progress.fraction;
+    extraction.lastMs = lastExtractMs_;
+    extraction.error = extractionError_;
+
+    ui::GrowthState& growth = state.growth;
+    growth.playing = playing_;
+    growth.cellsPerFrame = cellsPerFrame_;
+    growth.budgetMs = growthBudgetMs_;
+    for (const auto& surface : scene_.surfaces()) {
+        if (!surface->growing()) continue;
+        growth.active = true;
+        growth.triangles += surface->mesh().triangleCount();
+    }
+    for (const ui::SurfaceRow& row : state.surfaces) {
+        if (row.growing) growth.cellsVisited += row.cellsVisited;
+    }
+
+    ui::StatsState& stats = state.stats;
+    stats.deterministic = options_.deterministic;
+    stats.fps = profiler_.fps();
+    stats.frameMs = profiler_.lastFrameMs();
+    stats.frameTimesMs = profiler_.history();
+    stats.inputMs =
+        profiler_.lastStageMs(Stage::Input) + profiler_.lastStageMs(Stage::Script) + profiler_.lastStageMs(Stage::Pick);
+    stats.uiMs = profiler_.lastStageMs(Stage::Ui);
+    stats.extractMs = profiler_.lastStageMs(Stage::Extract);
+    stats.uploadMs = profiler_.lastStageMs(Stage::Upload);
+    stats.drawMs = profiler_.lastStageMs(Stage::Draw);
+    stats.presentMs = profiler_.lastStageMs(Stage::Present);
+    stats.gpuMs = profiler_.lastGpuMs();
+    stats.cpuVolumeBytes = scene_.cpuVolumeBytes();
+    stats.cpuMeshBytes = scene_.cpuMeshBytes();
+    stats.cpuTableBytes = tableBytes();
+    stats.gpuSurfaceBytes = scene_.gpuSurfaceBytes();
+    stats.gpuOtherBytes = gpuOtherBytes();
+    stats.rssBytes = options_.deterministic ? 0 : residentBytes();
+    stats.renderer = window_.info().renderer;
+    stats.frames = profiler_.frames();
+    state.message = status_;
+    return state;
+}
+
+nlohmann::json Viewer::summary() const {
+    nlohmann::json surfaces = nlohmann::json::array();
+    for (const auto& surface : scene_.surfaces()) {
+        const Mesh& mesh = surface->mesh();
+        surfaces.push_back({{"id", surface->id()},
+                            {"triangles", mesh.triangleCount()},
+                            {"vertices", mesh.vertices.size()},
+                            {"bytes", surface->cpuBytes()},
+                            {"gpu_bytes", surface->gpuBytes()},
+                            {"cells_visited", surface->stats().cellsVisited},
+                            {"area", surface->stats().area},
+                            {"closed", surface->stats().closed},
+                            {"growing", surface->growing()},
+                            {"tracked", surface->tracked()},
+                            {"visible", surface->style().visible}});
+    }
+    nlohmann::json summary = {
+        {"source", scene_.volume() ? scene_.volume()->source.text : ""},
+        {"isovalue", currentIso()},
+        {"table", tableKindName(table_)},
+        {"method", ui::methodName(method_)},
+        {"surfaces", surfaces},
+        {"cpu_bytes", cpuBytes()},
+        {"cpu_bytes_detail",
+         {{"volume", scene_.cpuVolumeBytes()}, {"meshes", scene_.cpuMeshBytes()}, {"tables", tableBytes()}}},
+        {"gpu_bytes", gpuBytes()},
+        {"gpu_bytes_detail",
+         {{"surfaces", scene_.gpuSurfaceBytes()},
+          {"pick_buffer", picker_.gpuBytes()},
+          {"view_image", viewCache_.gpuBytes()},
+          {"box", kBoxBytes},
+          {"font_atlas", Window::imguiFontBytes()}}},
+        {"rss_bytes", residentBytes()},
+        {"frames", profiler_.frames()},
+        {"median_frame_ms", profiler_.medianFrameMs()},
+        {"extraction_ms", lastExtractMs_},
+        {"gpu_timer_queries", profiler_.gpuTimersAvailable()},
+        {"renderer", window_.info().renderer},
+        {"window", {framebufferWidth_, framebufferHeight_}},
+        {"checkpoints", checkpoints_},
+        {"picks", picks_},
+    };
+    return summary;
+}
+
+void Viewer::writeScreenshot(const std::string& path) const {
+    const std::vector<std::uint8_t> pixels = gl::Framebuffer::readDefaultRgba(framebufferWidth_, framebufferHeight_);
+    render::writePng(render::imageFromBottomUp(framebufferWidth_, framebufferHeight_, pixels), path);
+}
+
+}  // namespace isotrack::viewer

@@ -1,0 +1,84 @@
+// The panel is plain state in, actions out: it builds with an ImGui context and
+// no renderer backend, no window and no GL, and asks for nothing by itself.
+#include <imgui.h>
+
+#include <catch2/catch.hpp>
+
+#include "ui/format.h"
+#include "ui/panel.h"
+
+using namespace isotrack;
+
+namespace {
+
+struct HeadlessImGui {
+    HeadlessImGui() {
+        ImGui::CreateContext();
+        ImGuiIO& io = ImGui::GetIO();
+        io.IniFilename = nullptr;
+        io.DisplaySize = ImVec2(960.0f, 600.0f);
+        io.DeltaTime = 1.0f / 60.0f;
+        unsigned char* pixels = nullptr;
+        int width = 0, height = 0;
+        io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);  // a font atlas, never uploaded
+    }
+    ~HeadlessImGui() { ImGui::DestroyContext(); }
+};
+
+ui::PanelState busyState() {
+    ui::PanelState state;
+    state.data.fields = {{"sphere", 128, "a sphere"}, {"blobs", 128, "metaballs"}};
+    state.data.source = "blobs:64";
+    state.data.loaded = true;
+    state.data.dims = {64, 64, 64};
+    state.data.scalarType = "float32";
+    state.data.rangeMax = 1.0;
+    state.data.histogram.assign(128, 10.0f);
+    state.extraction.iso = 0.25;
+    state.extraction.busy = true;
+    state.extraction.busyWhat = "every surface";
+    state.extraction.fraction = 0.4f;
+    state.growth.active = true;
+    for (std::uint32_t id = 0; id < 300; ++id) {
+        ui::SurfaceRow row;
+        row.id = id;
+        row.triangles = 1000 - id;
+        state.surfaces.push_back(row);
+    }
+    state.selected = 7;
+    state.stats.frameTimesMs.assign(300, 16.0f);
+    state.message = "something happened";
+    return state;
+}
+
+}  // namespace
+
+TEST_CASE("the panel builds from plain state and records no actions by itself", "[viewer][ui]") {
+    const HeadlessImGui imgui;
+    ui::Panel panel;
+    std::vector<ui::Action> actions;
+    for (int frame = 0; frame < 3; ++frame) {
+        ImGui::NewFrame();
+        panel.build(busyState(), actions);
+        ImGui::Render();
+    }
+    CHECK(actions.empty());
+    CHECK(ImGui::GetDrawData()->TotalVtxCount > 0);
+
+    ImGui::NewFrame();
+    panel.build(ui::PanelState{}, actions);  // nothing loaded yet
+    ImGui::Render();
+    CHECK(actions.empty());
+}
+
+TEST_CASE("panel text helpers", "[viewer][ui]") {
+    CHECK(ui::exportPath("surface_{id}.ply", 42) == "surface_42.ply");
+    CHECK(ui::exportPath("a{id}_{id}.ply", 3) == "a3_3.ply");
+    CHECK(ui::formatBytes(512) == "512 B");
+    CHECK(ui::formatBytes(1536) == "1.5 KB");
+    CHECK(ui::formatBytes(3 * 1024 * 1024) == "3.0 MB");
+    CHECK(ui::formatMs(12.345, false) == "12.3 ms");
+    CHECK(ui::formatMs(12.345, true) == "--");
+    CHECK(ui::formatCount(1234567) == "1,234,567");
+    CHECK(std::string(ui::methodName(ui::Method::Exhaustive)) == "mc");
+}

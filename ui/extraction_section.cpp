@@ -1,0 +1,109 @@
+// Extraction (isovalue, table, method) and growth (the surface being tracked).
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "ui/sections.h"
+
+namespace isotrack::ui {
+namespace {
+
+void progress(const ExtractionState& extraction, bool frozen) {
+    if (!extraction.busy) {
+        ImGui::Text("last extraction %s", formatMs(extraction.lastMs, frozen).c_str());
+        return;
+    }
+    static const char kSpinner[] = "|/-\\";
+    const int turn = frozen ? 0 : static_cast<int>(extraction.busySeconds * 8.0) % 4;
+    char label[96];
+    if (frozen) {
+        std::snprintf(label, sizeof(label), "%c %s", kSpinner[turn], extraction.busyWhat.c_str());
+    } else {
+        std::snprintf(label, sizeof(label), "%c %s %.1f s", kSpinner[turn], extraction.busyWhat.c_str(),
+                      extraction.busySeconds);
+    }
+    if (extraction.fraction >= 0.0f && !frozen) {
+        ImGui::ProgressBar(std::min(extraction.fraction, 1.0f), ImVec2(-1.0f, 0.0f), label);
+    } else {
+        ImGui::TextUnformatted(label);
+    }
+}
+
+}  // namespace
+
+void extractionSection(const PanelState& state, std::vector<Action>& actions) {
+    const ExtractionState& extraction = state.extraction;
+    const DataState& data = state.data;
+    double iso = extraction.iso;
+    const double low = data.loaded ? data.rangeMin : 0.0, high = data.loaded ? data.rangeMax : 1.0;
+    if (ImGui::SliderScalar("isovalue", ImGuiDataType_Double, &iso, &low, &high, "%.5g")) {
+        actions.push_back(SetIso{iso});
+    }
+
+    int table = extraction.table == Table::Classic ? 1 : 0;
+    ImGui::TextUnformatted("table");
+    ImGui::SameLine();
+    if (ImGui::RadioButton("consistent", &table, 0)) actions.push_back(SetTable{Table::Consistent});
+    ImGui::SameLine();
+    if (ImGui::RadioButton("classic", &table, 1)) actions.push_back(SetTable{Table::Classic});
+
+    int method = static_cast<int>(extraction.method);
+    if (ImGui::RadioButton("exhaustive", &method, static_cast<int>(Method::Exhaustive))) {
+        actions.push_back(SetMethod{Method::Exhaustive});
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("marching cubes: every cell, one mesh");
+    ImGui::SameLine();
+    if (ImGui::RadioButton("every surface", &method, static_cast<int>(Method::All))) {
+        actions.push_back(SetMethod{Method::All});
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("each connected surface on its own");
+    ImGui::SameLine();
+    if (ImGui::RadioButton("track click", &method, static_cast<int>(Method::Track))) {
+        actions.push_back(SetMethod{Method::Track});
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("click in the view: the surface there grows from the click");
+    progress(extraction, state.stats.deterministic);
+    if (!extraction.error.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+        ImGui::TextWrapped("%s", extraction.error.c_str());
+        ImGui::PopStyleColor();
+    }
+}
+
+void growthSection(const PanelState& state, std::vector<Action>& actions) {
+    const GrowthState& growth = state.growth;
+    if (growth.playing) {
+        if (ImGui::Button("Pause")) actions.push_back(Growth{Growth::Pause});
+    } else {
+        if (ImGui::Button("Play")) actions.push_back(Growth{Growth::Play});
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Step")) actions.push_back(Growth{Growth::Step});
+    ImGui::SameLine();
+    if (ImGui::Button("Restart")) actions.push_back(Growth{Growth::Restart});
+    ImGui::SameLine();
+    bool colourByGrowth = growth.colourByGrowth;
+    if (ImGui::Checkbox("growth order", &colourByGrowth)) actions.push_back(SetColourByGrowth{colourByGrowth});
+
+    int cells = growth.cellsPerFrame;
+    ImGui::SetNextItemWidth(110.0f);
+    if (ImGui::InputInt("cells/frame", &cells, 1000, 10000)) actions.push_back(SetCellsPerFrame{std::max(cells, 0)});
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("0: grow for a time budget per frame instead");
+    if (growth.cellsPerFrame == 0) {
+        ImGui::SameLine();
+        float budget = growth.budgetMs;
+        ImGui::SetNextItemWidth(70.0f);
+        if (ImGui::SliderFloat("ms/frame", &budget, 1.0f, 32.0f, "%.0f")) actions.push_back(SetGrowthBudget{budget});
+    }
+    if (growth.active) {
+        ImGui::Text("growing: %s cells, %s triangles", formatCount(growth.cellsVisited).c_str(),
+                    formatCount(growth.triangles).c_str());
+    } else if (state.extraction.method == Method::Track) {
+        ImGui::TextDisabled("click in the view: the surface there grows");
+    } else {
+        ImGui::TextDisabled("ctrl-click a surface to grow it");
+    }
+}
+
+}  // namespace isotrack::ui

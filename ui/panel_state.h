@@ -1,0 +1,101 @@
+#pragma once
+// What the panel shows: plain values the viewer fills in every frame. The panel
+// reads this and nothing else; it owns no GL objects, volumes or meshes.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace isotrack::ui {
+
+enum class Method { Exhaustive, Track, All };  // "mc", "track", "all"
+enum class Table { Consistent, Classic };
+
+const char* methodName(Method method);  // "mc", "track", "all"
+const char* tableName(Table table);     // "consistent", "classic"
+
+struct FieldChoice {
+    std::string name;
+    int defaultSize = 0;
+    std::string description;
+};
+
+struct DataState {
+    std::vector<FieldChoice> fields;
+    std::string source;  // file path or field spec; empty before the first load
+    bool loaded = false;
+    std::array<int, 3> dims{0, 0, 0};
+    std::string scalarType;
+    double rangeMin = 0.0, rangeMax = 1.0;
+    std::vector<float> histogram;  // sample counts per bin, bins evenly across [rangeMin, rangeMax]
+};
+
+struct ExtractionState {
+    double iso = 0.0;
+    Table table = Table::Consistent;
+    Method method = Method::All;
+    bool busy = false;         // the worker is loading or extracting
+    std::string busyWhat;      // e.g. "extracting every surface"
+    double busySeconds = 0.0;  // elapsed
+    float fraction = -1.0f;    // estimated completion 0..1, or < 0 when unknown
+    double lastMs = 0.0;       // the last finished extraction (worker time)
+    std::string error;         // the last failure, shown until the next success
+};
+
+struct GrowthState {
+    bool active = false;  // a surface is growing
+    bool playing = true;
+    int cellsPerFrame = 0;  // 0: a time budget per frame instead
+    float budgetMs = 4.0f;
+    bool colourByGrowth = false;
+    std::size_t cellsVisited = 0;  // by the growing surfaces so far
+    std::size_t triangles = 0;
+};
+
+struct SurfaceRow {
+    std::uint32_t id = 0;  // stable while the surface exists
+    std::array<float, 3> colour{0.8f, 0.8f, 0.8f};
+    bool visible = true;
+    bool growing = false;
+    bool closed = false;
+    std::array<float, 3> offset{0.0f, 0.0f, 0.0f};  // moved by the user (explode comes on top)
+    std::size_t triangles = 0, vertices = 0, cellsVisited = 0;
+    std::size_t cpuBytes = 0, gpuBytes = 0;
+    double area = 0.0;
+};
+
+struct StatsState {
+    bool deterministic = false;  // timings frozen (shown as "--") for reproducible screenshots
+    double fps = 0.0;
+    double frameMs = 0.0;
+    std::vector<float> frameTimesMs;  // oldest first, the last few hundred frames
+    // The last frame's stages, CPU milliseconds, and the GPU's time for the 3D draw (< 0: unknown).
+    double inputMs = 0, uiMs = 0, extractMs = 0, uploadMs = 0, drawMs = 0, presentMs = 0, gpuMs = -1;
+    std::size_t cpuVolumeBytes = 0, cpuMeshBytes = 0, cpuTableBytes = 0;
+    std::size_t gpuSurfaceBytes = 0, gpuOtherBytes = 0;
+    std::size_t rssBytes = 0;
+    std::string renderer;  // GL_RENDERER
+    std::size_t frames = 0;
+};
+
+struct ViewState {
+    float explode = 0.0f;  // surfaces pulled from the volume's centre by this factor
+    bool wireframe = false;
+    bool boundingBox = true;
+};
+
+struct PanelState {
+    DataState data;
+    ExtractionState extraction;
+    GrowthState growth;
+    std::vector<SurfaceRow> surfaces;
+    std::optional<std::uint32_t> selected;  // surface id
+    StatsState stats;
+    ViewState view;
+    std::string message;                          // the last thing that went wrong or was done (export, pick)
+    int displayWidth = 960, displayHeight = 600;  // the window, in pixels
+};
+
+}  // namespace isotrack::ui
