@@ -48,6 +48,7 @@ struct Extraction {
     std::optional<std::size_t> cellsVisited;
     nlohmann::json surfaces = nlohmann::json::array();
     std::vector<std::string> surfaceFiles;  // for --out-dir
+    std::size_t triangles = 0, vertices = 0, meshBytes = 0;  // of every surface together
     std::vector<double> seconds;  // one per run
     std::size_t residentBefore = 0, residentPeak = 0;  // bytes, around the first run
 };
@@ -97,6 +98,12 @@ std::vector<std::string> writeSurfaces(const ExtractOptions& options, const std:
     return files;
 }
 
+void countMesh(Extraction& out) {
+    out.triangles = out.mesh.triangleCount();
+    out.vertices = out.mesh.vertices.size();
+    out.meshBytes = out.mesh.byteSize();
+}
+
 // One run of the chosen method; only extraction is timed.
 Extraction extractOnce(const ExtractOptions& options, const Source& source, TableKind table) {
     using Clock = std::chrono::steady_clock;
@@ -105,6 +112,7 @@ Extraction extractOnce(const ExtractOptions& options, const Source& source, Tabl
     if (options.method == "mc") {
         out.mesh = marchingCubes(source.volume, source.iso, table, options.threads);
         out.seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+        countMesh(out);
         return out;
     }
     if (options.method == "track") {
@@ -115,6 +123,7 @@ Extraction extractOnce(const ExtractOptions& options, const Source& source, Tabl
         out.cellsVisited = surface.stats.cellsVisited;
         out.surfaces.push_back(surfaceJson(surface.stats));
         out.mesh = std::move(surface.mesh);
+        countMesh(out);
         return out;
     }
     const std::vector<Surface> surfaces = extractAllSurfaces(source.volume, source.iso, table, options.threads);
@@ -124,7 +133,11 @@ Extraction extractOnce(const ExtractOptions& options, const Source& source, Tabl
     for (std::size_t i = 0; i < surfaces.size(); ++i) {
         cells += surfaces[i].stats.cellsVisited;
         out.surfaces.push_back(surfaceJson(surfaces[i].stats));
-        appendSurface(surfaces[i], static_cast<std::int32_t>(i), out);
+        // One labelled mesh is only needed for --out; the counts come from the surfaces.
+        if (!options.out.empty()) appendSurface(surfaces[i], static_cast<std::int32_t>(i), out);
+        out.triangles += surfaces[i].mesh.triangleCount();
+        out.vertices += surfaces[i].mesh.vertices.size();
+        out.meshBytes += surfaces[i].mesh.byteSize();
     }
     out.cellsVisited = cells;
     if (!options.outDir.empty()) out.surfaceFiles = writeSurfaces(options, surfaces);
@@ -188,14 +201,13 @@ int runExtract(const ExtractOptions& options) {
     const Dims& dims = source.volume.dims();
 
     const Extraction result = extract(options, source, table);
-    const Mesh& mesh = result.mesh;
     const double seconds = median(result.seconds);
-    if (!options.out.empty()) writeMesh(options.out, mesh, options.method == "all" ? &result.faceComponent : nullptr);
+    if (!options.out.empty()) writeMesh(options.out, result.mesh, options.method == "all" ? &result.faceComponent : nullptr);
 
     const std::size_t cellsTotal =
         std::size_t(std::max(dims[0] - 1, 0)) * std::size_t(std::max(dims[1] - 1, 0)) * std::size_t(std::max(dims[2] - 1, 0));
     // The same triangles as an unindexed soup of positions and normals.
-    const std::size_t soupBytes = mesh.triangleCount() * 3 * sizeof(Vertex);
+    const std::size_t soupBytes = result.triangles * 3 * sizeof(Vertex);
     if (options.json) {
         nlohmann::json report{
             {"source", source.name},
@@ -205,17 +217,17 @@ int runExtract(const ExtractOptions& options) {
             {"dims", {dims[0], dims[1], dims[2]}},
             {"spacing", source.volume.spacing()},
             {"scalar_type", scalarTypeName(source.volume.type())},
-            {"triangles", mesh.triangleCount()},
-            {"vertices", mesh.vertices.size()},
+            {"triangles", result.triangles},
+            {"vertices", result.vertices},
             {"components", result.components ? nlohmann::json(*result.components) : nlohmann::json(nullptr)},
             {"cells_visited", result.cellsVisited ? nlohmann::json(*result.cellsVisited) : nlohmann::json(nullptr)},
             {"cells_total", cellsTotal},
             {"seconds", seconds},
             {"seconds_all", result.seconds},
             {"threads", options.method == "track" ? 1 : options.threads},
-            {"mesh_bytes", mesh.byteSize()},
+            {"mesh_bytes", result.meshBytes},
             {"soup_bytes", soupBytes},
-            {"mesh_to_soup", soupBytes ? double(mesh.byteSize()) / double(soupBytes) : 0.0},
+            {"mesh_to_soup", soupBytes ? double(result.meshBytes) / double(soupBytes) : 0.0},
             {"resident_before_bytes", result.residentBefore},
             {"peak_resident_bytes", result.residentPeak},
             {"peak_above_start_bytes", result.residentPeak > result.residentBefore ? result.residentPeak - result.residentBefore : 0},
@@ -226,7 +238,7 @@ int runExtract(const ExtractOptions& options) {
         if (options.method != "mc") report["surfaces"] = result.surfaces;
         std::printf("%s\n", report.dump().c_str());
     } else {
-        std::printf("%s: %zu triangles, %zu vertices", source.name.c_str(), mesh.triangleCount(), mesh.vertices.size());
+        std::printf("%s: %zu triangles, %zu vertices", source.name.c_str(), result.triangles, result.vertices);
         if (result.components) std::printf(" in %zu surface%s", *result.components, *result.components == 1 ? "" : "s");
         std::printf(" at iso %g (%s table, method %s) in %.3f ms%s%s\n", source.iso, tableKindName(table),
                     options.method.c_str(), seconds * 1e3, options.out.empty() ? "" : " -> ", options.out.c_str());

@@ -14,6 +14,7 @@
 
 #include "isotrack/marching_cubes.h"
 #include "isotrack/tracking.h"
+#include "surface_measure.h"
 
 namespace isotrack {
 namespace {
@@ -48,11 +49,6 @@ public:
 private:
     std::vector<std::uint32_t> parent_;
 };
-
-std::uint64_t edgeOrder(const GridEdge& e, const Dims& dims) {
-    return ((std::uint64_t(e.z) * std::uint64_t(dims[1]) + std::uint64_t(e.y)) * std::uint64_t(dims[0]) + std::uint64_t(e.x)) * 3 +
-           std::uint64_t(e.axis);
-}
 
 }  // namespace
 
@@ -106,29 +102,15 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             s.stats.boundsMin[k] = std::min(s.stats.boundsMin[k], double(vertex.position[k]));
             s.stats.boundsMax[k] = std::max(s.stats.boundsMax[k], double(vertex.position[k]));
         }
-        if (!s.stats.touchesBorder) {
-            const GridEdge e = mesh.vertexEdges[v];
-            const int p[3] = {e.x, e.y, e.z};
-            for (int k = 0; k < 3; ++k) {
-                if (k != e.axis && (p[k] == 0 || p[k] == dims[k] - 1)) s.stats.touchesBorder = true;
-            }
-        }
+        if (!s.stats.touchesBorder) s.stats.touchesBorder = detail::edgeOnVolumeBorder(mesh.vertexEdges[v], dims);
     }
-    std::vector<double> signedVolume(count, 0.0);
+    std::vector<detail::TriangleMeasure> measures(count);
     for (std::size_t t = 0; t < triangleCount; ++t) {
         const std::uint32_t* v = &mesh.indices[3 * t];
         const std::uint32_t c = component[v[0]];
         Surface& s = surfaces[c];
         s.mesh.indices.insert(s.mesh.indices.end(), {localIndex[v[0]], localIndex[v[1]], localIndex[v[2]]});
-        // Per triangle in float (edges are a voxel long), summed in double.
-        const float* a = mesh.vertices[v[0]].position;
-        const float* b = mesh.vertices[v[1]].position;
-        const float* d = mesh.vertices[v[2]].position;
-        const float e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-        const float e2[3] = {d[0] - a[0], d[1] - a[1], d[2] - a[2]};
-        const float n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
-        s.stats.area += 0.5 * double(std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]));
-        signedVolume[c] += (double(a[0]) * n[0] + double(a[1]) * n[1] + double(a[2]) * n[2]) / 6.0;
+        measures[c].add(mesh.vertices[v[0]].position, mesh.vertices[v[1]].position, mesh.vertices[v[2]].position);
     }
     for (std::size_t c = 0; c < count; ++c) {
         SurfaceStats& stats = surfaces[c].stats;
@@ -137,14 +119,15 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         stats.bytes = surfaces[c].mesh.byteSize();
         stats.cellsVisited = pieces[c];
         // The consistent table leaves no holes: a surface is closed unless the border cuts it.
-        stats.closed = table == TableKind::Consistent ? !stats.touchesBorder : measureSurface(surfaces[c].mesh, volume).closed;
-        if (stats.closed) stats.enclosedVolume = std::abs(signedVolume[c]);
+        stats.area = measures[c].area;
+        stats.closed = table == TableKind::Consistent ? !stats.touchesBorder : detail::meshIsClosed(surfaces[c].mesh);
+        if (stats.closed) stats.enclosedVolume = std::abs(measures[c].signedVolume);
     }
 
     // Largest first; equal sizes by their first grid edge in memory order, as trackAllSurfaces.
     auto firstEdge = [&](std::size_t c) {
         std::uint64_t first = std::numeric_limits<std::uint64_t>::max();
-        for (const GridEdge e : surfaces[c].mesh.vertexEdges) first = std::min(first, edgeOrder(e, dims));
+        for (const GridEdge e : surfaces[c].mesh.vertexEdges) first = std::min(first, detail::edgeOrder(e, dims));
         return first;
     };
     std::vector<std::size_t> order(count);

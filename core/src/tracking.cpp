@@ -26,6 +26,7 @@
 #include "edge_vertex.h"
 #include "flat_hash.h"
 #include "sparse_blocks.h"
+#include "surface_measure.h"
 #include "isotrack/continuation.h"
 #include "isotrack/cube.h"
 #include "isotrack/errors.h"
@@ -35,7 +36,11 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-SurfaceStats measureTracked(const Mesh& mesh, const Volume& volume, TableKind table, bool leftVolume);
+// With the consistent table a tracked surface has no holes: it is closed exactly
+// when the volume's border does not cut it.
+SurfaceStats measureTracked(const Mesh& mesh, const Volume& volume, TableKind table) {
+    return measureSurface(mesh, volume, table == TableKind::Consistent);
+}
 
 // A cell piece waiting in the queue; it was marked when queued, so each piece is
 // queued once.
@@ -397,9 +402,8 @@ Surface trackSurface(const Volume& volume, double iso, const GridEdge& seed, Tab
     while (!tracker.done()) tracker.step(std::numeric_limits<std::size_t>::max());
     Surface surface;
     const std::size_t cells = tracker.cellsVisited();
-    const bool leftVolume = tracker.leftVolume();
     surface.mesh = tracker.takeMesh();
-    surface.stats = measureTracked(surface.mesh, volume, table, leftVolume);
+    surface.stats = measureTracked(surface.mesh, volume, table);
     surface.stats.cellsVisited = cells;
     surface.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return surface;
@@ -432,7 +436,7 @@ std::vector<Surface> trackAllSurfaces(const Volume& volume, double iso, TableKin
                     }
                     Surface surface;
                     surface.mesh = std::move(state.mesh);
-                    surface.stats = measureTracked(surface.mesh, volume, table, state.leftVolume);
+                    surface.stats = measureTracked(surface.mesh, volume, table);
                     surface.stats.cellsVisited = state.cellsVisited;
                     surface.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
                     surfaces.push_back(std::move(surface));
@@ -443,7 +447,7 @@ std::vector<Surface> trackAllSurfaces(const Volume& volume, double iso, TableKin
     // Discovery order is the order of each surface's first cell; break ties by first grid edge.
     auto firstEdge = [&](const Surface& s) {
         std::uint64_t first = std::numeric_limits<std::uint64_t>::max();
-        for (const GridEdge e : s.mesh.vertexEdges) first = std::min(first, std::uint64_t(volume.index(e.x, e.y, e.z)) * 3 + std::uint64_t(e.axis));
+        for (const GridEdge e : s.mesh.vertexEdges) first = std::min(first, detail::edgeOrder(e, n));
         return first;
     };
     std::vector<std::pair<std::uint64_t, std::size_t>> keys;
@@ -461,48 +465,7 @@ std::vector<Surface> trackAllSurfaces(const Volume& volume, double iso, TableKin
 
 // ---- measurement ----------------------------------------------------------
 
-namespace {
-
-// Every directed side appears once and so does its reverse: no holes, no
-// non-manifold edges, consistent winding.
-bool isClosed(const Mesh& mesh) {
-    if (mesh.indices.empty()) return false;
-    detail::FlatHashMap sides(mesh.indices.size());
-    for (std::size_t i = 0; i < mesh.indices.size(); ++i) {
-        const std::size_t next = i % 3 == 2 ? i - 2 : i + 1;
-        if (!sides.insert(std::uint64_t(mesh.indices[i]) << 32 | mesh.indices[next])) return false;
-    }
-    for (std::size_t i = 0; i < mesh.indices.size(); ++i) {
-        const std::size_t next = i % 3 == 2 ? i - 2 : i + 1;
-        if (!sides.find(std::uint64_t(mesh.indices[next]) << 32 | mesh.indices[i])) return false;
-    }
-    return true;
-}
-
-SurfaceStats measure(const Mesh& mesh, const Volume& volume, std::optional<bool> knownClosed);
-
-// With the consistent table a tracked surface has no holes, so it is closed
-// exactly when it never reached the volume's border.
-SurfaceStats measureTracked(const Mesh& mesh, const Volume& volume, TableKind table, bool leftVolume) {
-    return measure(mesh, volume, table == TableKind::Consistent ? std::optional<bool>(!leftVolume) : std::nullopt);
-}
-
-}  // namespace
-
 SurfaceStats measureSurface(const Mesh& mesh, const Volume& volume, bool closedUnlessOnBorder) {
-    SurfaceStats stats = measure(mesh, volume, std::optional<bool>(true));
-    if (closedUnlessOnBorder) {
-        stats.closed = !stats.touchesBorder && !mesh.indices.empty();
-    } else {
-        stats.closed = isClosed(mesh);
-    }
-    if (!stats.closed) stats.enclosedVolume.reset();
-    return stats;
-}
-
-namespace {
-
-SurfaceStats measure(const Mesh& mesh, const Volume& volume, std::optional<bool> knownClosed) {
     SurfaceStats stats;
     stats.triangles = mesh.triangleCount();
     stats.vertices = mesh.vertices.size();
@@ -519,31 +482,21 @@ SurfaceStats measure(const Mesh& mesh, const Volume& volume, std::optional<bool>
             }
         }
     }
-    double area = 0.0, signedVolume = 0.0;
+    detail::TriangleMeasure measure;
     for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
         const std::uint32_t* idx = &mesh.indices[3 * t];
-        const float* a = mesh.vertices[idx[0]].position;
-        const float* b = mesh.vertices[idx[1]].position;
-        const float* c = mesh.vertices[idx[2]].position;
-        const double u[3] = {double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2]};
-        const double v[3] = {double(c[0]) - a[0], double(c[1]) - a[1], double(c[2]) - a[2]};
-        const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-        area += 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-        signedVolume += (double(a[0]) * n[0] + double(a[1]) * n[1] + double(a[2]) * n[2]) / 6.0;
+        measure.add(mesh.vertices[idx[0]].position, mesh.vertices[idx[1]].position, mesh.vertices[idx[2]].position);
     }
-    stats.area = area;
-    stats.closed = knownClosed ? *knownClosed && !mesh.indices.empty() : isClosed(mesh);
-    if (stats.closed) stats.enclosedVolume = std::abs(signedVolume);
-    const Dims& dims = volume.dims();
+    stats.area = measure.area;
     for (const GridEdge e : mesh.vertexEdges) {
-        const int p[3] = {e.x, e.y, e.z};
-        for (int k = 0; k < 3; ++k) {
-            if (k != e.axis && (p[k] == 0 || p[k] == dims[k] - 1)) stats.touchesBorder = true;
+        if (detail::edgeOnVolumeBorder(e, volume.dims())) {
+            stats.touchesBorder = true;
+            break;
         }
-        if (stats.touchesBorder) break;
     }
+    stats.closed = closedUnlessOnBorder ? !stats.touchesBorder && !mesh.indices.empty() : detail::meshIsClosed(mesh);
+    if (stats.closed) stats.enclosedVolume = std::abs(measure.signedVolume);
     return stats;
 }
 
-}  // namespace
 }  // namespace isotrack

@@ -1,0 +1,57 @@
+#pragma once
+// Measuring surfaces, shared by the tracker and by the labelled exhaustive pass.
+#include <cmath>
+#include <cstdint>
+
+#include "flat_hash.h"
+#include "isotrack/mesh.h"
+#include "isotrack/volume.h"
+
+namespace isotrack::detail {
+
+// True when the grid edge lies in one of the volume's boundary planes: a surface
+// through it is cut open by the border.
+inline bool edgeOnVolumeBorder(const GridEdge& e, const Dims& dims) {
+    const int p[3] = {e.x, e.y, e.z};
+    for (int k = 0; k < 3; ++k) {
+        if (k != e.axis && (p[k] == 0 || p[k] == dims[k] - 1)) return true;
+    }
+    return false;
+}
+
+// Grid edges in memory order, to break ties between surfaces the same way everywhere.
+inline std::uint64_t edgeOrder(const GridEdge& e, const Dims& dims) {
+    return ((std::uint64_t(e.z) * std::uint64_t(dims[1]) + std::uint64_t(e.y)) * std::uint64_t(dims[0]) + std::uint64_t(e.x)) * 3 +
+           std::uint64_t(e.axis);
+}
+
+// Area and signed enclosed volume (divergence theorem), triangle by triangle.
+struct TriangleMeasure {
+    double area = 0.0, signedVolume = 0.0;
+
+    void add(const float* a, const float* b, const float* c) {
+        const double u[3] = {double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2]};
+        const double v[3] = {double(c[0]) - a[0], double(c[1]) - a[1], double(c[2]) - a[2]};
+        const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+        area += 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        signedVolume += (double(a[0]) * n[0] + double(a[1]) * n[1] + double(a[2]) * n[2]) / 6.0;
+    }
+};
+
+// Every directed side appears once and so does its reverse: no holes, no
+// non-manifold edges, consistent winding.
+inline bool meshIsClosed(const Mesh& mesh) {
+    if (mesh.indices.empty()) return false;
+    FlatHashMap sides(mesh.indices.size());
+    for (std::size_t i = 0; i < mesh.indices.size(); ++i) {
+        const std::size_t next = i % 3 == 2 ? i - 2 : i + 1;
+        if (!sides.insert(std::uint64_t(mesh.indices[i]) << 32 | mesh.indices[next])) return false;
+    }
+    for (std::size_t i = 0; i < mesh.indices.size(); ++i) {
+        const std::size_t next = i % 3 == 2 ? i - 2 : i + 1;
+        if (!sides.find(std::uint64_t(mesh.indices[next]) << 32 | mesh.indices[i])) return false;
+    }
+    return true;
+}
+
+}  // namespace isotrack::detail
