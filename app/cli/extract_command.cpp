@@ -176,6 +176,7 @@ Extraction extract(const ExtractOptions& options, const Source& source, TableKin
             ResidentMemory::resetPeak();
             before = ResidentMemory::current();
         }
+        out = Extraction{};  // the previous run's mesh is freed first, as a re-extraction would
         out = extractOnce(run + 1 == options.repeat ? options : quiet, source, table);
         if (run == 0) peak = ResidentMemory::peak();
         seconds.push_back(out.seconds.front());

@@ -97,7 +97,7 @@ void SurfaceStructure::finishGrowth() {
 }
 
 bool SurfaceStructure::containsEdge(const GridEdge& edge) const {
-    const std::vector<PackedGridEdge>& edges = mesh().vertexEdges;
+    const Buffer<PackedGridEdge>& edges = mesh().vertexEdges;
     return std::any_of(edges.begin(), edges.end(), [&](const PackedGridEdge& e) { return GridEdge(e) == edge; });
 }
 

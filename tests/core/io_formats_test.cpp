@@ -326,7 +326,7 @@ TEST_CASE("OBJ export: v, vn and f v//vn that read back exactly, groups per comp
     writeMesh(dir.file("s.OBJ"), mesh);
     std::istringstream in(readFile(dir.file("s.OBJ")));
     std::vector<std::array<float, 3>> v, vn;
-    std::vector<std::uint32_t> faces;
+    Buffer<std::uint32_t> faces;
     for (std::string line; std::getline(in, line);) {
         std::istringstream words(line);
         std::string tag;

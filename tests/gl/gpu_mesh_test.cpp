@@ -23,7 +23,7 @@ void requireSameContents(const render::GpuMesh& gpu, const Mesh& mesh) {
     REQUIRE(gpu.vertexCount() == mesh.vertices.size());
     REQUIRE(gpu.indexCount() == mesh.indices.size());
     std::vector<Vertex> vertices(mesh.vertices.size());
-    std::vector<std::uint32_t> indices(mesh.indices.size());
+    Buffer<std::uint32_t> indices(mesh.indices.size());
     gpu.vertexBuffer().read(0, vertices.size() * sizeof(Vertex), vertices.data());
     gpu.indexBuffer().read(0, indices.size() * sizeof(std::uint32_t), indices.data());
     CHECK(std::memcmp(vertices.data(), mesh.vertices.data(), vertices.size() * sizeof(Vertex)) == 0);

@@ -3,9 +3,40 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
+#include <new>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace isotrack {
+
+// An allocator whose resize() leaves new elements of trivial types uninitialised
+// (default-initialised), so an extractor can size its buffers once and let the
+// threads that fill them be the first to touch their pages.
+template <class T>
+struct DefaultInitAllocator : std::allocator<T> {
+    template <class U>
+    struct rebind {
+        using other = DefaultInitAllocator<U>;
+    };
+    DefaultInitAllocator() = default;
+    template <class U>
+    DefaultInitAllocator(const DefaultInitAllocator<U>&) noexcept {}  // NOLINT(google-explicit-constructor)
+
+    template <class U>
+    void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
+        ::new (static_cast<void*>(p)) U;
+    }
+    template <class U, class... Args>
+    void construct(U* p, Args&&... args) {
+        std::allocator_traits<std::allocator<T>>::construct(static_cast<std::allocator<T>&>(*this), p, std::forward<Args>(args)...);
+    }
+};
+
+// The growable array meshes keep their buffers in.
+template <class T>
+using Buffer = std::vector<T, DefaultInitAllocator<T>>;
 
 struct Vertex {
     float position[3];
@@ -34,13 +65,13 @@ public:
 
 private:
     static constexpr std::uint64_t kMask = (std::uint64_t(1) << 20) - 1;
-    std::uint64_t bits_ = 0;
+    std::uint64_t bits_;  // uninitialised when default-constructed, as Buffer's resize relies on
 };
 
 struct Mesh {
-    std::vector<Vertex> vertices;
-    std::vector<std::uint32_t> indices;       // three per triangle, counter-clockwise seen from below
-    std::vector<PackedGridEdge> vertexEdges;  // per vertex, the grid edge it was computed on
+    Buffer<Vertex> vertices;
+    Buffer<std::uint32_t> indices;       // three per triangle, counter-clockwise seen from below
+    Buffer<PackedGridEdge> vertexEdges;  // per vertex, the grid edge it was computed on
 
     std::size_t triangleCount() const { return indices.size() / 3; }
     // What a GPU holds of the mesh: vertices and indices.
