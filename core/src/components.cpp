@@ -1,128 +1,212 @@
-// Every surface at once: the exhaustive pass, then its connected components.
+// Every surface at once: the exhaustive pass, labelled, then split.
 //
-// extractAllSurfaces runs the (parallel) exhaustive pass, which emits each
-// cell's triangles piece by piece and marks each piece's first triangle; a
-// union-find over the vertices of every triangle then labels the connected
-// surfaces, and one pass over vertices and one over triangles splits the mesh.
-// It yields exactly the surfaces trackAllSurfaces finds by tracking one surface
-// at a time (the tests hold them equal), at close to the cost of the exhaustive
-// pass alone, and with no per-voxel memory.
+// extractAllSurfaces runs the (parallel) exhaustive pass, which labels the
+// connected surfaces on the way (labelled_march.h) and marks each cell piece's
+// first triangle. The mesh is then split chunk by chunk in parallel: one pass
+// counts each surface's vertices and triangles per chunk, which gives every
+// chunk its ranges in every surface's buffers, and one pass copies. The largest
+// surface is not copied but compacted in place, keeping the exhaustive pass's
+// buffers (and their pages, already touched). It yields
+// exactly the surfaces trackAllSurfaces finds by tracking one surface at a time
+// (the tests hold them equal), with no per-voxel memory.
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numeric>
 
-#include "isotrack/marching_cubes.h"
 #include "isotrack/tracking.h"
+#include "labelled_march.h"
+#include "parallel.h"
 #include "surface_measure.h"
 
 namespace isotrack {
 namespace {
 
-class UnionFind {
-public:
-    explicit UnionFind(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0u); }
-
-    std::uint32_t find(std::uint32_t v) {
-        while (parent_[v] != v) v = parent_[v] = parent_[parent_[v]];
-        return v;
-    }
-
-    // Joins the sets of a triangle's corners, linking larger roots under smaller
-    // ones, so a root is its component's first vertex.
-    void uniteTriangle(const std::uint32_t* v) {
-        std::uint32_t a = find(v[0]);
-        const std::uint32_t b = find(v[1]);
-        if (a != b) a = link(a, b);
-        const std::uint32_t c = find(v[2]);
-        if (a != c) link(a, c);
-    }
-
-private:
-    std::uint32_t link(std::uint32_t a, std::uint32_t b) {
-        if (a < b) return parent_[b] = a;
-        return parent_[a] = b;
-    }
-
-public:
-
-private:
-    std::vector<std::uint32_t> parent_;
+// One thread's share of one surface.
+struct Share {
+    std::uint32_t vertices = 0, triangles = 0, pieces = 0;
+    bool touchesBorder = false;
+    std::size_t vertexBase = 0, triangleBase = 0;  // where the share starts in the surface's buffers
+    float boundsMin[3] = {INFINITY, INFINITY, INFINITY}, boundsMax[3] = {-INFINITY, -INFINITY, -INFINITY};
+    detail::TriangleMeasure measure;
 };
+
+// Consecutive chunks of the exhaustive pass, one range per thread: splitting
+// keeps one Share per surface per range.
+std::vector<detail::MarchedChunk> ranges(const std::vector<detail::MarchedChunk>& chunks, int threads) {
+    const std::size_t count = std::min(chunks.size(), std::size_t(std::max(1, threads)));
+    std::vector<detail::MarchedChunk> out(count);
+    for (std::size_t r = 0; r < count; ++r) {
+        const detail::MarchedChunk& first = chunks[chunks.size() * r / count];
+        const detail::MarchedChunk& last = chunks[chunks.size() * (r + 1) / count - 1];
+        out[r] = {first.vertexBegin, last.vertexEnd, first.triangleBegin, last.triangleEnd};
+    }
+    return out;
+}
 
 }  // namespace
 
 std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableKind table, int threads) {
-    std::vector<std::uint8_t> pieceStarts;
-    const Mesh mesh = marchingCubes(volume, iso, table, threads, &pieceStarts);
-    const std::size_t vertexCount = mesh.vertices.size(), triangleCount = mesh.triangleCount();
+    detail::LabelledMesh labelled = detail::marchLabelled(volume, iso, table, threads);
+    Mesh& mesh = labelled.mesh;
+    const std::vector<detail::MarchedChunk> parts = ranges(labelled.chunks, threads);
+    const std::vector<std::uint8_t>& pieceStarts = labelled.pieceStarts;
     const Dims& dims = volume.dims();
+    auto forParts = [&](auto&& fn) {
+        detail::parallelFor(int(parts.size()), threads, [&](int r) { fn(parts[std::size_t(r)], std::size_t(r)); });
+    };
 
-    UnionFind sets(vertexCount);
-    for (std::size_t t = 0; t < triangleCount; ++t) sets.uniteTriangle(&mesh.indices[3 * t]);
-    // Components numbered in order of their first vertex; each vertex's index in its component.
-    std::vector<std::uint32_t> component(vertexCount), localIndex(vertexCount);
-    std::vector<std::size_t> vertices;
-    for (std::uint32_t v = 0; v < vertexCount; ++v) {
-        const std::uint32_t root = sets.find(v);
-        if (root == v) {
-            component[v] = static_cast<std::uint32_t>(vertices.size());
-            vertices.push_back(0);
-        } else {
-            component[v] = component[root];
+    // Surfaces numbered in order of their roots (their first vertices): a root's
+    // number goes to `local` first, then every vertex's to `component`.
+    Buffer<std::uint32_t>& component = labelled.root;
+    Buffer<std::uint32_t> local(mesh.vertices.size());  // each vertex's index in its surface
+    std::vector<std::uint32_t> firstNumber(parts.size() + 1, 0);
+    forParts([&](const detail::MarchedChunk& part, std::size_t r) {
+        std::uint32_t roots = 0;
+        for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) roots += component[v] == v;
+        firstNumber[r + 1] = roots;
+    });
+    std::partial_sum(firstNumber.begin(), firstNumber.end(), firstNumber.begin());
+    const std::size_t count = firstNumber.back();
+    forParts([&](const detail::MarchedChunk& part, std::size_t r) {
+        std::uint32_t number = firstNumber[r];
+        for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
+            if (component[v] == v) local[v] = number++;
         }
-        localIndex[v] = static_cast<std::uint32_t>(vertices[component[v]]++);
-    }
-    const std::size_t count = vertices.size();
-    std::vector<std::size_t> triangles(count, 0), pieces(count, 0);
-    for (std::size_t t = 0; t < triangleCount; ++t) {
-        const std::uint32_t c = component[mesh.indices[3 * t]];
-        ++triangles[c];
-        pieces[c] += pieceStarts[t / 8] >> (t % 8) & 1u;
-    }
+    });
+    forParts([&](const detail::MarchedChunk& part, std::size_t) {
+        for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) component[v] = local[component[v]];
+    });
 
-    // One pass over vertices and one over triangles split the mesh and measure
-    // each surface on the way (bounds, border, area, enclosed volume).
+    // Each range's share of each surface, and each vertex's index within its share.
+    std::vector<std::vector<Share>> shares(parts.size(), std::vector<Share>(count));
+    forParts([&](const detail::MarchedChunk& part, std::size_t r) {
+        std::vector<Share>& share = shares[r];
+        for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) local[v] = share[component[v]].vertices++;
+        for (std::size_t t = part.triangleBegin; t < part.triangleEnd; ++t) {
+            Share& s = share[component[mesh.indices[3 * t]]];
+            ++s.triangles;
+            s.pieces += pieceStarts[t / 8] >> (t % 8) & 1u;
+        }
+    });
     std::vector<Surface> surfaces(count);
-    for (std::size_t c = 0; c < count; ++c) {
-        surfaces[c].mesh.vertices.reserve(vertices[c]);
-        surfaces[c].mesh.vertexEdges.reserve(vertices[c]);
-        surfaces[c].mesh.indices.reserve(3 * triangles[c]);
-        for (int k = 0; k < 3; ++k) {
-            surfaces[c].stats.boundsMin[k] = std::numeric_limits<double>::infinity();
-            surfaces[c].stats.boundsMax[k] = -std::numeric_limits<double>::infinity();
+    std::size_t largest = 0;
+    for (std::size_t k = 0; k < count; ++k) {
+        std::size_t vertices = 0, triangles = 0;
+        for (std::vector<Share>& share : shares) {
+            share[k].vertexBase = vertices;
+            share[k].triangleBase = triangles;
+            vertices += share[k].vertices;
+            triangles += share[k].triangles;
         }
+        surfaces[k].stats.vertices = vertices;
+        surfaces[k].stats.triangles = triangles;
+        if (triangles > surfaces[largest].stats.triangles) largest = k;
     }
-    for (std::uint32_t v = 0; v < vertexCount; ++v) {
-        Surface& s = surfaces[component[v]];
-        const Vertex& vertex = mesh.vertices[v];
-        s.mesh.vertices.push_back(vertex);
-        s.mesh.vertexEdges.push_back(mesh.vertexEdges[v]);
-        for (int k = 0; k < 3; ++k) {
-            s.stats.boundsMin[k] = std::min(s.stats.boundsMin[k], double(vertex.position[k]));
-            s.stats.boundsMax[k] = std::max(s.stats.boundsMax[k], double(vertex.position[k]));
+    for (std::size_t k = 0; k < count; ++k) {
+        if (k == largest) continue;  // it keeps the mesh's buffers
+        surfaces[k].mesh.vertices.resize(surfaces[k].stats.vertices);
+        surfaces[k].mesh.vertexEdges.resize(surfaces[k].stats.vertices);
+        surfaces[k].mesh.indices.resize(3 * surfaces[k].stats.triangles);
+    }
+    // Vertices out to their surfaces, measured on the way.
+    forParts([&](const detail::MarchedChunk& part, std::size_t r) {
+        std::vector<Share>& share = shares[r];
+        for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
+            const std::uint32_t k = component[v];
+            Share& s = share[k];
+            local[v] = static_cast<std::uint32_t>(local[v] + s.vertexBase);
+            const Vertex& vertex = mesh.vertices[v];
+            for (int a = 0; a < 3; ++a) {
+                s.boundsMin[a] = std::min(s.boundsMin[a], vertex.position[a]);
+                s.boundsMax[a] = std::max(s.boundsMax[a], vertex.position[a]);
+            }
+            if (!s.touchesBorder) s.touchesBorder = detail::edgeOnVolumeBorder(mesh.vertexEdges[v], dims);
+            if (k == largest) continue;
+            surfaces[k].mesh.vertices[local[v]] = vertex;
+            surfaces[k].mesh.vertexEdges[local[v]] = mesh.vertexEdges[v];
         }
-        if (!s.stats.touchesBorder) s.stats.touchesBorder = detail::edgeOnVolumeBorder(mesh.vertexEdges[v], dims);
+    });
+    // Triangles once every vertex has its index (a range's triangles use the next
+    // range's vertices too), measured on the way.
+    forParts([&](const detail::MarchedChunk& part, std::size_t r) {
+        std::vector<Share>& share = shares[r];
+        std::vector<std::size_t> cursor(count);
+        for (std::size_t k = 0; k < count; ++k) cursor[k] = 3 * share[k].triangleBase;
+        for (std::size_t t = part.triangleBegin; t < part.triangleEnd; ++t) {
+            const std::uint32_t* v = &mesh.indices[3 * t];
+            const std::uint32_t k = component[v[0]];
+            share[k].measure.add(mesh.vertices[v[0]].position, mesh.vertices[v[1]].position, mesh.vertices[v[2]].position);
+            if (k == largest) continue;
+            std::uint32_t* out = surfaces[k].mesh.indices.data() + cursor[k];
+            out[0] = local[v[0]];
+            out[1] = local[v[1]];
+            out[2] = local[v[2]];
+            cursor[k] += 3;
+        }
+    });
+    // The largest surface, compacted in the mesh's own buffers once the others are
+    // out: first each range's share to the start of the range (every element
+    // moves down, within the range), then the shares next to each other.
+    if (count > 0 && surfaces[largest].stats.vertices != mesh.vertices.size()) {
+        forParts([&](const detail::MarchedChunk& part, std::size_t) {
+            std::size_t to = part.vertexBegin;
+            for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
+                if (component[v] != largest) continue;
+                mesh.vertices[to] = mesh.vertices[v];
+                mesh.vertexEdges[to++] = mesh.vertexEdges[v];
+            }
+            to = 3 * part.triangleBegin;
+            for (std::size_t t = part.triangleBegin; t < part.triangleEnd; ++t) {
+                const std::uint32_t* v = &mesh.indices[3 * t];
+                if (component[v[0]] != largest) continue;
+                const std::uint32_t a = local[v[0]], b = local[v[1]], c = local[v[2]];
+                mesh.indices[to++] = a;
+                mesh.indices[to++] = b;
+                mesh.indices[to++] = c;
+            }
+        });
+        for (std::size_t r = 0; r < parts.size(); ++r) {
+            const Share& share = shares[r][largest];
+            std::copy_n(mesh.vertices.begin() + std::ptrdiff_t(parts[r].vertexBegin), share.vertices,
+                        mesh.vertices.begin() + std::ptrdiff_t(share.vertexBase));
+            std::copy_n(mesh.vertexEdges.begin() + std::ptrdiff_t(parts[r].vertexBegin), share.vertices,
+                        mesh.vertexEdges.begin() + std::ptrdiff_t(share.vertexBase));
+            std::copy_n(mesh.indices.begin() + std::ptrdiff_t(3 * parts[r].triangleBegin), 3 * std::size_t(share.triangles),
+                        mesh.indices.begin() + std::ptrdiff_t(3 * share.triangleBase));
+        }
+        mesh.vertices.resize(surfaces[largest].stats.vertices);
+        mesh.vertexEdges.resize(surfaces[largest].stats.vertices);
+        mesh.indices.resize(3 * surfaces[largest].stats.triangles);
     }
-    std::vector<detail::TriangleMeasure> measures(count);
-    for (std::size_t t = 0; t < triangleCount; ++t) {
-        const std::uint32_t* v = &mesh.indices[3 * t];
-        const std::uint32_t c = component[v[0]];
-        Surface& s = surfaces[c];
-        s.mesh.indices.insert(s.mesh.indices.end(), {localIndex[v[0]], localIndex[v[1]], localIndex[v[2]]});
-        measures[c].add(mesh.vertices[v[0]].position, mesh.vertices[v[1]].position, mesh.vertices[v[2]].position);
-    }
-    for (std::size_t c = 0; c < count; ++c) {
-        SurfaceStats& stats = surfaces[c].stats;
-        stats.triangles = triangles[c];
-        stats.vertices = vertices[c];
-        stats.bytes = surfaces[c].mesh.byteSize();
-        stats.cellsVisited = pieces[c];
+    if (count > 0) surfaces[largest].mesh = std::move(mesh);  // a lone surface is the mesh as it is
+    // The shares' measures summed in range order.
+    detail::parallelFor(int(count), threads, [&](int index) {
+        const std::size_t k = std::size_t(index);
+        SurfaceStats& stats = surfaces[k].stats;
+        stats.bytes = surfaces[k].mesh.byteSize();
+        for (int a = 0; a < 3; ++a) {
+            stats.boundsMin[a] = INFINITY;
+            stats.boundsMax[a] = -INFINITY;
+        }
+        double signedVolume = 0.0;
+        for (const std::vector<Share>& share : shares) {
+            const Share& s = share[k];
+            stats.cellsVisited += s.pieces;
+            stats.touchesBorder = stats.touchesBorder || s.touchesBorder;
+            stats.area += s.measure.area;
+            signedVolume += s.measure.signedVolume;
+            for (int a = 0; a < 3; ++a) {
+                stats.boundsMin[a] = std::min(stats.boundsMin[a], double(s.boundsMin[a]));
+                stats.boundsMax[a] = std::max(stats.boundsMax[a], double(s.boundsMax[a]));
+            }
+        }
         // The consistent table leaves no holes: a surface is closed unless the border cuts it.
-        stats.area = measures[c].area;
-        stats.closed = table == TableKind::Consistent ? !stats.touchesBorder : detail::meshIsClosed(surfaces[c].mesh);
-        if (stats.closed) stats.enclosedVolume = std::abs(measures[c].signedVolume);
-    }
+        stats.closed = table == TableKind::Consistent ? !stats.touchesBorder : detail::meshIsClosed(surfaces[k].mesh);
+        if (stats.closed) stats.enclosedVolume = std::abs(signedVolume);
+    });
+    std::vector<std::size_t> triangles(count);
+    for (std::size_t k = 0; k < count; ++k) triangles[k] = surfaces[k].stats.triangles;
 
     // Largest first; equal sizes by their first grid edge in memory order, as trackAllSurfaces.
     auto firstEdge = [&](std::size_t c) {

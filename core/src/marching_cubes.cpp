@@ -21,26 +21,42 @@
 // the lower chunk writes placeholders for them, resolved from the upper chunk's
 // first slice once both are done (stitch). Temporaries are a few slices of flags
 // and ids per chunk, never per voxel of the volume.
+//
+// Labelled (for extractAllSurfaces), the writing pass also joins the vertices of
+// each cell piece in a union-find over the chunk's own vertex range, while they
+// are in cache; stitch joins across seams, and a last parallel pass gives each
+// vertex its surface's root.
 #include "isotrack/marching_cubes.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cstdint>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
-#include <thread>
 #include <vector>
 
 #include "edge_vertex.h"
 #include "isotrack/continuation.h"
 #include "isotrack/cube.h"
+#include "labelled_march.h"
+#include "parallel.h"
 
 namespace isotrack {
 namespace {
 
 constexpr std::uint32_t kNoVertex = std::numeric_limits<std::uint32_t>::max();
 constexpr std::uint32_t kSeamBit = 1u << 31;  // placeholder: a vertex on the next chunk's first slice
+
+// Union-find over vertex ids, roots being each set's smallest id (parents are
+// never above their children).
+std::uint32_t findRoot(std::uint32_t* parent, std::uint32_t v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+}
+
+std::uint32_t linkRoots(std::uint32_t* parent, std::uint32_t a, std::uint32_t b) {
+    return a < b ? (parent[b] = a) : (parent[a] = b);
+}
 
 struct RowSpan {
     int lo, hi;               // x-edges [lo, hi) hold every change of flag along the row
@@ -98,9 +114,10 @@ struct Chunk {
 template <class T>
 class ChunkMarcher {
 public:
+    // With `parent`, the writing pass labels surfaces in it (one entry per vertex of the mesh).
     ChunkMarcher(const detail::SampleGrid<T>& grid, const std::array<CaseContinuation, 256>& table,
-                 const EdgeSlots& slots, bool markPieces, Chunk& chunk, Mesh& mesh)
-        : grid_(grid), table_(table), slots_(slots), markPieces_(markPieces), chunk_(chunk), mesh_(mesh), nx_(grid.nx()), ny_(grid.ny()),
+                 const EdgeSlots& slots, bool markPieces, std::uint32_t* parent, Chunk& chunk, Mesh& mesh)
+        : grid_(grid), table_(table), slots_(slots), markPieces_(markPieces), parent_(parent), chunk_(chunk), mesh_(mesh), nx_(grid.nx()), ny_(grid.ny()),
           sliceSize_(std::size_t(grid.nx()) * std::size_t(grid.ny())) {
         for (int s = 0; s < 2; ++s) {
             flags_[s].assign(sliceSize_, 0);
@@ -240,6 +257,7 @@ private:
             }
             const CaseContinuation& cased = table_[config];
             if (markPieces_) markPieceStarts(cased, chunk_.indexCursor / 3);
+            if (parent_) unitePieces(cased, ids);
             const int triangles = triangleCount_[config];
             const std::size_t at = chunk_.indexBase + chunk_.indexCursor;
             std::uint32_t* out = mesh_.indices.data() + at;
@@ -251,6 +269,24 @@ private:
                 }
             }
             chunk_.indexCursor += 3 * std::size_t(triangles);
+        }
+    }
+
+    // Joins the vertices of each piece of the cell, a connected patch of surface.
+    // Placeholders for the next chunk's slice are joined in stitch, through their triangles.
+    void unitePieces(const CaseContinuation& cased, const std::array<std::uint32_t, 12>& ids) {
+        for (int p = 0; p < cased.pieceCount; ++p) {
+            std::uint32_t root = kNoVertex;
+            for (unsigned mask = cased.pieces[p].edgeMask; mask != 0; mask &= mask - 1) {
+                const std::uint32_t id = ids[std::size_t(__builtin_ctz(mask))];
+                if (id & kSeamBit) continue;
+                const std::uint32_t r = findRoot(parent_, id);
+                if (root == kNoVertex) {
+                    root = r;
+                } else if (r != root) {
+                    root = linkRoots(parent_, root, r);
+                }
+            }
         }
     }
 
@@ -279,6 +315,7 @@ private:
         if (*slot != kNoVertex && *slot >= threshold) return *slot;
         const std::size_t id = chunk_.vertexBase + chunk_.vertexCursor++;
         *slot = static_cast<std::uint32_t>(id);
+        if (parent_) parent_[id] = *slot;
         const auto& o = cube::edgeOrigin(edge);
         mesh_.vertices[id] = grid_.edgeVertex(x + o[0], y + o[1], z + o[2], axis);
         mesh_.vertexEdges[id] = GridEdge{x + o[0], y + o[1], z + o[2], axis};
@@ -289,6 +326,7 @@ private:
     const std::array<CaseContinuation, 256>& table_;
     const EdgeSlots& slots_;
     const bool markPieces_;
+    std::uint32_t* const parent_;
     Chunk& chunk_;
     Mesh& mesh_;
     const int nx_, ny_;
@@ -303,23 +341,6 @@ private:
     std::uint32_t verticalThreshold_ = 0;
     bool seamSlab_ = false;
 };
-
-// Runs fn(i) for i in [0, count) on `threads` threads, handing out indices in order.
-template <class Fn>
-void parallelFor(int count, int threads, Fn&& fn) {
-    if (threads <= 1 || count <= 1) {
-        for (int i = 0; i < count; ++i) fn(i);
-        return;
-    }
-    std::atomic<int> next{0};
-    auto work = [&] {
-        for (int i = next++; i < count; i = next++) fn(i);
-    };
-    std::vector<std::thread> pool;
-    for (int t = 1; t < std::min(threads, count); ++t) pool.emplace_back(work);
-    work();
-    for (auto& thread : pool) thread.join();
-}
 
 // Gives each chunk its ranges of the final buffers and sizes them once.
 void allocate(std::vector<Chunk>& chunks, Mesh& mesh) {
@@ -337,11 +358,24 @@ void allocate(std::vector<Chunk>& chunks, Mesh& mesh) {
 }
 
 // Resolves the placeholders each chunk left for the next chunk's first slice,
-// and gathers the piece-start bits.
-void stitch(std::vector<Chunk>& chunks, Mesh& mesh, std::vector<std::uint8_t>* pieceStarts) {
+// joins the surfaces across the seams when labelling, and gathers the
+// piece-start bits.
+void stitch(std::vector<Chunk>& chunks, Mesh& mesh, std::uint32_t* parent, std::vector<std::uint8_t>* pieceStarts) {
     for (std::size_t c = 0; c + 1 < chunks.size(); ++c) {
         const std::vector<std::uint32_t>& next = chunks[c + 1].firstSliceIds;
         for (std::size_t at : chunks[c].seamIndices) mesh.indices[at] = next[mesh.indices[at] & ~kSeamBit];
+    }
+    if (parent) {
+        for (std::size_t c = 0; c + 1 < chunks.size(); ++c) {
+            for (std::size_t at : chunks[c].seamIndices) {
+                const std::uint32_t* triangle = &mesh.indices[at - at % 3];
+                const std::uint32_t a = findRoot(parent, mesh.indices[at]);
+                for (int k = 0; k < 3; ++k) {
+                    const std::uint32_t b = findRoot(parent, triangle[k]);
+                    if (a != b) linkRoots(parent, a, b);
+                }
+            }
+        }
     }
     if (!pieceStarts) return;
     pieceStarts->assign(mesh.indices.size() / 3 / 8 + 1, 0);
@@ -356,9 +390,11 @@ void stitch(std::vector<Chunk>& chunks, Mesh& mesh, std::vector<std::uint8_t>* p
     }
 }
 
-}  // namespace
 
-Mesh marchingCubes(const Volume& volume, double iso, TableKind table, int threads, std::vector<std::uint8_t>* pieceStarts) {
+// The exhaustive pass on `threads` threads; labels surfaces in *parent (resized
+// to one entry per vertex) when given, and marks piece starts when asked.
+std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int threads, Mesh& mesh,
+                         Buffer<std::uint32_t>* parent, std::vector<std::uint8_t>* pieceStarts) {
     const Dims& n = volume.dims();
     if (n[0] < 2 || n[1] < 2 || n[2] < 2) return {};
     const int slabs = n[2] - 1;
@@ -373,22 +409,56 @@ Mesh marchingCubes(const Volume& volume, double iso, TableKind table, int thread
     }
     const auto& continuation = continuationTable(table);
     const EdgeSlots slots = edgeSlots(n[0]);
-    Mesh mesh;
     visitSamples(volume, [&](const auto* samples) {
         using T = std::remove_cv_t<std::remove_pointer_t<decltype(samples)>>;
         const detail::SampleGrid<T> grid(volume, samples, iso);
         const bool mark = pieceStarts != nullptr;
-        parallelFor(chunkCount, threads, [&](int c) {
-            ChunkMarcher<T>(grid, continuation, slots, mark, chunks[std::size_t(c)], mesh).count();
+        detail::parallelFor(chunkCount, threads, [&](int c) {
+            ChunkMarcher<T>(grid, continuation, slots, mark, nullptr, chunks[std::size_t(c)], mesh).count();
         });
         allocate(chunks, mesh);
-        parallelFor(chunkCount, threads, [&](int c) {
-            ChunkMarcher<T>(grid, continuation, slots, mark, chunks[std::size_t(c)], mesh).run();
+        if (parent) parent->resize(mesh.vertices.size());
+        std::uint32_t* parents = parent ? parent->data() : nullptr;
+        detail::parallelFor(chunkCount, threads, [&](int c) {
+            ChunkMarcher<T>(grid, continuation, slots, mark, parents, chunks[std::size_t(c)], mesh).run();
         });
     });
-    stitch(chunks, mesh, pieceStarts);
+    stitch(chunks, mesh, parent ? parent->data() : nullptr, pieceStarts);
+    return chunks;
+}
+
+}  // namespace
+
+Mesh marchingCubes(const Volume& volume, double iso, TableKind table, int threads, std::vector<std::uint8_t>* pieceStarts) {
+    Mesh mesh;
+    march(volume, iso, table, threads, mesh, nullptr, pieceStarts);
     return mesh;
 }
+
+namespace detail {
+
+LabelledMesh marchLabelled(const Volume& volume, double iso, TableKind table, int threads) {
+    LabelledMesh out;
+    Buffer<std::uint32_t> parent;
+    const std::vector<Chunk> chunks = march(volume, iso, table, threads, out.mesh, &parent, &out.pieceStarts);
+    for (const Chunk& chunk : chunks) {
+        out.chunks.push_back({chunk.vertexBase, chunk.vertexBase + chunk.vertexCount, chunk.indexBase / 3,
+                              chunk.indexBase / 3 + chunk.triangleCount});
+    }
+    // Every vertex's root, read without compressing paths so that chunks can run at once.
+    out.root.resize(parent.size());
+    parallelFor(int(out.chunks.size()), threads, [&](int c) {
+        const MarchedChunk& chunk = out.chunks[std::size_t(c)];
+        for (std::size_t v = chunk.vertexBegin; v < chunk.vertexEnd; ++v) {
+            std::uint32_t r = parent[v];
+            while (parent[r] != r) r = parent[r];
+            out.root[v] = r;
+        }
+    });
+    return out;
+}
+
+}  // namespace detail
 
 std::size_t countCrossedEdges(const Volume& volume, double iso) {
     return visitSamples(volume, [&](const auto* samples) {
