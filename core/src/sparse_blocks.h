@@ -67,17 +67,20 @@ public:
 
     // The index of the block at `link` from block `index` (see kSelf).
     std::uint32_t linked(std::uint32_t index, int link) {
-        std::uint32_t& slot = pointers_[index]->link[std::size_t(link)];
-        if (slot == 0) {
-            const std::array<int, 3>& o = pointers_[index]->origin;
-            slot = 1 + indexAt(o[0] + (link % 3 - 1) * kSide, o[1] + (link / 3 % 3 - 1) * kSide, o[2] + (link / 9 - 1) * kSide);
-        }
-        return slot - 1;
+        const std::uint32_t slot = pointers_[index]->link[std::size_t(link)];
+        return slot != 0 ? slot - 1 : resolve(index, link);
     }
 
     std::size_t byteSize() const { return blocks_.size() * (sizeof(Block) + sizeof(Block*)) + index_.byteSize(); }
 
 private:
+    [[gnu::noinline]] std::uint32_t resolve(std::uint32_t index, int link) {
+        const std::array<int, 3> o = pointers_[index]->origin;
+        const std::uint32_t found = indexAt(o[0] + (link % 3 - 1) * kSide, o[1] + (link / 3 % 3 - 1) * kSide, o[2] + (link / 9 - 1) * kSide);
+        pointers_[index]->link[std::size_t(link)] = found + 1;
+        return found;
+    }
+
     int blocksX_, blocksY_;
     FlatHashMap index_;
     std::deque<Block> blocks_;

@@ -91,7 +91,7 @@ public:
 
     // Room for `count` more elements, which the caller fills.
     T* extend(std::size_t count) {
-        if (size_ + count > buffer_.size()) buffer_.resize(std::max({2 * buffer_.size(), size_ + count, std::size_t(1024)}));
+        if (size_ + count > buffer_.size()) grow(count);
         T* at = buffer_.data() + size_;
         size_ += count;
         return at;
@@ -99,20 +99,26 @@ public:
     std::size_t size() const { return size_; }
 
 private:
+    [[gnu::noinline]] void grow(std::size_t count) { buffer_.resize(std::max({2 * buffer_.size(), size_ + count, std::size_t(1024)})); }
+
     Buffer<T>& buffer_;
     std::size_t size_;
 };
 
-// The continuation table as the tracker walks it. Per face: the link to the
-// sparse block across it, and the cells of a block whose neighbour across it lies
-// in that block (local index & mask == side). Per piece: its exits as (face,
-// entry edge in the cell across) pairs, in the table's face order.
+// The continuation table as the tracker walks it, each piece in 64 bytes.
+// Per piece: its edges, its triangles' corners (cube edges), and its exits as
+// (face, entry edge in the cell across) pairs in the table's face order. Per
+// face: the link to the sparse block across it, and the cells of a block whose
+// neighbour across it lies in the next block (local index & mask == side).
 struct WalkTable {
     struct Walk {
-        std::uint8_t exitCount = 0;
+        std::uint16_t edgeMask = 0;
+        std::uint8_t cornerCount = 0, exitCount = 0;
+        std::array<std::uint8_t, 3 * kMaxCaseTriangles> corners{};
         std::array<std::uint8_t, 24> exits{};  // face << 4 | entry edge
     };
     std::array<std::array<Walk, kMaxPieces>, 256> walks{};
+    std::array<std::array<std::int8_t, 12>, 256> pieceOfEdge{};
     std::array<int, 6> link{}, cellStep{}, faceMask{}, faceSide{};
     std::array<std::array<int, 3>, 12> edgeOrigin{};
     std::array<int, 12> edgeAxis{};
@@ -131,10 +137,16 @@ struct WalkTable {
         }
         const auto& table = continuationTable(kind);
         for (int c = 0; c < 256; ++c) {
+            pieceOfEdge[c] = table[c].pieceOfEdge;
             for (int p = 0; p < table[c].pieceCount; ++p) {
+                const Piece& piece = table[c].pieces[p];
                 Walk& walk = walks[c][p];
+                walk.edgeMask = piece.edgeMask;
+                for (int t = piece.firstTriangle; t < piece.firstTriangle + piece.triangleCount; ++t) {
+                    for (std::int8_t edge : table[c].triangles[t]) walk.corners[walk.cornerCount++] = static_cast<std::uint8_t>(edge);
+                }
                 for (int f = 0; f < cube::kFaceCount; ++f) {
-                    for (std::int8_t exit : table[c].pieces[p].exits[f]) {
+                    for (std::int8_t exit : piece.exits[f]) {
                         if (exit < 0) break;
                         walk.exits[walk.exitCount++] = static_cast<std::uint8_t>(f << 4 | cube::edgeAcrossFace(exit, f));
                     }
@@ -195,7 +207,7 @@ class TypedTrackWorker final : public TrackWorker {
 
 public:
     TypedTrackWorker(const Volume& volume, const T* samples, double iso, TableKind table)
-        : grid_(volume, samples, iso), table_(continuationTable(table)), walk_(walkTable(table)) {
+        : grid_(volume, samples, iso), walk_(walkTable(table)) {
         const std::size_t stride[3] = {1, grid_.strideY(), grid_.strideZ()};
         const int last[3] = {grid_.nx() - 2, grid_.ny() - 2, grid_.nz() - 2};
         for (int f = 0; f < cube::kFaceCount; ++f) {
@@ -223,8 +235,7 @@ public:
         while (!state.queue.empty() && visited < cellBudget) {
             const Entry entry = state.queue.pop();
             ++visited;
-            const CaseContinuation& cased = table_[entry.config];
-            const Piece& piece = cased.pieces[entry.piece];
+            const WalkTable::Walk& walk = walk_.walks[entry.config][entry.piece];
             Block& block = state.blocks[entry.block];
             const int cell = entry.cell;
             const int local[3] = {cell & kLast, cell >> kShift & kLast, cell >> 2 * kShift};
@@ -232,18 +243,15 @@ public:
             // The cell's block holds its corners too unless it sits on the block's upper faces.
             const bool cornersInBlock = local[0] < kLast && local[1] < kLast && local[2] < kLast;
             std::array<std::uint32_t, 12> vertexOf;
-            for (unsigned mask = piece.edgeMask; mask != 0; mask &= mask - 1) {
+            for (unsigned mask = walk.edgeMask; mask != 0; mask &= mask - 1) {
                 const int edge = __builtin_ctz(mask);
                 std::uint32_t& id = cornersInBlock ? block.vertex[std::size_t(3 * (cell + walk_.edgeLocal[edge]) + walk_.edgeAxis[edge])]
                                                    : vertexSlot(state, entry.block, local, edge);
                 if (id == detail::SparseBlocks::kNoVertex) id = newVertex(out, at, edge);
                 vertexOf[edge] = id;
             }
-            std::uint32_t* indices = out.indices.extend(3 * std::size_t(piece.triangleCount));
-            for (int t = piece.firstTriangle; t < piece.firstTriangle + piece.triangleCount; ++t) {
-                for (int corner = 0; corner < 3; ++corner) *indices++ = vertexOf[cased.triangles[t][corner]];
-            }
-            const WalkTable::Walk& walk = walk_.walks[entry.config][entry.piece];
+            std::uint32_t* indices = out.indices.extend(walk.cornerCount);
+            for (int k = 0; k < walk.cornerCount; ++k) indices[k] = vertexOf[walk.corners[std::size_t(k)]];
             const std::size_t sample = grid_.index(at[0], at[1], at[2]);
             for (int k = 0; k < walk.exitCount; ++k) {
                 const int f = walk.exits[std::size_t(k)] >> 4, edge = walk.exits[std::size_t(k)] & 15;
@@ -284,7 +292,7 @@ private:
         Block& block = state.blocks[index];
         if (block.config[std::size_t(cell)] == 0) block.config[std::size_t(cell)] = configAt(sample);
         const std::uint8_t c = block.config[std::size_t(cell)];
-        const int piece = table_[c].pieceOfEdge[edge];
+        const int piece = walk_.pieceOfEdge[c][std::size_t(edge)];
         if (piece < 0) return;
         std::uint8_t& marks = state.denseVisited ? state.denseVisited[sample] : block.visited[std::size_t(cell)];
         const auto bit = static_cast<std::uint8_t>(1u << piece);
@@ -302,17 +310,31 @@ private:
         return block.vertex[std::size_t(3 * detail::SparseBlocks::local(p[0], p[1], p[2]) + walk_.edgeAxis[edge])];
     }
 
+    // edgeVertex, through its interior form when both ends of the edge have their six neighbours in the volume.
+    template <int Axis>
+    Vertex vertexAlong(int x, int y, int z) const {
+        const int far[3] = {x + (Axis == 0) + 1, y + (Axis == 1) + 1, z + (Axis == 2) + 1};
+        if (x > 0 && y > 0 && z > 0 && far[0] < grid_.nx() && far[1] < grid_.ny() && far[2] < grid_.nz()) {
+            return grid_.template interiorEdgeVertex<Axis>(grid_.index(x, y, z), x, y, z);
+        }
+        return grid_.edgeVertex(x, y, z, Axis);
+    }
+
     std::uint32_t newVertex(MeshAppender& out, const int at[3], int edge) const {
         const auto& o = walk_.edgeOrigin[edge];
         const int axis = walk_.edgeAxis[edge];
         const int x = at[0] + o[0], y = at[1] + o[1], z = at[2] + o[2];
-        *out.vertices.extend(1) = grid_.edgeVertex(x, y, z, axis);
+        Vertex& v = *out.vertices.extend(1);
+        switch (axis) {
+            case 0: v = vertexAlong<0>(x, y, z); break;
+            case 1: v = vertexAlong<1>(x, y, z); break;
+            default: v = vertexAlong<2>(x, y, z); break;
+        }
         *out.vertexEdges.extend(1) = GridEdge{x, y, z, axis};
         return static_cast<std::uint32_t>(out.vertices.size() - 1);
     }
 
     detail::SampleGrid<T> grid_;
-    const std::array<CaseContinuation, 256>& table_;
     const WalkTable& walk_;
     std::array<std::size_t, 6> sampleStep_{};  // to the first corner of the cell across each face
     std::array<int, 6> border_{};              // the cells' coordinate on the volume's border, per face
