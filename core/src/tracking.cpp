@@ -25,6 +25,7 @@
 
 #include "edge_vertex.h"
 #include "flat_hash.h"
+#include "huge_pages.h"
 #include "sparse_blocks.h"
 #include "surface_measure.h"
 #include "isotrack/continuation.h"
@@ -99,7 +100,20 @@ public:
     std::size_t size() const { return size_; }
 
 private:
-    [[gnu::noinline]] void grow(std::size_t count) { buffer_.resize(std::max({2 * buffer_.size(), size_ + count, std::size_t(1024)})); }
+    // Moves to a buffer twice as large whose pages the kernel may back with huge
+    // pages: a large surface's mesh is tens of megabytes, written once, and
+    // faulting it in 4 KiB pages costs more than computing it.
+    [[gnu::noinline]] void grow(std::size_t count) {
+        const std::size_t size = std::max({2 * buffer_.size(), size_ + count, std::size_t(1024)});
+        if (size > buffer_.capacity()) {
+            Buffer<T> larger;
+            larger.reserve(size);
+            detail::adviseHugePages(larger.data(), size * sizeof(T));
+            larger.assign(buffer_.begin(), buffer_.begin() + std::ptrdiff_t(size_));
+            buffer_.swap(larger);
+        }
+        buffer_.resize(size);
+    }
 
     Buffer<T>& buffer_;
     std::size_t size_;
