@@ -100,19 +100,21 @@ public:
     std::size_t size() const { return size_; }
 
 private:
-    // Moves to a buffer twice as large whose pages the kernel may back with huge
-    // pages: a large surface's mesh is tens of megabytes, written once, and
-    // faulting it in 4 KiB pages costs more than computing it.
+    // Sizes the buffer to its capacity, first moving to one twice as large when
+    // full (never more often: each step of a growing surface starts from a buffer
+    // trimmed to its contents). The new buffer's pages may be backed by huge pages:
+    // a large surface's mesh is tens of megabytes, written once, and faulting it in
+    // 4 KiB pages costs more than computing it.
     [[gnu::noinline]] void grow(std::size_t count) {
-        const std::size_t size = std::max({2 * buffer_.size(), size_ + count, std::size_t(1024)});
-        if (size > buffer_.capacity()) {
+        if (size_ + count > buffer_.capacity()) {
+            const std::size_t capacity = std::max({2 * buffer_.capacity(), size_ + count, std::size_t(1024)});
             Buffer<T> larger;
-            larger.reserve(size);
-            detail::adviseHugePages(larger.data(), size * sizeof(T));
+            larger.reserve(capacity);
+            detail::adviseHugePages(larger.data(), capacity * sizeof(T));
             larger.assign(buffer_.begin(), buffer_.begin() + std::ptrdiff_t(size_));
             buffer_.swap(larger);
         }
-        buffer_.resize(size);
+        buffer_.resize(buffer_.capacity());
     }
 
     Buffer<T>& buffer_;
