@@ -114,6 +114,35 @@ public:
         return v;
     }
 
+    // edgeVertex for an edge along `Axis` from sample `a` = (x, y, z) whose two
+    // ends have all six neighbours in the volume: the same operations in the same
+    // order, so the same floats, without the tests on the axis and the border.
+    // Trackers call it once they know the edge is inside; tests compare the two.
+    template <int Axis>
+    Vertex interiorEdgeVertex(std::size_t a, int x, int y, int z) const {
+        const std::size_t b = a + (Axis == 0 ? 1 : Axis == 1 ? strideY_ : strideZ_);
+        const double va = at(a), vb = at(b);
+        double t = (iso_ - va) / (vb - va);
+        if (!(t >= 0.0 && t <= 1.0)) t = 0.5;
+
+        Vertex v{};
+        double p[3] = {origin_[0] + x * spacing_[0], origin_[1] + y * spacing_[1], origin_[2] + z * spacing_[2]};
+        p[Axis] += t * spacing_[Axis];
+        double ga[3], gb[3];
+        interiorGradient(a, ga);
+        interiorGradient(b, gb);
+        const double n[3] = {-(ga[0] + t * (gb[0] - ga[0])), -(ga[1] + t * (gb[1] - ga[1])), -(ga[2] + t * (gb[2] - ga[2]))};
+        const double length2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+        for (int k = 0; k < 3; ++k) v.position[k] = static_cast<float>(p[k]);
+        if (length2 > 0.0 && std::isfinite(length2)) {
+            const double inverse = 1.0 / std::sqrt(length2);
+            for (int k = 0; k < 3; ++k) v.normal[k] = static_cast<float>(n[k] * inverse);
+        } else {
+            v.normal[Axis] = above(a) ? 1.0f : -1.0f;
+        }
+        return v;
+    }
+
     // Central-difference gradient in world units; one-sided on the border.
     void gradient(int x, int y, int z, double g[3]) const {
         if (x > 0 && y > 0 && z > 0 && x + 1 < nx_ && y + 1 < ny_ && z + 1 < nz_) {

@@ -25,6 +25,7 @@
 
 #include "edge_vertex.h"
 #include "flat_hash.h"
+#include "huge_pages.h"
 #include "sparse_blocks.h"
 #include "surface_measure.h"
 #include "isotrack/continuation.h"
@@ -45,23 +46,127 @@ SurfaceStats measureTracked(const Mesh& mesh, const Volume& volume, TableKind ta
 // A cell piece waiting in the queue; it was marked when queued, so each piece is
 // queued once.
 struct Entry {
-    int x, y, z;
+    std::uint32_t block;  // index in the surface's sparse blocks
+    std::uint16_t cell;   // local index in the block
     std::uint8_t config;
     std::uint8_t piece;
 };
 
-// Per-face step and the entry edge across each face, computed once.
-struct FaceSteps {
-    std::array<std::array<int, 3>, 6> step{};
-    std::array<std::array<std::int8_t, 12>, 6> across{};
+// First in, first out, in a ring that doubles when full. A breadth-first front is
+// a band across the surface, so the ring stays small and in cache while the
+// surface grows, and nothing is ever moved to compact it.
+class PieceQueue {
+public:
+    bool empty() const { return head_ == tail_; }
+    void push(const Entry& entry) {
+        if (tail_ - head_ == ring_.size()) grow();
+        ring_[tail_++ & (ring_.size() - 1)] = entry;
+    }
+    Entry pop() { return ring_[head_++ & (ring_.size() - 1)]; }
+    std::size_t capacity() const { return ring_.size(); }
+
+private:
+    void grow() {
+        std::vector<Entry> larger(std::max<std::size_t>(2 * ring_.size(), 256));
+        for (std::size_t i = head_; i != tail_; ++i) larger[i - head_] = ring_[i & (ring_.size() - 1)];
+        tail_ -= head_;
+        head_ = 0;
+        ring_.swap(larger);
+    }
+
+    std::vector<Entry> ring_;  // a power-of-two size
+    std::size_t head_ = 0, tail_ = 0;
+};
+
+// Writes at the end of a mesh buffer through a pointer: the buffer is sized ahead
+// in large steps (Buffer leaves new elements uninitialised) and trimmed to what
+// was written when the appender goes, instead of a size check and a resize call
+// per element.
+template <class T>
+class Appender {
+public:
+    explicit Appender(Buffer<T>& buffer) : buffer_(buffer), size_(buffer.size()) {}
+    ~Appender() { buffer_.resize(size_); }
+    Appender(const Appender&) = delete;
+    Appender& operator=(const Appender&) = delete;
+
+    // Room for `count` more elements, which the caller fills.
+    T* extend(std::size_t count) {
+        if (size_ + count > buffer_.size()) grow(count);
+        T* at = buffer_.data() + size_;
+        size_ += count;
+        return at;
+    }
+    std::size_t size() const { return size_; }
+
+private:
+    // Sizes the buffer to its capacity, first moving to one twice as large when
+    // full (never more often: each step of a growing surface starts from a buffer
+    // trimmed to its contents). The new buffer's pages may be backed by huge pages:
+    // a large surface's mesh is tens of megabytes, written once, and faulting it in
+    // 4 KiB pages costs more than computing it.
+    [[gnu::noinline]] void grow(std::size_t count) {
+        if (size_ + count > buffer_.capacity()) {
+            const std::size_t capacity = std::max({2 * buffer_.capacity(), size_ + count, std::size_t(1024)});
+            Buffer<T> larger;
+            larger.reserve(capacity);
+            detail::adviseHugePages(larger.data(), capacity * sizeof(T));
+            larger.assign(buffer_.begin(), buffer_.begin() + std::ptrdiff_t(size_));
+            buffer_.swap(larger);
+        }
+        buffer_.resize(buffer_.capacity());
+    }
+
+    Buffer<T>& buffer_;
+    std::size_t size_;
+};
+
+// The continuation table as the tracker walks it, each piece in 64 bytes.
+// Per piece: its edges, its triangles' corners (cube edges), and its exits as
+// (face, entry edge in the cell across) pairs in the table's face order. Per
+// face: the link to the sparse block across it, and the cells of a block whose
+// neighbour across it lies in the next block (local index & mask == side).
+struct WalkTable {
+    struct Walk {
+        std::uint16_t edgeMask = 0;
+        std::uint8_t cornerCount = 0, exitCount = 0;
+        std::array<std::uint8_t, 3 * kMaxCaseTriangles> corners{};
+        std::array<std::uint8_t, 24> exits{};  // face << 4 | entry edge
+    };
+    std::array<std::array<Walk, kMaxPieces>, 256> walks{};
+    std::array<std::array<std::int8_t, 12>, 256> pieceOfEdge{};
+    std::array<int, 6> link{}, cellStep{}, faceMask{}, faceSide{};
     std::array<std::array<int, 3>, 12> edgeOrigin{};
     std::array<int, 12> edgeAxis{};
     std::array<int, 12> edgeLocal{};  // offset of the edge's origin in a sparse block's local index
-    FaceSteps() {
+
+    explicit WalkTable(TableKind kind) {
+        using detail::SparseBlocks;
         for (int f = 0; f < cube::kFaceCount; ++f) {
-            step[f][cube::faceAxis(f)] = cube::faceSide(f) ? 1 : -1;
-            for (int e = 0; e < cube::kEdgeCount; ++e) {
-                across[f][e] = static_cast<std::int8_t>(cube::edgeOnFace(e, f) ? cube::edgeAcrossFace(e, f) : -1);
+            const int axis = cube::faceAxis(f), step = cube::faceSide(f) ? 1 : -1;
+            std::array<int, 3> offset{0, 0, 0};
+            offset[axis] = step;
+            link[f] = SparseBlocks::kSelf + offset[0] + 3 * offset[1] + 9 * offset[2];
+            cellStep[f] = step * SparseBlocks::kLocalStep[std::size_t(axis)];
+            faceMask[f] = (SparseBlocks::kSide - 1) << (SparseBlocks::kShift * axis);
+            faceSide[f] = cube::faceSide(f) ? faceMask[f] : 0;
+        }
+        const auto& table = continuationTable(kind);
+        for (int c = 0; c < 256; ++c) {
+            pieceOfEdge[c] = table[c].pieceOfEdge;
+            for (int p = 0; p < table[c].pieceCount; ++p) {
+                const Piece& piece = table[c].pieces[p];
+                Walk& walk = walks[c][p];
+                walk.edgeMask = piece.edgeMask;
+                for (int t = piece.firstTriangle; t < piece.firstTriangle + piece.triangleCount; ++t) {
+                    for (std::int8_t edge : table[c].triangles[t]) walk.corners[walk.cornerCount++] = static_cast<std::uint8_t>(edge);
+                }
+                for (int f = 0; f < cube::kFaceCount; ++f) {
+                    for (std::int8_t exit : piece.exits[f]) {
+                        if (exit < 0) break;
+                        walk.exits[walk.exitCount++] = static_cast<std::uint8_t>(f << 4 | cube::edgeAcrossFace(exit, f));
+                    }
+                }
             }
         }
         for (int e = 0; e < cube::kEdgeCount; ++e) {
@@ -72,9 +177,10 @@ struct FaceSteps {
     }
 };
 
-const FaceSteps& faceSteps() {
-    static const FaceSteps steps;
-    return steps;
+const WalkTable& walkTable(TableKind kind) {
+    static const WalkTable consistent(TableKind::Consistent);
+    static const WalkTable classic(TableKind::Classic);
+    return kind == TableKind::Classic ? classic : consistent;
 }
 
 std::string numberText(double v) {
@@ -94,8 +200,7 @@ struct TrackState {
     Mesh mesh;
     detail::SparseBlocks blocks;
     std::uint8_t* denseVisited = nullptr;  // one bit per piece per cell, for trackAllSurfaces
-    std::vector<Entry> queue;
-    std::size_t head = 0;
+    PieceQueue queue;
     std::size_t cellsVisited = 0;
     bool leftVolume = false;
 };
@@ -112,18 +217,23 @@ public:
 
 template <class T>
 class TypedTrackWorker final : public TrackWorker {
+    using Block = detail::SparseBlocks::Block;
+    static constexpr int kShift = detail::SparseBlocks::kShift;
+    static constexpr int kLast = detail::SparseBlocks::kSide - 1;
+
 public:
     TypedTrackWorker(const Volume& volume, const T* samples, double iso, TableKind table)
-        : grid_(volume, samples, iso), table_(continuationTable(table)), steps_(faceSteps()) {}
-
-    std::uint8_t config(int x, int y, int z) const override {
-        const std::size_t i = grid_.index(x, y, z);
-        const std::size_t sy = grid_.strideY(), sz = grid_.strideZ();
-        const unsigned c = grid_.above(i) | grid_.above(i + 1) << 1 | grid_.above(i + 1 + sy) << 2 |
-                           grid_.above(i + sy) << 3 | grid_.above(i + sz) << 4 | grid_.above(i + 1 + sz) << 5 |
-                           grid_.above(i + 1 + sy + sz) << 6 | grid_.above(i + sy + sz) << 7;
-        return static_cast<std::uint8_t>(c);
+        : grid_(volume, samples, iso), walk_(walkTable(table)) {
+        const std::size_t stride[3] = {1, grid_.strideY(), grid_.strideZ()};
+        const int last[3] = {grid_.nx() - 2, grid_.ny() - 2, grid_.nz() - 2};
+        for (int f = 0; f < cube::kFaceCount; ++f) {
+            const int axis = cube::faceAxis(f);
+            sampleStep_[f] = cube::faceSide(f) ? stride[axis] : 0 - stride[axis];
+            border_[f] = cube::faceSide(f) ? last[axis] : 0;
+        }
     }
+
+    std::uint8_t config(int x, int y, int z) const override { return configAt(grid_.index(x, y, z)); }
 
     bool crossed(const GridEdge& e) const override {
         const std::size_t i = grid_.index(e.x, e.y, e.z);
@@ -132,101 +242,118 @@ public:
     }
 
     void enqueue(TrackState& state, int x, int y, int z, int edge) const override {
-        enqueueIn(state, state.blocks.at(x, y, z), detail::SparseBlocks::local(x, y, z), x, y, z, edge);
-    }
-
-    // As enqueue, with the cell's block and local index already known.
-    void enqueueIn(TrackState& state, detail::SparseBlocks::Block& block, int cell, int x, int y, int z, int edge) const {
-        if (block.config[std::size_t(cell)] == 0) block.config[std::size_t(cell)] = config(x, y, z);
-        const std::uint8_t c = block.config[std::size_t(cell)];
-        const int piece = table_[c].pieceOfEdge[edge];
-        if (piece < 0) return;
-        std::uint8_t& marks = state.denseVisited ? state.denseVisited[grid_.index(x, y, z)] : block.visited[std::size_t(cell)];
-        const auto bit = static_cast<std::uint8_t>(1u << piece);
-        if (marks & bit) return;
-        marks = static_cast<std::uint8_t>(marks | bit);
-        state.queue.push_back({x, y, z, c, static_cast<std::uint8_t>(piece)});
+        enqueueIn(state, state.blocks.indexAt(x, y, z), detail::SparseBlocks::local(x, y, z), grid_.index(x, y, z), edge);
     }
 
     std::size_t advance(TrackState& state, std::size_t cellBudget) const override {
-        const int last[3] = {grid_.nx() - 2, grid_.ny() - 2, grid_.nz() - 2};
+        MeshAppender out(state.mesh);
         std::size_t visited = 0;
-        while (state.head < state.queue.size() && visited < cellBudget) {
-            const Entry entry = state.queue[state.head++];
+        while (!state.queue.empty() && visited < cellBudget) {
+            const Entry entry = state.queue.pop();
             ++visited;
-            const CaseContinuation& cased = table_[entry.config];
-            const Piece& piece = cased.pieces[entry.piece];
+            const WalkTable::Walk& walk = walk_.walks[entry.config][entry.piece];
+            Block& block = state.blocks[entry.block];
+            const int cell = entry.cell;
+            const int local[3] = {cell & kLast, cell >> kShift & kLast, cell >> 2 * kShift};
+            const int at[3] = {block.origin[0] + local[0], block.origin[1] + local[1], block.origin[2] + local[2]};
             // The cell's block holds its corners too unless it sits on the block's upper faces.
-            constexpr int kLast = detail::SparseBlocks::kSide - 1;
-            detail::SparseBlocks::Block& block = state.blocks.at(entry.x, entry.y, entry.z);
-            const int cell = detail::SparseBlocks::local(entry.x, entry.y, entry.z);
-            const int lx = entry.x & kLast, ly = entry.y & kLast, lz = entry.z & kLast;
-            const bool cornersInBlock = lx < kLast && ly < kLast && lz < kLast;
+            const bool cornersInBlock = local[0] < kLast && local[1] < kLast && local[2] < kLast;
             std::array<std::uint32_t, 12> vertexOf;
-            for (unsigned mask = piece.edgeMask; mask != 0; mask &= mask - 1) {
+            for (unsigned mask = walk.edgeMask; mask != 0; mask &= mask - 1) {
                 const int edge = __builtin_ctz(mask);
-                std::uint32_t& id = cornersInBlock ? block.vertex[std::size_t(3 * (cell + steps_.edgeLocal[edge]) + steps_.edgeAxis[edge])]
-                                                   : vertexSlot(state, entry, edge);
-                if (id == detail::SparseBlocks::kNoVertex) id = newVertex(state, entry, edge);
+                std::uint32_t& id = cornersInBlock ? block.vertex[std::size_t(3 * (cell + walk_.edgeLocal[edge]) + walk_.edgeAxis[edge])]
+                                                   : vertexSlot(state, entry.block, local, edge);
+                if (id == detail::SparseBlocks::kNoVertex) id = newVertex(out, at, edge);
                 vertexOf[edge] = id;
             }
-            const std::size_t at = state.mesh.indices.size();
-            state.mesh.indices.resize(at + 3 * std::size_t(piece.triangleCount));
-            std::uint32_t* out = state.mesh.indices.data() + at;
-            for (int t = piece.firstTriangle; t < piece.firstTriangle + piece.triangleCount; ++t) {
-                for (int corner = 0; corner < 3; ++corner) *out++ = vertexOf[cased.triangles[t][corner]];
-            }
-            const int local[3] = {lx, ly, lz};
-            for (int f = 0; f < cube::kFaceCount; ++f) {
-                if (piece.exits[f][0] < 0) continue;
-                const int axis = cube::faceAxis(f);
-                const int step = steps_.step[f][axis];
-                const int to[3] = {entry.x + steps_.step[f][0], entry.y + steps_.step[f][1], entry.z + steps_.step[f][2]};
-                if (to[axis] < 0 || to[axis] > last[axis]) {
+            std::uint32_t* indices = out.indices.extend(walk.cornerCount);
+            for (int k = 0; k < walk.cornerCount; ++k) indices[k] = vertexOf[walk.corners[std::size_t(k)]];
+            const std::size_t sample = grid_.index(at[0], at[1], at[2]);
+            for (int k = 0; k < walk.exitCount; ++k) {
+                const int f = walk.exits[std::size_t(k)] >> 4, edge = walk.exits[std::size_t(k)] & 15;
+                if (at[cube::faceAxis(f)] == border_[f]) {
                     state.leftVolume = true;  // the surface is cut open by the volume's border here
                     continue;
                 }
-                const int toLocal = local[axis] + step;
-                const bool sameBlock = toLocal >= 0 && toLocal <= kLast;
-                detail::SparseBlocks::Block& target = sameBlock ? block : state.blocks.at(to[0], to[1], to[2]);
-                const int targetCell = sameBlock ? cell + step * detail::SparseBlocks::kLocalStep[std::size_t(axis)]
-                                                 : detail::SparseBlocks::local(to[0], to[1], to[2]);
-                for (std::int8_t exit : piece.exits[f]) {
-                    if (exit < 0) break;
-                    enqueueIn(state, target, targetCell, to[0], to[1], to[2], steps_.across[f][exit]);
+                if ((cell & walk_.faceMask[f]) == walk_.faceSide[f]) {
+                    enqueueIn(state, state.blocks.linked(entry.block, walk_.link[f]), cell ^ walk_.faceMask[f], sample + sampleStep_[f], edge);
+                } else {
+                    enqueueIn(state, entry.block, cell + walk_.cellStep[f], sample + sampleStep_[f], edge);
                 }
             }
-        }
-        if (state.head == state.queue.size()) {
-            state.queue.clear();
-            state.head = 0;
-        } else if (state.head > 4096 && state.head * 2 > state.queue.size()) {
-            state.queue.erase(state.queue.begin(), state.queue.begin() + std::ptrdiff_t(state.head));
-            state.head = 0;
         }
         state.cellsVisited += visited;
         return visited;
     }
 
 private:
-    std::uint32_t& vertexSlot(TrackState& state, const Entry& entry, int edge) const {
-        const auto& o = steps_.edgeOrigin[edge];
-        const int x = entry.x + o[0], y = entry.y + o[1], z = entry.z + o[2];
-        return state.blocks.at(x, y, z).vertex[std::size_t(3 * detail::SparseBlocks::local(x, y, z) + steps_.edgeAxis[edge])];
+    struct MeshAppender {
+        explicit MeshAppender(Mesh& mesh) : vertices(mesh.vertices), indices(mesh.indices), vertexEdges(mesh.vertexEdges) {}
+        Appender<Vertex> vertices;
+        Appender<std::uint32_t> indices;
+        Appender<PackedGridEdge> vertexEdges;
+    };
+
+    // The configuration of the cell whose first corner is `sample`.
+    std::uint8_t configAt(std::size_t i) const {
+        const std::size_t sy = grid_.strideY(), sz = grid_.strideZ();
+        const unsigned c = grid_.above(i) | grid_.above(i + 1) << 1 | grid_.above(i + 1 + sy) << 2 |
+                           grid_.above(i + sy) << 3 | grid_.above(i + sz) << 4 | grid_.above(i + 1 + sz) << 5 |
+                           grid_.above(i + 1 + sy + sz) << 6 | grid_.above(i + sy + sz) << 7;
+        return static_cast<std::uint8_t>(c);
     }
 
-    std::uint32_t newVertex(TrackState& state, const Entry& entry, int edge) const {
-        const auto& o = steps_.edgeOrigin[edge];
-        const int axis = steps_.edgeAxis[edge];
-        const int x = entry.x + o[0], y = entry.y + o[1], z = entry.z + o[2];
-        state.mesh.vertices.push_back(grid_.edgeVertex(x, y, z, axis));
-        state.mesh.vertexEdges.push_back(GridEdge{x, y, z, axis});
-        return static_cast<std::uint32_t>(state.mesh.vertices.size() - 1);
+    // Queues the piece holding `edge` of the cell at local index `cell` of block `index`, whose first corner is `sample`.
+    void enqueueIn(TrackState& state, std::uint32_t index, int cell, std::size_t sample, int edge) const {
+        Block& block = state.blocks[index];
+        if (block.config[std::size_t(cell)] == 0) block.config[std::size_t(cell)] = configAt(sample);
+        const std::uint8_t c = block.config[std::size_t(cell)];
+        const int piece = walk_.pieceOfEdge[c][std::size_t(edge)];
+        if (piece < 0) return;
+        std::uint8_t& marks = state.denseVisited ? state.denseVisited[sample] : block.visited[std::size_t(cell)];
+        const auto bit = static_cast<std::uint8_t>(1u << piece);
+        if (marks & bit) return;
+        marks = static_cast<std::uint8_t>(marks | bit);
+        state.queue.push({index, static_cast<std::uint16_t>(cell), c, static_cast<std::uint8_t>(piece)});
+    }
+
+    // The vertex slot of a cell's edge when the edge's origin may lie in a block further up.
+    std::uint32_t& vertexSlot(TrackState& state, std::uint32_t index, const int local[3], int edge) const {
+        const auto& o = walk_.edgeOrigin[edge];
+        const int p[3] = {local[0] + o[0], local[1] + o[1], local[2] + o[2]};
+        const int link = detail::SparseBlocks::kSelf + (p[0] >> kShift) + 3 * (p[1] >> kShift) + 9 * (p[2] >> kShift);
+        Block& block = state.blocks[state.blocks.linked(index, link)];
+        return block.vertex[std::size_t(3 * detail::SparseBlocks::local(p[0], p[1], p[2]) + walk_.edgeAxis[edge])];
+    }
+
+    // edgeVertex, through its interior form when both ends of the edge have their six neighbours in the volume.
+    template <int Axis>
+    Vertex vertexAlong(int x, int y, int z) const {
+        const int far[3] = {x + (Axis == 0) + 1, y + (Axis == 1) + 1, z + (Axis == 2) + 1};
+        if (x > 0 && y > 0 && z > 0 && far[0] < grid_.nx() && far[1] < grid_.ny() && far[2] < grid_.nz()) {
+            return grid_.template interiorEdgeVertex<Axis>(grid_.index(x, y, z), x, y, z);
+        }
+        return grid_.edgeVertex(x, y, z, Axis);
+    }
+
+    std::uint32_t newVertex(MeshAppender& out, const int at[3], int edge) const {
+        const auto& o = walk_.edgeOrigin[edge];
+        const int axis = walk_.edgeAxis[edge];
+        const int x = at[0] + o[0], y = at[1] + o[1], z = at[2] + o[2];
+        Vertex& v = *out.vertices.extend(1);
+        switch (axis) {
+            case 0: v = vertexAlong<0>(x, y, z); break;
+            case 1: v = vertexAlong<1>(x, y, z); break;
+            default: v = vertexAlong<2>(x, y, z); break;
+        }
+        *out.vertexEdges.extend(1) = GridEdge{x, y, z, axis};
+        return static_cast<std::uint32_t>(out.vertices.size() - 1);
     }
 
     detail::SampleGrid<T> grid_;
-    const std::array<CaseContinuation, 256>& table_;
-    const FaceSteps& steps_;
+    const WalkTable& walk_;
+    std::array<std::size_t, 6> sampleStep_{};  // to the first corner of the cell across each face
+    std::array<int, 6> border_{};              // the cells' coordinate on the volume's border, per face
 };
 
 std::unique_ptr<TrackWorker> makeWorker(const Volume& volume, double iso, TableKind table) {
@@ -384,7 +511,7 @@ SurfaceTracker::Step SurfaceTracker::stepFor(std::chrono::nanoseconds budget) {
     return total;
 }
 
-bool SurfaceTracker::done() const { return impl_->state.head >= impl_->state.queue.size(); }
+bool SurfaceTracker::done() const { return impl_->state.queue.empty(); }
 const Mesh& SurfaceTracker::mesh() const { return impl_->state.mesh; }
 std::size_t SurfaceTracker::cellsVisited() const { return impl_->state.cellsVisited; }
 bool SurfaceTracker::leftVolume() const { return impl_->state.leftVolume; }
@@ -431,9 +558,7 @@ std::vector<Surface> trackAllSurfaces(const Volume& volume, double iso, TableKin
                     int entryEdge = 0;
                     while (!(cased.pieces[p].edgeMask >> entryEdge & 1u)) ++entryEdge;
                     worker->enqueue(state, x, y, z, entryEdge);
-                    while (state.head < state.queue.size()) {
-                        worker->advance(state, std::numeric_limits<std::size_t>::max());
-                    }
+                    while (!state.queue.empty()) worker->advance(state, std::numeric_limits<std::size_t>::max());
                     Surface surface;
                     surface.mesh = std::move(state.mesh);
                     surface.stats = measureTracked(surface.mesh, volume, table);

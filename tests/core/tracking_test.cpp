@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <map>
 
@@ -100,7 +101,40 @@ void requireAllEqualsExhaustive(const Volume& volume, double iso, TableKind tabl
     }
 }
 
+// Every tracked vertex, position and normal, is bit for bit the exhaustive pass's
+// vertex on the same grid edge, inside the volume and on its border alike.
+void requireSameVertexBits(const Volume& volume, double iso) {
+    const Mesh whole = marchingCubes(volume, iso);
+    std::map<std::uint64_t, Vertex> vertexOfEdge;
+    for (std::size_t v = 0; v < whole.vertices.size(); ++v) {
+        vertexOfEdge[isotrack::testing::edgeKey(whole.vertexEdges[v], volume.dims())] = whole.vertices[v];
+    }
+    std::size_t compared = 0;
+    for (const Surface& s : trackAllSurfaces(volume, iso)) {
+        for (std::size_t v = 0; v < s.mesh.vertices.size(); ++v) {
+            const Vertex& expected = vertexOfEdge.at(isotrack::testing::edgeKey(s.mesh.vertexEdges[v], volume.dims()));
+            REQUIRE(std::memcmp(&s.mesh.vertices[v], &expected, sizeof(Vertex)) == 0);
+            ++compared;
+        }
+    }
+    CHECK(compared == whole.vertices.size());
+}
+
 }  // namespace
+
+TEST_CASE("tracked vertices are the exhaustive pass's, bit for bit", "[core][tracking]") {
+    SECTION("float samples, cut by the border") { requireSameVertexBits(makeField({"noise", 24}), 0.5); }
+    SECTION("int16 samples, anisotropic spacing, offset origin") {
+        const Volume noise = makeField({"noise", 20});
+        Volume volume(noise.dims(), ScalarType::Int16, {0.75, 1.0, 1.5}, {-3.0, 2.0, 0.5});
+        const Dims& n = volume.dims();
+        for (int z = 0; z < n[2]; ++z)
+            for (int y = 0; y < n[1]; ++y)
+                for (int x = 0; x < n[0]; ++x) volume.setValue(x, y, z, std::round(1000.0 * noise.value(x, y, z)));
+        requireSameVertexBits(volume, 400.0);
+        requireSameVertexBits(volume, 500.5);
+    }
+}
 
 TEST_CASE("continuation pieces partition each configuration's triangles and edges", "[core][tracking][tables]") {
     for (TableKind kind : {TableKind::Consistent, TableKind::Classic}) {
