@@ -7,13 +7,13 @@
 //  1. classify: the cell's configuration from its 8 samples (sample >= iso);
 //  2. find the piece: the continuation table names the piece of the cell's
 //     surface that holds the entry edge; a (cell, piece) seen before is skipped;
-//  3. emit: the piece's triangles, each corner a grid edge whose vertex is looked
-//     up in an edge-keyed map and computed only the first time;
+//  3. emit: the piece's triangles, each corner a grid edge whose vertex id is kept
+//     in the sparse block of the edge's origin and computed only the first time;
 //  4. continue: for each face the piece crosses, the cell across that face is
 //     queued with the shared edge.
-// Visited pieces and vertices live in hash maps sized by the surface, so the cost
-// follows the surface, not the volume. extractAllSurfaces scans every cell
-// instead, and marks pieces in one byte per cell.
+// Visited pieces, configurations and vertex ids live in sparse 8x8x8 blocks
+// created as the surface reaches them (sparse_blocks.h), so the cost follows the
+// surface, not the volume. extractAllSurfaces labels the exhaustive pass instead.
 #include "isotrack/tracking.h"
 
 #include <algorithm>
