@@ -85,13 +85,6 @@ public:
     Vertex edgeVertex(int x, int y, int z, int axis) const {
         const std::size_t a = index(x, y, z);
         const std::size_t b = a + (axis == 0 ? 1 : axis == 1 ? strideY_ : strideZ_);
-        const double va = at(a), vb = at(b);
-        double t = (iso_ - va) / (vb - va);
-        if (!(t >= 0.0 && t <= 1.0)) t = 0.5;  // non-finite samples: keep the vertex on the edge
-
-        Vertex v{};
-        double p[3] = {origin_[0] + x * spacing_[0], origin_[1] + y * spacing_[1], origin_[2] + z * spacing_[2]};
-        p[axis] += t * spacing_[axis];
         double ga[3], gb[3];
         const int ex = x + (axis == 0), ey = y + (axis == 1), ez = z + (axis == 2);
         if (x > 0 && y > 0 && z > 0 && ex + 1 < nx_ && ey + 1 < ny_ && ez + 1 < nz_) {
@@ -101,46 +94,19 @@ public:
             gradient(x, y, z, ga);
             gradient(ex, ey, ez, gb);
         }
-        const double n[3] = {-(ga[0] + t * (gb[0] - ga[0])), -(ga[1] + t * (gb[1] - ga[1])), -(ga[2] + t * (gb[2] - ga[2]))};
-        const double length2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-        for (int k = 0; k < 3; ++k) v.position[k] = static_cast<float>(p[k]);
-        if (length2 > 0.0 && std::isfinite(length2)) {
-            const double inverse = 1.0 / std::sqrt(length2);
-            for (int k = 0; k < 3; ++k) v.normal[k] = static_cast<float>(n[k] * inverse);
-        } else {
-            // Flat or non-finite neighbourhood: point along the edge, from above to below.
-            v.normal[axis] = above(a) ? 1.0f : -1.0f;
-        }
-        return v;
+        return vertexOnEdge(x, y, z, axis, a, b, ga, gb);
     }
 
     // edgeVertex for an edge along `Axis` from sample `a` = (x, y, z) whose two
-    // ends have all six neighbours in the volume: the same operations in the same
-    // order, so the same floats, without the tests on the axis and the border.
-    // Trackers call it once they know the edge is inside; tests compare the two.
+    // ends have all six neighbours in the volume, without the tests on the axis
+    // and the border. Trackers call it once they know the edge is inside.
     template <int Axis>
     Vertex interiorEdgeVertex(std::size_t a, int x, int y, int z) const {
         const std::size_t b = a + (Axis == 0 ? 1 : Axis == 1 ? strideY_ : strideZ_);
-        const double va = at(a), vb = at(b);
-        double t = (iso_ - va) / (vb - va);
-        if (!(t >= 0.0 && t <= 1.0)) t = 0.5;
-
-        Vertex v{};
-        double p[3] = {origin_[0] + x * spacing_[0], origin_[1] + y * spacing_[1], origin_[2] + z * spacing_[2]};
-        p[Axis] += t * spacing_[Axis];
         double ga[3], gb[3];
         interiorGradient(a, ga);
         interiorGradient(b, gb);
-        const double n[3] = {-(ga[0] + t * (gb[0] - ga[0])), -(ga[1] + t * (gb[1] - ga[1])), -(ga[2] + t * (gb[2] - ga[2]))};
-        const double length2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-        for (int k = 0; k < 3; ++k) v.position[k] = static_cast<float>(p[k]);
-        if (length2 > 0.0 && std::isfinite(length2)) {
-            const double inverse = 1.0 / std::sqrt(length2);
-            for (int k = 0; k < 3; ++k) v.normal[k] = static_cast<float>(n[k] * inverse);
-        } else {
-            v.normal[Axis] = above(a) ? 1.0f : -1.0f;
-        }
-        return v;
+        return vertexOnEdge(x, y, z, Axis, a, b, ga, gb);
     }
 
     // Central-difference gradient in world units; one-sided on the border.
@@ -176,6 +142,29 @@ public:
     }
 
 private:
+    // The vertex on the edge from sample a = (x, y, z) to sample b along `axis`,
+    // given the gradients at both ends: the one place vertex floats are made.
+    Vertex vertexOnEdge(int x, int y, int z, int axis, std::size_t a, std::size_t b, const double ga[3], const double gb[3]) const {
+        const double va = at(a), vb = at(b);
+        double t = (iso_ - va) / (vb - va);
+        if (!(t >= 0.0 && t <= 1.0)) t = 0.5;  // non-finite samples: keep the vertex on the edge
+
+        Vertex v{};
+        double p[3] = {origin_[0] + x * spacing_[0], origin_[1] + y * spacing_[1], origin_[2] + z * spacing_[2]};
+        p[axis] += t * spacing_[axis];
+        const double n[3] = {-(ga[0] + t * (gb[0] - ga[0])), -(ga[1] + t * (gb[1] - ga[1])), -(ga[2] + t * (gb[2] - ga[2]))};
+        const double length2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+        for (int k = 0; k < 3; ++k) v.position[k] = static_cast<float>(p[k]);
+        if (length2 > 0.0 && std::isfinite(length2)) {
+            const double inverse = 1.0 / std::sqrt(length2);
+            for (int k = 0; k < 3; ++k) v.normal[k] = static_cast<float>(n[k] * inverse);
+        } else {
+            // Flat or non-finite neighbourhood: point along the edge, from above to below.
+            v.normal[axis] = above(a) ? 1.0f : -1.0f;
+        }
+        return v;
+    }
+
     const T* samples_;
     int nx_, ny_, nz_;
     std::size_t strideY_, strideZ_;

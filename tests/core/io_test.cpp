@@ -18,44 +18,12 @@ using namespace isotrack;
 namespace {
 
 using isotrack::testing::gzipBytes;
+using isotrack::testing::patterned;
 using isotrack::testing::readFile;
+using isotrack::testing::requireSameVolume;
+using isotrack::testing::sampleBytes;
 using isotrack::testing::TempDir;
 using isotrack::testing::writeFile;
-
-// A volume whose samples all differ, so byte order mistakes show.
-Volume patterned(ScalarType type, Dims dims = {5, 4, 3}) {
-    Volume v(dims, type, {0.5, 1.25, 3.0}, {-10.5, 0.1, 7.0});
-    const bool isSigned = type != ScalarType::UInt8 && type != ScalarType::UInt16 && type != ScalarType::UInt32;
-    for (int z = 0; z < dims[2]; ++z)
-        for (int y = 0; y < dims[1]; ++y)
-            for (int x = 0; x < dims[0]; ++x) {
-                const double base = double(v.index(x, y, z));
-                v.setValue(x, y, z, isSigned ? base * 1.0 - 20 : base + 1);
-            }
-    if (type == ScalarType::UInt16) v.setValue(0, 0, 0, 0xABCD);
-    if (type == ScalarType::Int32) v.setValue(0, 0, 0, -123456789);
-    if (type == ScalarType::UInt32) v.setValue(0, 0, 0, 0xDEADBEEF);
-    if (type == ScalarType::Float32) v.setValue(0, 0, 0, 0.1);
-    if (type == ScalarType::Float64) v.setValue(0, 0, 0, 1.0 / 3.0);
-    return v;
-}
-
-void requireSameVolume(const Volume& a, const Volume& b) {
-    REQUIRE(a.dims() == b.dims());
-    REQUIRE(a.type() == b.type());
-    CHECK(a.spacing() == b.spacing());
-    CHECK(a.origin() == b.origin());
-    REQUIRE(a.byteSize() == b.byteSize());
-    CHECK(std::memcmp(a.bytes(), b.bytes(), a.byteSize()) == 0);
-}
-
-// The samples of v as big-endian bytes.
-std::string bigEndianBytes(const Volume& v) {
-    const std::size_t width = scalarTypeSize(v.type());
-    std::string out(reinterpret_cast<const char*>(v.bytes()), v.byteSize());
-    for (std::size_t i = 0; i < out.size(); i += width) std::reverse(out.begin() + long(i), out.begin() + long(i + width));
-    return out;
-}
 
 const char* kHeader16 =
     "NRRD0004\n"
@@ -112,10 +80,10 @@ TEST_CASE("NRRD big-endian data is swapped to host order", "[core][io]") {
         const Volume v = patterned(c.type);
         const std::string header = std::string("NRRD0005\n# hand written\n") + "type: " + c.nrrdName +
                                    "\ndimension: 3\nsizes: 5 4 3\nspacings: 0.5 1.25 3\n"
-                                   "space origin: (-10.5, 0.1, 7)\nkey:=value: with colon\n"
+                                   "space origin: (-10.5, 0.25, 7)\nkey:=value: with colon\n"
                                    "endian: big\nencoding: raw\n\n";
         const std::string path = dir.file("be.nrrd");
-        writeFile(path, header + bigEndianBytes(v));
+        writeFile(path, header + sampleBytes(v, true));
         requireSameVolume(loadNrrd(path), v);
     }
 }
@@ -140,7 +108,7 @@ TEST_CASE("NRRD gzip encoding", "[core][io]") {
     const std::string raw(reinterpret_cast<const char*>(v.bytes()), v.byteSize());
     const std::string header =
         "NRRD0004\ntype: int32\ndimension: 3\nsizes: 31 17 9\nspacings: 0.5 1.25 3\n"
-        "space origin: (-10.5,0.1,7)\nendian: little\nencoding: gzip\n\n";
+        "space origin: (-10.5,0.25,7)\nendian: little\nencoding: gzip\n\n";
     writeFile(dir.file("gz.nrrd"), header + gzipBytes(raw));
     requireSameVolume(loadNrrd(dir.file("gz.nrrd")), v);
 
@@ -165,10 +133,10 @@ TEST_CASE("NRRD gzip encoding", "[core][io]") {
 TEST_CASE("NRRD detached header", "[core][io]") {
     TempDir dir;
     const Volume v = patterned(ScalarType::Float32);
-    writeFile(dir.file("data.raw"), bigEndianBytes(v));
+    writeFile(dir.file("data.raw"), sampleBytes(v, true));
     writeFile(dir.file("vol.nhdr"),
               "NRRD0004\ntype: float\ndimension: 3\nsizes: 5 4 3\nspacings: 0.5 1.25 3\n"
-              "space origin: (-10.5,0.1,7)\nendian: big\nencoding: raw\ndata file: data.raw\n");
+              "space origin: (-10.5,0.25,7)\nendian: big\nencoding: raw\ndata file: data.raw\n");
     requireSameVolume(loadVolume(dir.file("vol.nhdr")), v);
 
     writeFile(dir.file("missing.nhdr"),
