@@ -2,6 +2,9 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 #include <new>
 #include <utility>
 #include <vector>
@@ -9,7 +12,24 @@
 #include "cli/commands.h"
 #include "viewer/viewer_options.h"
 
+namespace {
+
+// Meshes are re-extracted again and again (the viewer's isovalue slider,
+// extract --repeat): memory a mesh frees is kept for the next one instead of
+// going back to the kernel, which would hand out fresh pages, each zeroed on
+// first touch. glibc otherwise maps big blocks on their own and unmaps them on
+// free.
+void keepFreedMemoryForReuse() {
+#if defined(__GLIBC__)
+    mallopt(M_MMAP_MAX, 0);
+    mallopt(M_TRIM_THRESHOLD, 1 << 30);
+#endif
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
+    keepFreedMemoryForReuse();
     CLI::App app{"isotrack: extract and track isosurfaces of 3D scalar volumes, one connected surface at a time",
                  "isotrack"};
     app.set_version_flag("--version", "isotrack 0.1.0");

@@ -81,8 +81,10 @@ public:
         for (std::size_t i = 0; i < count; ++i) flags[i] = samples[i] >= t;
     }
 
-    // The vertex where the surface crosses the edge from sample (x, y, z) one step along `axis`.
-    Vertex edgeVertex(int x, int y, int z, int axis) const {
+    // The vertex where the surface crosses the edge from sample (x, y, z) one
+    // step along `axis`, written straight into `v` (a mesh's buffer: assembling
+    // it elsewhere and copying it stalls on the partial stores).
+    void edgeVertex(int x, int y, int z, int axis, Vertex& v) const {
         const std::size_t a = index(x, y, z);
         const std::size_t b = a + (axis == 0 ? 1 : axis == 1 ? strideY_ : strideZ_);
         double ga[3], gb[3];
@@ -94,19 +96,19 @@ public:
             gradient(x, y, z, ga);
             gradient(ex, ey, ez, gb);
         }
-        return vertexOnEdge(x, y, z, axis, a, b, ga, gb);
+        vertexOnEdge(x, y, z, axis, a, b, ga, gb, v);
     }
 
     // edgeVertex for an edge along `Axis` from sample `a` = (x, y, z) whose two
     // ends have all six neighbours in the volume, without the tests on the axis
     // and the border. Trackers call it once they know the edge is inside.
     template <int Axis>
-    Vertex interiorEdgeVertex(std::size_t a, int x, int y, int z) const {
+    void interiorEdgeVertex(std::size_t a, int x, int y, int z, Vertex& v) const {
         const std::size_t b = a + (Axis == 0 ? 1 : Axis == 1 ? strideY_ : strideZ_);
         double ga[3], gb[3];
         interiorGradient(a, ga);
         interiorGradient(b, gb);
-        return vertexOnEdge(x, y, z, Axis, a, b, ga, gb);
+        vertexOnEdge(x, y, z, Axis, a, b, ga, gb, v);
     }
 
     // Central-difference gradient in world units; one-sided on the border.
@@ -144,12 +146,11 @@ public:
 private:
     // The vertex on the edge from sample a = (x, y, z) to sample b along `axis`,
     // given the gradients at both ends: the one place vertex floats are made.
-    Vertex vertexOnEdge(int x, int y, int z, int axis, std::size_t a, std::size_t b, const double ga[3], const double gb[3]) const {
+    void vertexOnEdge(int x, int y, int z, int axis, std::size_t a, std::size_t b, const double ga[3], const double gb[3], Vertex& v) const {
         const double va = at(a), vb = at(b);
         double t = (iso_ - va) / (vb - va);
         if (!(t >= 0.0 && t <= 1.0)) t = 0.5;  // non-finite samples: keep the vertex on the edge
 
-        Vertex v{};
         double p[3] = {origin_[0] + x * spacing_[0], origin_[1] + y * spacing_[1], origin_[2] + z * spacing_[2]};
         p[axis] += t * spacing_[axis];
         const double n[3] = {-(ga[0] + t * (gb[0] - ga[0])), -(ga[1] + t * (gb[1] - ga[1])), -(ga[2] + t * (gb[2] - ga[2]))};
@@ -160,9 +161,9 @@ private:
             for (int k = 0; k < 3; ++k) v.normal[k] = static_cast<float>(n[k] * inverse);
         } else {
             // Flat or non-finite neighbourhood: point along the edge, from above to below.
+            for (int k = 0; k < 3; ++k) v.normal[k] = 0.0f;
             v.normal[axis] = above(a) ? 1.0f : -1.0f;
         }
-        return v;
     }
 
     const T* samples_;

@@ -317,7 +317,7 @@ private:
         *slot = static_cast<std::uint32_t>(id);
         if (parent_) parent_[id] = *slot;
         const auto& o = cube::edgeOrigin(edge);
-        mesh_.vertices[id] = grid_.edgeVertex(x + o[0], y + o[1], z + o[2], axis);
+        grid_.edgeVertex(x + o[0], y + o[1], z + o[2], axis, mesh_.vertices[id]);
         mesh_.vertexEdges[id] = GridEdge{x + o[0], y + o[1], z + o[2], axis};
         return *slot;
     }

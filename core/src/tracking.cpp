@@ -328,12 +328,13 @@ private:
 
     // edgeVertex, through its interior form when both ends of the edge have their six neighbours in the volume.
     template <int Axis>
-    Vertex vertexAlong(int x, int y, int z) const {
+    void vertexAlong(int x, int y, int z, Vertex& v) const {
         const int far[3] = {x + (Axis == 0) + 1, y + (Axis == 1) + 1, z + (Axis == 2) + 1};
         if (x > 0 && y > 0 && z > 0 && far[0] < grid_.nx() && far[1] < grid_.ny() && far[2] < grid_.nz()) {
-            return grid_.template interiorEdgeVertex<Axis>(grid_.index(x, y, z), x, y, z);
+            grid_.template interiorEdgeVertex<Axis>(grid_.index(x, y, z), x, y, z, v);
+        } else {
+            grid_.edgeVertex(x, y, z, Axis, v);
         }
-        return grid_.edgeVertex(x, y, z, Axis);
     }
 
     std::uint32_t newVertex(MeshAppender& out, const int at[3], int edge) const {
@@ -342,9 +343,9 @@ private:
         const int x = at[0] + o[0], y = at[1] + o[1], z = at[2] + o[2];
         Vertex& v = *out.vertices.extend(1);
         switch (axis) {
-            case 0: v = vertexAlong<0>(x, y, z); break;
-            case 1: v = vertexAlong<1>(x, y, z); break;
-            default: v = vertexAlong<2>(x, y, z); break;
+            case 0: vertexAlong<0>(x, y, z, v); break;
+            case 1: vertexAlong<1>(x, y, z, v); break;
+            default: vertexAlong<2>(x, y, z, v); break;
         }
         *out.vertexEdges.extend(1) = GridEdge{x, y, z, axis};
         return static_cast<std::uint32_t>(out.vertices.size() - 1);
