@@ -33,13 +33,18 @@ struct Share {
 
 // Consecutive chunks of the exhaustive pass, one range per thread: splitting
 // keeps one Share per surface per range.
-std::vector<detail::MarchedChunk> ranges(const std::vector<detail::MarchedChunk>& chunks, int threads) {
+struct Range {
+    std::size_t vertexBegin = 0, vertexEnd = 0;
+    std::size_t triangleBegin = 0, triangleEnd = 0;
+    std::size_t chunkBegin = 0, chunkEnd = 0;
+};
+
+std::vector<Range> ranges(const std::vector<detail::MarchedChunk>& chunks, int threads) {
     const std::size_t count = std::min(chunks.size(), std::size_t(std::max(1, threads)));
-    std::vector<detail::MarchedChunk> out(count);
+    std::vector<Range> out(count);
     for (std::size_t r = 0; r < count; ++r) {
-        const detail::MarchedChunk& first = chunks[chunks.size() * r / count];
-        const detail::MarchedChunk& last = chunks[chunks.size() * (r + 1) / count - 1];
-        out[r] = {first.vertexBegin, last.vertexEnd, first.triangleBegin, last.triangleEnd};
+        const std::size_t begin = chunks.size() * r / count, end = chunks.size() * (r + 1) / count;
+        out[r] = {chunks[begin].vertexBegin, chunks[end - 1].vertexEnd, chunks[begin].triangleBegin, chunks[end - 1].triangleEnd, begin, end};
     }
     return out;
 }
@@ -49,8 +54,7 @@ std::vector<detail::MarchedChunk> ranges(const std::vector<detail::MarchedChunk>
 std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableKind table, int threads) {
     detail::LabelledMesh labelled = detail::marchLabelled(volume, iso, table, threads);
     Mesh& mesh = labelled.mesh;
-    const std::vector<detail::MarchedChunk> parts = ranges(labelled.chunks, threads);
-    const std::vector<std::uint8_t>& pieceStarts = labelled.pieceStarts;
+    const std::vector<Range> parts = ranges(labelled.chunks, threads);
     const Dims& dims = volume.dims();
     auto forParts = [&](auto&& fn) {
         detail::parallelFor(int(parts.size()), threads, [&](int r) { fn(parts[std::size_t(r)], std::size_t(r)); });
@@ -61,32 +65,36 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
     Buffer<std::uint32_t>& component = labelled.root;
     Buffer<std::uint32_t> local(mesh.vertices.size());  // each vertex's index in its surface
     std::vector<std::uint32_t> firstNumber(parts.size() + 1, 0);
-    forParts([&](const detail::MarchedChunk& part, std::size_t r) {
+    forParts([&](const Range& part, std::size_t r) {
         std::uint32_t roots = 0;
         for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) roots += component[v] == v;
         firstNumber[r + 1] = roots;
     });
     std::partial_sum(firstNumber.begin(), firstNumber.end(), firstNumber.begin());
     const std::size_t count = firstNumber.back();
-    forParts([&](const detail::MarchedChunk& part, std::size_t r) {
+    forParts([&](const Range& part, std::size_t r) {
         std::uint32_t number = firstNumber[r];
         for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
             if (component[v] == v) local[v] = number++;
         }
     });
-    forParts([&](const detail::MarchedChunk& part, std::size_t) {
+    forParts([&](const Range& part, std::size_t) {
         for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) component[v] = local[component[v]];
     });
 
     // Each range's share of each surface, and each vertex's index within its share.
     std::vector<std::vector<Share>> shares(parts.size(), std::vector<Share>(count));
-    forParts([&](const detail::MarchedChunk& part, std::size_t r) {
+    forParts([&](const Range& part, std::size_t r) {
         std::vector<Share>& share = shares[r];
         for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) local[v] = share[component[v]].vertices++;
-        for (std::size_t t = part.triangleBegin; t < part.triangleEnd; ++t) {
-            Share& s = share[component[mesh.indices[3 * t]]];
-            ++s.triangles;
-            s.pieces += pieceStarts[t / 8] >> (t % 8) & 1u;
+        for (std::size_t c = part.chunkBegin; c < part.chunkEnd; ++c) {
+            const detail::MarchedChunk& chunk = labelled.chunks[c];
+            for (std::size_t t = chunk.triangleBegin; t < chunk.triangleEnd; ++t) {
+                Share& s = share[component[mesh.indices[3 * t]]];
+                const std::size_t bit = t - chunk.triangleBegin;
+                ++s.triangles;
+                s.pieces += chunk.pieceStarts[bit / 8] >> (bit % 8) & 1u;
+            }
         }
     });
     std::vector<Surface> surfaces(count);
@@ -110,7 +118,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         surfaces[k].mesh.indices.resize(3 * surfaces[k].stats.triangles);
     }
     // Vertices out to their surfaces, measured on the way.
-    forParts([&](const detail::MarchedChunk& part, std::size_t r) {
+    forParts([&](const Range& part, std::size_t r) {
         std::vector<Share>& share = shares[r];
         for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
             const std::uint32_t k = component[v];
@@ -129,7 +137,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
     });
     // Triangles once every vertex has its index (a range's triangles use the next
     // range's vertices too), measured on the way.
-    forParts([&](const detail::MarchedChunk& part, std::size_t r) {
+    forParts([&](const Range& part, std::size_t r) {
         std::vector<Share>& share = shares[r];
         std::vector<std::size_t> cursor(count);
         for (std::size_t k = 0; k < count; ++k) cursor[k] = 3 * share[k].triangleBase;
@@ -149,7 +157,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
     // out: first each range's share to the start of the range (every element
     // moves down, within the range), then the shares next to each other.
     if (count > 0 && surfaces[largest].stats.vertices != mesh.vertices.size()) {
-        forParts([&](const detail::MarchedChunk& part, std::size_t) {
+        forParts([&](const Range& part, std::size_t) {
             std::size_t to = part.vertexBegin;
             for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
                 if (component[v] != largest) continue;

@@ -17,12 +17,12 @@ namespace isotrack::detail {
 struct MarchedChunk {
     std::size_t vertexBegin = 0, vertexEnd = 0;
     std::size_t triangleBegin = 0, triangleEnd = 0;
+    std::vector<std::uint8_t> pieceStarts;  // one bit per triangle of the chunk (LSB first), set on each cell piece's first
 };
 
 struct LabelledMesh {
     Mesh mesh;
     std::vector<MarchedChunk> chunks;
-    std::vector<std::uint8_t> pieceStarts;  // one bit per triangle (LSB first), set on each cell piece's first
     Buffer<std::uint32_t> root;             // per vertex, the smallest vertex id of its connected surface
 };
 

@@ -358,9 +358,8 @@ void allocate(std::vector<Chunk>& chunks, Mesh& mesh) {
 }
 
 // Resolves the placeholders each chunk left for the next chunk's first slice,
-// joins the surfaces across the seams when labelling, and gathers the
-// piece-start bits.
-void stitch(std::vector<Chunk>& chunks, Mesh& mesh, std::uint32_t* parent, std::vector<std::uint8_t>* pieceStarts) {
+// and joins the surfaces across the seams when labelling.
+void stitch(std::vector<Chunk>& chunks, Mesh& mesh, std::uint32_t* parent) {
     for (std::size_t c = 0; c + 1 < chunks.size(); ++c) {
         const std::vector<std::uint32_t>& next = chunks[c + 1].firstSliceIds;
         for (std::size_t at : chunks[c].seamIndices) mesh.indices[at] = next[mesh.indices[at] & ~kSeamBit];
@@ -377,24 +376,13 @@ void stitch(std::vector<Chunk>& chunks, Mesh& mesh, std::uint32_t* parent, std::
             }
         }
     }
-    if (!pieceStarts) return;
-    pieceStarts->assign(mesh.indices.size() / 3 / 8 + 1, 0);
-    for (const Chunk& chunk : chunks) {
-        const std::size_t first = chunk.indexBase / 3;
-        for (std::size_t t = 0; t < chunk.triangleCount; ++t) {
-            if (chunk.pieceStarts[t / 8] >> (t % 8) & 1u) {
-                const std::size_t g = first + t;
-                (*pieceStarts)[g / 8] = static_cast<std::uint8_t>((*pieceStarts)[g / 8] | 1u << (g % 8));
-            }
-        }
-    }
 }
 
 
 // The exhaustive pass on `threads` threads; labels surfaces in *parent (resized
-// to one entry per vertex) when given, and marks piece starts when asked.
+// to one entry per vertex) when given, and marks piece starts in each chunk when asked.
 std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int threads, Mesh& mesh,
-                         Buffer<std::uint32_t>* parent, std::vector<std::uint8_t>* pieceStarts) {
+                         Buffer<std::uint32_t>* parent, bool markPieces) {
     const Dims& n = volume.dims();
     if (n[0] < 2 || n[1] < 2 || n[2] < 2) return {};
     const int slabs = n[2] - 1;
@@ -412,7 +400,7 @@ std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int 
     visitSamples(volume, [&](const auto* samples) {
         using T = std::remove_cv_t<std::remove_pointer_t<decltype(samples)>>;
         const detail::SampleGrid<T> grid(volume, samples, iso);
-        const bool mark = pieceStarts != nullptr;
+        const bool mark = markPieces;
         detail::parallelFor(chunkCount, threads, [&](int c) {
             ChunkMarcher<T>(grid, continuation, slots, mark, nullptr, chunks[std::size_t(c)], mesh).count();
         });
@@ -423,7 +411,7 @@ std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int 
             ChunkMarcher<T>(grid, continuation, slots, mark, parents, chunks[std::size_t(c)], mesh).run();
         });
     });
-    stitch(chunks, mesh, parent ? parent->data() : nullptr, pieceStarts);
+    stitch(chunks, mesh, parent ? parent->data() : nullptr);
     return chunks;
 }
 
@@ -431,7 +419,20 @@ std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int 
 
 Mesh marchingCubes(const Volume& volume, double iso, TableKind table, int threads, std::vector<std::uint8_t>* pieceStarts) {
     Mesh mesh;
-    march(volume, iso, table, threads, mesh, nullptr, pieceStarts);
+    const std::vector<Chunk> chunks = march(volume, iso, table, threads, mesh, nullptr, pieceStarts != nullptr);
+    if (pieceStarts) {
+        // The chunks' bits, one after the other.
+        pieceStarts->assign(mesh.indices.size() / 3 / 8 + 1, 0);
+        for (const Chunk& chunk : chunks) {
+            const std::size_t first = chunk.indexBase / 3;
+            for (std::size_t t = 0; t < chunk.triangleCount; ++t) {
+                if (chunk.pieceStarts[t / 8] >> (t % 8) & 1u) {
+                    const std::size_t g = first + t;
+                    (*pieceStarts)[g / 8] = static_cast<std::uint8_t>((*pieceStarts)[g / 8] | 1u << (g % 8));
+                }
+            }
+        }
+    }
     return mesh;
 }
 
@@ -440,10 +441,10 @@ namespace detail {
 LabelledMesh marchLabelled(const Volume& volume, double iso, TableKind table, int threads) {
     LabelledMesh out;
     Buffer<std::uint32_t> parent;
-    const std::vector<Chunk> chunks = march(volume, iso, table, threads, out.mesh, &parent, &out.pieceStarts);
-    for (const Chunk& chunk : chunks) {
+    std::vector<Chunk> chunks = march(volume, iso, table, threads, out.mesh, &parent, true);
+    for (Chunk& chunk : chunks) {
         out.chunks.push_back({chunk.vertexBase, chunk.vertexBase + chunk.vertexCount, chunk.indexBase / 3,
-                              chunk.indexBase / 3 + chunk.triangleCount});
+                              chunk.indexBase / 3 + chunk.triangleCount, std::move(chunk.pieceStarts)});
     }
     // Every vertex's root, read without compressing paths so that chunks can run at once.
     out.root.resize(parent.size());
