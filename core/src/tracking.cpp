@@ -17,6 +17,7 @@
 #include "isotrack/tracking.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -26,6 +27,7 @@
 #include "edge_vertex.h"
 #include "flat_hash.h"
 #include "huge_pages.h"
+#include "parallel.h"
 #include "sparse_blocks.h"
 #include "surface_measure.h"
 #include "isotrack/continuation.h"
@@ -39,8 +41,8 @@ using Clock = std::chrono::steady_clock;
 
 // With the consistent table a tracked surface has no holes: it is closed exactly
 // when the volume's border does not cut it.
-SurfaceStats measureTracked(const Mesh& mesh, const Volume& volume, TableKind table) {
-    return measureSurface(mesh, volume, table == TableKind::Consistent);
+SurfaceStats measureTracked(const Mesh& mesh, const Volume& volume, TableKind table, int threads = 1) {
+    return measureSurface(mesh, volume, table == TableKind::Consistent, threads);
 }
 
 // A cell piece waiting in the queue; it was marked when queued, so each piece is
@@ -200,6 +202,7 @@ struct TrackState {
     Mesh mesh;
     detail::SparseBlocks blocks;
     std::uint8_t* denseVisited = nullptr;  // one bit per piece per cell, for trackAllSurfaces
+    bool deferVertices = false;            // vertices get their grid edge only; fillVertices computes them later
     PieceQueue queue;
     std::size_t cellsVisited = 0;
     bool leftVolume = false;
@@ -213,6 +216,8 @@ public:
     virtual std::size_t advance(TrackState& state, std::size_t cellBudget) const = 0;
     virtual std::uint8_t config(int x, int y, int z) const = 0;
     virtual bool crossed(const GridEdge& edge) const = 0;
+    // Computes vertices [begin, end) of a mesh from their grid edges.
+    virtual void fillVertices(Mesh& mesh, std::size_t begin, std::size_t end) const = 0;
 };
 
 template <class T>
@@ -245,6 +250,17 @@ public:
         enqueueIn(state, state.blocks.indexAt(x, y, z), detail::SparseBlocks::local(x, y, z), grid_.index(x, y, z), edge);
     }
 
+    void fillVertices(Mesh& mesh, std::size_t begin, std::size_t end) const override {
+        for (std::size_t i = begin; i < end; ++i) {
+            const GridEdge e = mesh.vertexEdges[i];
+            switch (e.axis) {
+                case 0: vertexAlong<0>(e.x, e.y, e.z, mesh.vertices[i]); break;
+                case 1: vertexAlong<1>(e.x, e.y, e.z, mesh.vertices[i]); break;
+                default: vertexAlong<2>(e.x, e.y, e.z, mesh.vertices[i]); break;
+            }
+        }
+    }
+
     std::size_t advance(TrackState& state, std::size_t cellBudget) const override {
         MeshAppender out(state.mesh);
         std::size_t visited = 0;
@@ -263,7 +279,7 @@ public:
                 const int edge = __builtin_ctz(mask);
                 std::uint32_t& id = cornersInBlock ? block.vertex[std::size_t(3 * (cell + walk_.edgeLocal[edge]) + walk_.edgeAxis[edge])]
                                                    : vertexSlot(state, entry.block, local, edge);
-                if (id == detail::SparseBlocks::kNoVertex) id = newVertex(out, at, edge);
+                if (id == detail::SparseBlocks::kNoVertex) id = newVertex(out, at, edge, state.deferVertices);
                 vertexOf[edge] = id;
             }
             std::uint32_t* indices = out.indices.extend(walk.cornerCount);
@@ -337,12 +353,12 @@ private:
         }
     }
 
-    std::uint32_t newVertex(MeshAppender& out, const int at[3], int edge) const {
+    std::uint32_t newVertex(MeshAppender& out, const int at[3], int edge, bool defer) const {
         const auto& o = walk_.edgeOrigin[edge];
         const int axis = walk_.edgeAxis[edge];
         const int x = at[0] + o[0], y = at[1] + o[1], z = at[2] + o[2];
         Vertex& v = *out.vertices.extend(1);
-        switch (axis) {
+        if (!defer) switch (axis) {
             case 0: vertexAlong<0>(x, y, z, v); break;
             case 1: vertexAlong<1>(x, y, z, v); break;
             default: vertexAlong<2>(x, y, z, v); break;
@@ -482,11 +498,17 @@ SurfaceTracker::~SurfaceTracker() = default;
 SurfaceTracker::SurfaceTracker(SurfaceTracker&&) noexcept = default;
 SurfaceTracker& SurfaceTracker::operator=(SurfaceTracker&&) noexcept = default;
 
+namespace {
+
+void checkSeed(const Volume& volume, double iso, const TrackWorker& worker, const GridEdge& seed) {
+    if (!edgeInside(volume, seed)) throw InputError("seed edge " + edgeText(seed) + " is outside the volume");
+    if (!worker.crossed(seed)) throw InputError("seed edge " + edgeText(seed) + " does not cross iso " + numberText(iso));
+}
+
+}  // namespace
+
 void SurfaceTracker::start(const GridEdge& seed) {
-    if (!edgeInside(*impl_->volume, seed)) throw InputError("seed edge " + edgeText(seed) + " is outside the volume");
-    if (!impl_->worker->crossed(seed)) {
-        throw InputError("seed edge " + edgeText(seed) + " does not cross iso " + numberText(impl_->iso));
-    }
+    checkSeed(*impl_->volume, impl_->iso, *impl_->worker, seed);
     impl_->state = TrackState(impl_->volume->dims());
     queueSeed(*impl_->volume, seed, *impl_->worker, impl_->state);
 }
@@ -523,16 +545,29 @@ Mesh SurfaceTracker::takeMesh() { return std::move(impl_->state.mesh); }
 
 // ---- whole surfaces -------------------------------------------------------
 
-Surface trackSurface(const Volume& volume, double iso, const GridEdge& seed, TableKind table) {
+// On one thread each vertex is computed as the walk meets it, while its samples
+// are in cache. On more, the walk only records the vertices' grid edges, and the
+// vertices are computed afterwards, in parallel, as is the measuring.
+Surface trackSurface(const Volume& volume, double iso, const GridEdge& seed, TableKind table, int threads) {
     const auto start = Clock::now();
-    SurfaceTracker tracker(volume, iso, table);
-    tracker.start(seed);
-    while (!tracker.done()) tracker.step(std::numeric_limits<std::size_t>::max());
+    const auto worker = makeWorker(volume, iso, table);
+    checkSeed(volume, iso, *worker, seed);
+    TrackState state(volume.dims());
+    state.deferVertices = threads > 1;
+    queueSeed(volume, seed, *worker, state);
+    while (!state.queue.empty()) worker->advance(state, std::numeric_limits<std::size_t>::max());
     Surface surface;
-    const std::size_t cells = tracker.cellsVisited();
-    surface.mesh = tracker.takeMesh();
-    surface.stats = measureTracked(surface.mesh, volume, table);
-    surface.stats.cellsVisited = cells;
+    surface.mesh = std::move(state.mesh);
+    if (state.deferVertices) {
+        Mesh& mesh = surface.mesh;
+        const int parts = 4 * threads;
+        detail::parallelFor(parts, threads, [&](int r) {
+            worker->fillVertices(mesh, mesh.vertices.size() * std::size_t(r) / std::size_t(parts),
+                                 mesh.vertices.size() * std::size_t(r + 1) / std::size_t(parts));
+        });
+    }
+    surface.stats = measureTracked(surface.mesh, volume, table, threads);
+    surface.stats.cellsVisited = state.cellsVisited;
     surface.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return surface;
 }
@@ -591,37 +626,54 @@ std::vector<Surface> trackAllSurfaces(const Volume& volume, double iso, TableKin
 
 // ---- measurement ----------------------------------------------------------
 
-SurfaceStats measureSurface(const Mesh& mesh, const Volume& volume, bool closedUnlessOnBorder) {
+// The mesh is measured in a fixed number of parts, summed in order, so that the
+// figures do not depend on the number of threads.
+SurfaceStats measureSurface(const Mesh& mesh, const Volume& volume, bool closedUnlessOnBorder, int threads) {
     SurfaceStats stats;
     stats.triangles = mesh.triangleCount();
     stats.vertices = mesh.vertices.size();
     stats.bytes = mesh.byteSize();
+    constexpr int kParts = 8;
+    struct Part {
+        Vec3d boundsMin{INFINITY, INFINITY, INFINITY}, boundsMax{-INFINITY, -INFINITY, -INFINITY};
+        bool touchesBorder = false;
+        detail::TriangleMeasure measure;
+    };
+    std::array<Part, kParts> parts;
+    detail::parallelFor(kParts, threads, [&](int r) {
+        Part& part = parts[std::size_t(r)];
+        const std::size_t vertices = mesh.vertices.size(), triangles = mesh.triangleCount();
+        for (std::size_t i = vertices * std::size_t(r) / kParts; i < vertices * std::size_t(r + 1) / kParts; ++i) {
+            const Vertex& v = mesh.vertices[i];
+            for (int k = 0; k < 3; ++k) {
+                part.boundsMin[k] = std::min(part.boundsMin[k], double(v.position[k]));
+                part.boundsMax[k] = std::max(part.boundsMax[k], double(v.position[k]));
+            }
+            if (!part.touchesBorder) part.touchesBorder = detail::edgeOnVolumeBorder(mesh.vertexEdges[i], volume.dims());
+        }
+        for (std::size_t t = triangles * std::size_t(r) / kParts; t < triangles * std::size_t(r + 1) / kParts; ++t) {
+            const std::uint32_t* idx = &mesh.indices[3 * t];
+            part.measure.add(mesh.vertices[idx[0]].position, mesh.vertices[idx[1]].position, mesh.vertices[idx[2]].position);
+        }
+    });
+    double signedVolume = 0.0;
     if (!mesh.vertices.empty()) {
         for (int k = 0; k < 3; ++k) {
-            stats.boundsMin[k] = std::numeric_limits<double>::infinity();
-            stats.boundsMax[k] = -std::numeric_limits<double>::infinity();
-        }
-        for (const Vertex& v : mesh.vertices) {
-            for (int k = 0; k < 3; ++k) {
-                stats.boundsMin[k] = std::min(stats.boundsMin[k], double(v.position[k]));
-                stats.boundsMax[k] = std::max(stats.boundsMax[k], double(v.position[k]));
-            }
+            stats.boundsMin[k] = INFINITY;
+            stats.boundsMax[k] = -INFINITY;
         }
     }
-    detail::TriangleMeasure measure;
-    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-        const std::uint32_t* idx = &mesh.indices[3 * t];
-        measure.add(mesh.vertices[idx[0]].position, mesh.vertices[idx[1]].position, mesh.vertices[idx[2]].position);
-    }
-    stats.area = measure.area;
-    for (const GridEdge e : mesh.vertexEdges) {
-        if (detail::edgeOnVolumeBorder(e, volume.dims())) {
-            stats.touchesBorder = true;
-            break;
+    for (const Part& part : parts) {
+        for (int k = 0; k < 3 && !mesh.vertices.empty(); ++k) {
+            stats.boundsMin[k] = std::min(stats.boundsMin[k], part.boundsMin[k]);
+            stats.boundsMax[k] = std::max(stats.boundsMax[k], part.boundsMax[k]);
         }
+        stats.touchesBorder = stats.touchesBorder || part.touchesBorder;
+        stats.area += part.measure.area;
+        signedVolume += part.measure.signedVolume;
     }
     stats.closed = closedUnlessOnBorder ? !stats.touchesBorder && !mesh.indices.empty() : detail::meshIsClosed(mesh);
-    if (stats.closed) stats.enclosedVolume = std::abs(measure.signedVolume);
+    if (stats.closed) stats.enclosedVolume = std::abs(signedVolume);
     return stats;
 }
 

@@ -136,6 +136,37 @@ TEST_CASE("tracked vertices are the exhaustive pass's, bit for bit", "[core][tra
     }
 }
 
+TEST_CASE("tracking on several threads gives the one-thread surface and figures exactly", "[core][tracking]") {
+    // Float samples cut by the border (border gradients), and int16 samples.
+    const Volume noise = makeField({"noise", 24});
+    Volume ints(noise.dims(), ScalarType::Int16, {0.75, 1.0, 1.5}, {-3.0, 2.0, 0.5});
+    const Dims& n = noise.dims();
+    for (int z = 0; z < n[2]; ++z)
+        for (int y = 0; y < n[1]; ++y)
+            for (int x = 0; x < n[0]; ++x) ints.setValue(x, y, z, std::round(1000.0 * noise.value(x, y, z)));
+    for (const auto& [volume, iso] : {std::pair<const Volume&, double>{noise, 0.5}, {ints, 500.5}}) {
+        const Surface largest = extractAllSurfaces(volume, iso).front();
+        const GridEdge seed = largest.mesh.vertexEdges[0];
+        const Surface one = trackSurface(volume, iso, seed);
+        REQUIRE(one.mesh.triangleCount() == largest.mesh.triangleCount());
+        for (int threads : {2, 3}) {
+            const Surface many = trackSurface(volume, iso, seed, TableKind::Consistent, threads);
+            REQUIRE(many.mesh.vertices.size() == one.mesh.vertices.size());
+            CHECK(std::memcmp(many.mesh.vertices.data(), one.mesh.vertices.data(), one.mesh.vertices.size() * sizeof(Vertex)) == 0);
+            CHECK(std::equal(many.mesh.indices.begin(), many.mesh.indices.end(), one.mesh.indices.begin(), one.mesh.indices.end()));
+            CHECK(vertexEdgeSet(many.mesh, volume.dims()) == vertexEdgeSet(one.mesh, volume.dims()));
+            CHECK(many.stats.area == one.stats.area);
+            CHECK(many.stats.enclosedVolume == one.stats.enclosedVolume);
+            CHECK(many.stats.touchesBorder == one.stats.touchesBorder);
+            CHECK(many.stats.cellsVisited == one.stats.cellsVisited);
+            for (int k = 0; k < 3; ++k) {
+                CHECK(many.stats.boundsMin[k] == one.stats.boundsMin[k]);
+                CHECK(many.stats.boundsMax[k] == one.stats.boundsMax[k]);
+            }
+        }
+    }
+}
+
 TEST_CASE("continuation pieces partition each configuration's triangles and edges", "[core][tracking][tables]") {
     for (TableKind kind : {TableKind::Consistent, TableKind::Classic}) {
         const auto& table = continuationTable(kind);
