@@ -109,7 +109,33 @@ struct Chunk {
     std::vector<std::size_t> seamIndices;           // positions in the final indices holding placeholders
     std::vector<std::uint32_t> firstSliceIds;       // x- and y-edge ids of slice zBegin
     std::vector<std::uint8_t> pieceStarts;          // optional: 1 bit per triangle, set on a piece's first
+    // The counting pass's classification, kept for the writing pass so that it
+    // does not stream the samples again: per slice zBegin..zEnd, each row's span
+    // and, for rows that change, their flags packed 8 to a byte. Slices crossed so
+    // densely that computing vertices reads most of their samples anyway are
+    // classified again instead (kept[slice] == 0).
+    std::vector<std::uint8_t> kept;
+    std::vector<RowSpan> spans;
+    Buffer<std::uint8_t> flagBits;
 };
+
+// Flags packed 8 to a byte, bit i being flag i, and back.
+std::uint8_t packFlags(const std::uint8_t* flags) {
+    std::uint64_t word;
+    std::memcpy(&word, flags, 8);
+    return static_cast<std::uint8_t>((word * 0x0102040810204080ull) >> 56);
+}
+
+const std::array<std::uint64_t, 256>& flagExpansion() {
+    static const std::array<std::uint64_t, 256> table = [] {
+        std::array<std::uint64_t, 256> t{};
+        for (unsigned v = 0; v < 256; ++v) {
+            for (unsigned i = 0; i < 8; ++i) t[v] |= std::uint64_t(v >> i & 1u) << (8 * i);
+        }
+        return t;
+    }();
+    return table;
+}
 
 template <class T>
 class ChunkMarcher {
@@ -118,9 +144,9 @@ public:
     ChunkMarcher(const detail::SampleGrid<T>& grid, const std::array<CaseContinuation, 256>& table,
                  const EdgeSlots& slots, bool markPieces, std::uint32_t* parent, Chunk& chunk, Mesh& mesh)
         : grid_(grid), table_(table), slots_(slots), markPieces_(markPieces), parent_(parent), chunk_(chunk), mesh_(mesh), nx_(grid.nx()), ny_(grid.ny()),
-          sliceSize_(std::size_t(grid.nx()) * std::size_t(grid.ny())) {
+          sliceSize_(std::size_t(grid.nx()) * std::size_t(grid.ny())), rowBytes_(std::size_t(grid.nx() + 7) / 8) {
         for (int s = 0; s < 2; ++s) {
-            flags_[s].assign(sliceSize_, 0);
+            flags_[s].assign(sliceSize_ + 8, 0);  // rows are packed and unpacked 8 flags at a time
             spans_[s].assign(std::size_t(ny_), RowSpan{});
             planar_[s].assign(2 * sliceSize_, kNoVertex);
         }
@@ -137,12 +163,20 @@ public:
     // final size, instead of growing by copies.
     void count() {
         std::size_t vertices = 0, triangles = 0;
+        const std::size_t slices = std::size_t(chunk_.zEnd - chunk_.zBegin + 1);
+        chunk_.kept.assign(slices, 0);
+        chunk_.spans.resize(slices * std::size_t(ny_));
+        chunk_.flagBits.resize(slices * std::size_t(ny_) * rowBytes_);
         classifySlice(chunk_.zBegin, 0);
-        vertices += planarCrossings(0);
+        const std::size_t first = planarCrossings(0);
+        keepSlice(chunk_.zBegin, 0, first);
+        vertices += first;
         for (int z = chunk_.zBegin; z < chunk_.zEnd; ++z) {
             const int bottom = (z - chunk_.zBegin) & 1, top = bottom ^ 1;
             classifySlice(z + 1, top);
-            if (z + 1 < chunk_.zEnd || chunk_.last) vertices += planarCrossings(top);
+            const std::size_t crossings = planarCrossings(top);
+            keepSlice(z + 1, top, crossings);
+            if (z + 1 < chunk_.zEnd || chunk_.last) vertices += crossings;
             vertices += differences(flags_[bottom].data(), flags_[top].data(), sliceSize_);
             for (int y = 0; y + 1 < ny_; ++y) triangles += rowTriangles(y, bottom, top);
         }
@@ -153,11 +187,11 @@ public:
     // Writes the chunk into mesh_, whose buffers already have their final size.
     void run() {
         if (markPieces_) chunk_.pieceStarts.assign(chunk_.triangleCount / 8 + 1, 0);
-        classifySlice(chunk_.zBegin, 0);
+        restoreSlice(chunk_.zBegin, 0);
         threshold_[0] = 0;
         for (int z = chunk_.zBegin; z < chunk_.zEnd; ++z) {
             const int bottom = (z - chunk_.zBegin) & 1, top = bottom ^ 1;
-            classifySlice(z + 1, top);
+            restoreSlice(z + 1, top);
             threshold_[top] = static_cast<std::uint32_t>(chunk_.vertexBase + chunk_.vertexCursor);
             verticalThreshold_ = threshold_[top];
             seamSlab_ = !chunk_.last && z + 1 == chunk_.zEnd;
@@ -167,6 +201,9 @@ public:
         if (chunk_.vertexCursor != chunk_.vertexCount || chunk_.indexCursor != 3 * chunk_.triangleCount) {
             throw std::logic_error("marching cubes: a chunk wrote other counts than it counted");
         }
+        chunk_.kept = {};
+        chunk_.spans = {};
+        chunk_.flagBits = {};
     }
 
 private:
@@ -185,6 +222,44 @@ private:
             const int lo = int(static_cast<const std::uint8_t*>(change) - row) - 1;
             const int hi = int(static_cast<const std::uint8_t*>(memrchr(row, last ^ 1, std::size_t(nx_))) - row) + 1;
             spans_[slot][std::size_t(y)] = {lo, hi, first, last};
+        }
+    }
+
+    // Keeps slice z's classification (in `slot`) in the chunk: spans, and packed flags of the rows that change.
+    void keepSlice(int z, int slot, std::size_t crossings) {
+        if (crossings * 8 > sliceSize_) return;  // dense: classified again
+        chunk_.kept[std::size_t(z - chunk_.zBegin)] = 1;
+        const std::size_t slice = std::size_t(z - chunk_.zBegin) * std::size_t(ny_);
+        std::copy(spans_[slot].begin(), spans_[slot].end(), chunk_.spans.begin() + std::ptrdiff_t(slice));
+        const std::uint8_t* flags = flags_[slot].data();
+        for (int y = 0; y < ny_; ++y) {
+            if (spans_[slot][std::size_t(y)].lo >= spans_[slot][std::size_t(y)].hi) continue;  // constant: its first flag says all
+            const std::uint8_t* row = flags + std::size_t(nx_) * std::size_t(y);
+            std::uint8_t* bits = chunk_.flagBits.data() + (slice + std::size_t(y)) * rowBytes_;
+            for (std::size_t b = 0; b < rowBytes_; ++b) bits[b] = packFlags(row + 8 * b);
+        }
+    }
+
+    // classifySlice for the writing pass, from what the counting pass kept.
+    void restoreSlice(int z, int slot) {
+        if (!chunk_.kept[std::size_t(z - chunk_.zBegin)]) {
+            classifySlice(z, slot);
+            return;
+        }
+        const std::size_t slice = std::size_t(z - chunk_.zBegin) * std::size_t(ny_);
+        std::copy(chunk_.spans.begin() + std::ptrdiff_t(slice), chunk_.spans.begin() + std::ptrdiff_t(slice) + ny_, spans_[slot].begin());
+        const std::array<std::uint64_t, 256>& expand = flagExpansion();
+        std::uint8_t* flags = flags_[slot].data();
+        for (int y = 0; y < ny_; ++y) {
+            const RowSpan& span = spans_[slot][std::size_t(y)];
+            std::uint8_t* row = flags + std::size_t(nx_) * std::size_t(y);
+            if (span.lo >= span.hi) {
+                std::memset(row, span.first, std::size_t(nx_));
+                continue;
+            }
+            const std::uint8_t* bits = chunk_.flagBits.data() + (slice + std::size_t(y)) * rowBytes_;
+            // The last byte may spill past the row; the next row (or the padding) is written after.
+            for (std::size_t b = 0; b < rowBytes_; ++b) std::memcpy(row + 8 * b, &expand[bits[b]], 8);
         }
     }
 
@@ -330,7 +405,7 @@ private:
     Chunk& chunk_;
     Mesh& mesh_;
     const int nx_, ny_;
-    const std::size_t sliceSize_;
+    const std::size_t sliceSize_, rowBytes_;
     std::array<std::vector<std::uint8_t>, 2> flags_;
     std::array<std::vector<RowSpan>, 2> spans_;
     std::array<std::vector<std::uint32_t>, 2> planar_;  // x then y edges of a slice, ping-pong

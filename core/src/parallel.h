@@ -2,12 +2,16 @@
 // Running a loop's iterations on a few threads.
 #include <algorithm>
 #include <atomic>
+#include <exception>
+#include <mutex>
 #include <thread>
 #include <vector>
 
 namespace isotrack::detail {
 
-// Runs fn(i) for i in [0, count) on `threads` threads, handing out indices in order.
+// Runs fn(i) for i in [0, count) on `threads` threads, handing out indices in
+// order. The first exception any iteration throws stops the hand-out and is
+// rethrown on the calling thread once every thread has stopped.
 template <class Fn>
 void parallelFor(int count, int threads, Fn&& fn) {
     if (threads <= 1 || count <= 1) {
@@ -15,13 +19,22 @@ void parallelFor(int count, int threads, Fn&& fn) {
         return;
     }
     std::atomic<int> next{0};
+    std::exception_ptr failure;
+    std::mutex failureMutex;
     auto work = [&] {
-        for (int i = next++; i < count; i = next++) fn(i);
+        try {
+            for (int i = next++; i < count; i = next++) fn(i);
+        } catch (...) {
+            next = count;
+            const std::lock_guard<std::mutex> lock(failureMutex);
+            if (!failure) failure = std::current_exception();
+        }
     };
     std::vector<std::thread> pool;
     for (int t = 1; t < std::min(threads, count); ++t) pool.emplace_back(work);
     work();
     for (auto& thread : pool) thread.join();
+    if (failure) std::rethrow_exception(failure);
 }
 
 }  // namespace isotrack::detail
