@@ -117,64 +117,70 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         surfaces[k].mesh.vertexEdges.resize(surfaces[k].stats.vertices);
         surfaces[k].mesh.indices.resize(3 * surfaces[k].stats.triangles);
     }
+    // The largest surface is compacted in the mesh's own buffers: each range's
+    // share moves to the start of the range (every element moves down, within the
+    // range), then the shares next to each other. A lone surface stays as it is.
+    const bool compact = count > 0 && surfaces[largest].stats.vertices != mesh.vertices.size();
+    // Triangles out to their surfaces, measured on the way, while the vertices are
+    // still in place. A range's triangles use the next range's vertices too.
+    forParts([&](const Range& part, std::size_t r) {
+        std::vector<Share>& share = shares[r];
+        std::vector<std::size_t> cursor(count);
+        // Per surface, where this range's and the next range's vertices start in it.
+        std::vector<std::uint32_t> base(count), nextBase(count, 0);
+        for (std::size_t k = 0; k < count; ++k) {
+            cursor[k] = 3 * share[k].triangleBase;
+            base[k] = static_cast<std::uint32_t>(share[k].vertexBase);
+            if (r + 1 < parts.size()) nextBase[k] = static_cast<std::uint32_t>(shares[r + 1][k].vertexBase);
+        }
+        std::size_t to = 3 * part.triangleBegin;
+        const std::uint32_t* localIndex = local.data();
+        const std::size_t vertexEnd = part.vertexEnd;
+        for (std::size_t t = part.triangleBegin; t < part.triangleEnd; ++t) {
+            const std::uint32_t* v = &mesh.indices[3 * t];
+            const std::uint32_t k = component[v[0]];
+            share[k].measure.add(mesh.vertices[v[0]].position, mesh.vertices[v[1]].position, mesh.vertices[v[2]].position);
+            const std::uint32_t own = base[k], next = nextBase[k];
+            std::uint32_t corners[3];
+            for (int c = 0; c < 3; ++c) corners[c] = localIndex[v[c]] + (v[c] < vertexEnd ? own : next);
+            std::uint32_t* out;
+            if (k != largest) {
+                out = surfaces[k].mesh.indices.data() + cursor[k];
+                cursor[k] += 3;
+            } else if (compact) {
+                out = mesh.indices.data() + to;
+                to += 3;
+            } else {
+                out = mesh.indices.data() + 3 * t;
+            }
+            std::copy_n(corners, 3, out);
+        }
+    });
     // Vertices out to their surfaces, measured on the way.
     forParts([&](const Range& part, std::size_t r) {
         std::vector<Share>& share = shares[r];
+        std::size_t to = part.vertexBegin;
         for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
             const std::uint32_t k = component[v];
             Share& s = share[k];
-            local[v] = static_cast<std::uint32_t>(local[v] + s.vertexBase);
             const Vertex& vertex = mesh.vertices[v];
             for (int a = 0; a < 3; ++a) {
                 s.boundsMin[a] = std::min(s.boundsMin[a], vertex.position[a]);
                 s.boundsMax[a] = std::max(s.boundsMax[a], vertex.position[a]);
             }
             if (!s.touchesBorder) s.touchesBorder = detail::edgeOnVolumeBorder(mesh.vertexEdges[v], dims);
-            if (k == largest) continue;
-            surfaces[k].mesh.vertices[local[v]] = vertex;
-            surfaces[k].mesh.vertexEdges[local[v]] = mesh.vertexEdges[v];
-        }
-    });
-    // Triangles once every vertex has its index (a range's triangles use the next
-    // range's vertices too), measured on the way.
-    forParts([&](const Range& part, std::size_t r) {
-        std::vector<Share>& share = shares[r];
-        std::vector<std::size_t> cursor(count);
-        for (std::size_t k = 0; k < count; ++k) cursor[k] = 3 * share[k].triangleBase;
-        for (std::size_t t = part.triangleBegin; t < part.triangleEnd; ++t) {
-            const std::uint32_t* v = &mesh.indices[3 * t];
-            const std::uint32_t k = component[v[0]];
-            share[k].measure.add(mesh.vertices[v[0]].position, mesh.vertices[v[1]].position, mesh.vertices[v[2]].position);
-            if (k == largest) continue;
-            std::uint32_t* out = surfaces[k].mesh.indices.data() + cursor[k];
-            out[0] = local[v[0]];
-            out[1] = local[v[1]];
-            out[2] = local[v[2]];
-            cursor[k] += 3;
-        }
-    });
-    // The largest surface, compacted in the mesh's own buffers once the others are
-    // out: first each range's share to the start of the range (every element
-    // moves down, within the range), then the shares next to each other.
-    if (count > 0 && surfaces[largest].stats.vertices != mesh.vertices.size()) {
-        forParts([&](const Range& part, std::size_t) {
-            std::size_t to = part.vertexBegin;
-            for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
-                if (component[v] != largest) continue;
-                mesh.vertices[to] = mesh.vertices[v];
+            if (k != largest) {
+                const std::size_t at = local[v] + s.vertexBase;
+                surfaces[k].mesh.vertices[at] = vertex;
+                surfaces[k].mesh.vertexEdges[at] = mesh.vertexEdges[v];
+            } else if (compact) {
+                mesh.vertices[to] = vertex;
                 mesh.vertexEdges[to++] = mesh.vertexEdges[v];
             }
-            to = 3 * part.triangleBegin;
-            for (std::size_t t = part.triangleBegin; t < part.triangleEnd; ++t) {
-                const std::uint32_t* v = &mesh.indices[3 * t];
-                if (component[v[0]] != largest) continue;
-                const std::uint32_t a = local[v[0]], b = local[v[1]], c = local[v[2]];
-                mesh.indices[to++] = a;
-                mesh.indices[to++] = b;
-                mesh.indices[to++] = c;
-            }
-        });
-        for (std::size_t r = 0; r < parts.size(); ++r) {
+        }
+    });
+    if (compact) {
+        for (std::size_t r = 1; r < parts.size(); ++r) {
             const Share& share = shares[r][largest];
             std::copy_n(mesh.vertices.begin() + std::ptrdiff_t(parts[r].vertexBegin), share.vertices,
                         mesh.vertices.begin() + std::ptrdiff_t(share.vertexBase));
