@@ -119,6 +119,9 @@ struct Chunk {
     Buffer<std::uint8_t> flagBits;
 };
 
+// Flags are read 8 at a time as 64-bit words, byte i of a word being flag i.
+static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "the exhaustive pass reads flags as little-endian words");
+
 // Flags packed 8 to a byte, bit i being flag i, and back.
 std::uint8_t packFlags(const std::uint8_t* flags) {
     std::uint64_t word;
@@ -151,7 +154,7 @@ public:
             planar_[s].assign(2 * sliceSize_, kNoVertex);
         }
         vertical_.assign(sliceSize_, kNoVertex);
-        columns_.assign(std::size_t(nx_), 0);
+        columns_.assign(std::size_t(nx_) + 16, 0);  // nextActiveCell reads 9 bytes at a time
         for (int c = 0; c < 256; ++c) {
             const CaseContinuation& cased = table_[std::size_t(c)];
             triangleCount_[std::size_t(c)] = cased.pieceCount == 0 ? 0 : cased.pieces[cased.pieceCount - 1].firstTriangle + cased.pieces[cased.pieceCount - 1].triangleCount;
@@ -289,11 +292,30 @@ private:
         return true;
     }
 
+    // The first cell x' in [x, end) whose corners disagree, or end; 8 cells per
+    // step. A cell is empty when its two columns of four flags are equal and
+    // either all below (0) or all above (15).
+    static int nextActiveCell(const std::uint8_t* columns, int x, int end) {
+        constexpr std::uint64_t kOnes = 0x0101010101010101ull, kMiddleBits = 0x0E0E0E0E0E0E0E0Eull;
+        for (; x < end; x += 8) {
+            std::uint64_t left, right;
+            std::memcpy(&left, columns + x, 8);
+            std::memcpy(&right, columns + x + 1, 8);
+            // Per byte (values 0..15, so no carries): b + 1 has none of bits 1-3 set only for 0 and 15.
+            const std::uint64_t active = ((left + kOnes) & kMiddleBits) | (left ^ right);
+            if (active != 0) return std::min(end, x + __builtin_ctzll(active) / 8);
+        }
+        return end;
+    }
+
     std::size_t rowTriangles(int y, int bottom, int top) {
         int begin, end;
         if (!rowRange(y, bottom, top, begin, end)) return 0;
         std::size_t triangles = 0;
-        for (int x = begin; x < end; ++x) triangles += triangleCount_[slots_.configOfColumns[columns_[std::size_t(x)] | columns_[std::size_t(x) + 1] << 4]];
+        const std::uint8_t* columns = columns_.data();
+        for (int x = nextActiveCell(columns, begin, end); x < end; x = nextActiveCell(columns, x + 1, end)) {
+            triangles += triangleCount_[slots_.configOfColumns[columns[x] | columns[x + 1] << 4]];
+        }
         return triangles;
     }
 
@@ -321,9 +343,8 @@ private:
         if (!rowRange(y, bottom, top, begin, end)) return;
         const std::size_t row = std::size_t(nx_) * std::size_t(y);
         const std::uint8_t* columns = columns_.data();
-        for (int x = begin; x < end; ++x) {
+        for (int x = nextActiveCell(columns, begin, end); x < end; x = nextActiveCell(columns, x + 1, end)) {
             const unsigned config = slots_.configOfColumns[columns[x] | columns[x + 1] << 4];
-            if (config == 0 || config == 255) continue;
             std::array<std::uint32_t, 12> ids;
             const std::size_t cell = row + std::size_t(x);
             for (unsigned mask = slots_.crossed[config]; mask != 0; mask &= mask - 1) {
