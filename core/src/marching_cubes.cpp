@@ -180,7 +180,7 @@ public:
             const std::size_t crossings = planarCrossings(top);
             keepSlice(z + 1, top, crossings);
             if (z + 1 < chunk_.zEnd || chunk_.last) vertices += crossings;
-            vertices += differences(flags_[bottom].data(), flags_[top].data(), sliceSize_);
+            vertices += verticalCrossings(bottom, top);
             for (int y = 0; y + 1 < ny_; ++y) triangles += rowTriangles(y, bottom, top);
         }
         chunk_.vertexCount = vertices;
@@ -288,7 +288,17 @@ private:
         const std::uint8_t* hi0 = flags_[top].data() + row;
         const std::uint8_t* hi1 = hi0 + nx_;
         std::uint8_t* columns = columns_.data();
-        for (int x = begin; x <= end; ++x) columns[x] = static_cast<std::uint8_t>(lo0[x] | lo1[x] << 1 | hi0[x] << 2 | hi1[x] << 3);
+        // 8 cells per step, as words of 0/1 bytes (no carries); the last step may
+        // write past `end` into columns_'s padding and read into flags_'s.
+        for (int x = begin; x <= end; x += 8) {
+            std::uint64_t a, b, c, d;
+            std::memcpy(&a, lo0 + x, 8);
+            std::memcpy(&b, lo1 + x, 8);
+            std::memcpy(&c, hi0 + x, 8);
+            std::memcpy(&d, hi1 + x, 8);
+            const std::uint64_t word = a | b << 1 | c << 2 | d << 3;
+            std::memcpy(columns + x, &word, 8);
+        }
         return true;
     }
 
@@ -325,6 +335,22 @@ private:
         return count;
     }
 
+    // The number of samples where two rows differ; rows without a change of flag are compared by their first flag.
+    std::size_t rowDifferences(const std::uint8_t* a, const RowSpan& spanA, const std::uint8_t* b, const RowSpan& spanB) const {
+        if (spanA.lo >= spanA.hi && spanB.lo >= spanB.hi) return spanA.first != spanB.first ? std::size_t(nx_) : 0;
+        return differences(a, b, std::size_t(nx_));
+    }
+
+    // Crossed z-edges between the slices in `bottom` and `top`.
+    std::size_t verticalCrossings(int bottom, int top) const {
+        std::size_t count = 0;
+        for (int y = 0; y < ny_; ++y) {
+            const std::size_t row = std::size_t(nx_) * std::size_t(y);
+            count += rowDifferences(flags_[bottom].data() + row, spans_[bottom][std::size_t(y)], flags_[top].data() + row, spans_[top][std::size_t(y)]);
+        }
+        return count;
+    }
+
     // Crossed x- and y-edges of the slice in `slot`.
     std::size_t planarCrossings(int slot) const {
         const std::uint8_t* flags = flags_[slot].data();
@@ -333,7 +359,7 @@ private:
             const std::uint8_t* row = flags + std::size_t(nx_) * std::size_t(y);
             const RowSpan& span = spans_[slot][std::size_t(y)];
             if (span.lo < span.hi) count += differences(row + span.lo, row + span.lo + 1, std::size_t(span.hi - span.lo));
-            if (y + 1 < ny_) count += differences(row, row + nx_, std::size_t(nx_));
+            if (y + 1 < ny_) count += rowDifferences(row, span, row + nx_, spans_[slot][std::size_t(y) + 1]);
         }
         return count;
     }
