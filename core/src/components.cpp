@@ -141,8 +141,10 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             const std::uint32_t k = component[v[0]];
             share[k].measure.add(mesh.vertices[v[0]].position, mesh.vertices[v[1]].position, mesh.vertices[v[2]].position);
             const std::uint32_t own = base[k], next = nextBase[k];
-            std::uint32_t corners[3];
-            for (int c = 0; c < 3; ++c) corners[c] = localIndex[v[c]] + (v[c] < vertexEnd ? own : next);
+            // Read before writing: a compacted triangle may land on its own corners.
+            const std::uint32_t a = localIndex[v[0]] + (v[0] < vertexEnd ? own : next);
+            const std::uint32_t b = localIndex[v[1]] + (v[1] < vertexEnd ? own : next);
+            const std::uint32_t c = localIndex[v[2]] + (v[2] < vertexEnd ? own : next);
             std::uint32_t* out;
             if (k != largest) {
                 out = surfaces[k].mesh.indices.data() + cursor[k];
@@ -153,7 +155,9 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             } else {
                 out = mesh.indices.data() + 3 * t;
             }
-            std::copy_n(corners, 3, out);
+            out[0] = a;  // one store each: assembling the three elsewhere and copying them stalls
+            out[1] = b;
+            out[2] = c;
         }
     });
     // Vertices out to their surfaces, measured on the way.
@@ -208,8 +212,8 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             const Share& s = share[k];
             stats.cellsVisited += s.pieces;
             stats.touchesBorder = stats.touchesBorder || s.touchesBorder;
-            stats.area += s.measure.area;
-            signedVolume += s.measure.signedVolume;
+            stats.area += s.measure.area();
+            signedVolume += s.measure.signedVolume();
             for (int a = 0; a < 3; ++a) {
                 stats.boundsMin[a] = std::min(stats.boundsMin[a], double(s.boundsMin[a]));
                 stats.boundsMax[a] = std::max(stats.boundsMax[a], double(s.boundsMax[a]));

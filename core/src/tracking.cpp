@@ -669,8 +669,8 @@ SurfaceStats measureSurface(const Mesh& mesh, const Volume& volume, bool closedU
             stats.boundsMax[k] = std::max(stats.boundsMax[k], part.boundsMax[k]);
         }
         stats.touchesBorder = stats.touchesBorder || part.touchesBorder;
-        stats.area += part.measure.area;
-        signedVolume += part.measure.signedVolume;
+        stats.area += part.measure.area();
+        signedVolume += part.measure.signedVolume();
     }
     stats.closed = closedUnlessOnBorder ? !stats.touchesBorder && !mesh.indices.empty() : detail::meshIsClosed(mesh);
     if (stats.closed) stats.enclosedVolume = std::abs(signedVolume);
