@@ -151,9 +151,7 @@ public:
         for (int s = 0; s < 2; ++s) {
             flags_[s].assign(sliceSize_ + 8, 0);  // rows are packed and unpacked 8 flags at a time
             spans_[s].assign(std::size_t(ny_), RowSpan{});
-            planar_[s].assign(2 * sliceSize_, kNoVertex);
         }
-        vertical_.assign(sliceSize_, kNoVertex);
         columns_.assign(std::size_t(nx_) + 16, 0);  // nextActiveCell reads 9 bytes at a time
         for (int c = 0; c < 256; ++c) {
             const CaseContinuation& cased = table_[std::size_t(c)];
@@ -190,6 +188,8 @@ public:
     // Writes the chunk into mesh_, whose buffers already have their final size.
     void run() {
         if (markPieces_) chunk_.pieceStarts.assign(chunk_.triangleCount / 8 + 1, 0);
+        for (auto& planar : planar_) planar.assign(2 * sliceSize_, kNoVertex);  // vertex id caches, for writing only
+        vertical_.assign(sliceSize_, kNoVertex);
         restoreSlice(chunk_.zBegin, 0);
         threshold_[0] = 0;
         for (int z = chunk_.zBegin; z < chunk_.zEnd; ++z) {
