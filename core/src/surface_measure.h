@@ -1,5 +1,6 @@
 #pragma once
 // Measuring surfaces, shared by the tracker and by the labelled exhaustive pass.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -40,6 +41,24 @@ struct TriangleMeasure {
         const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
         doubleArea += std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
         sixfoldVolume += double(a[0]) * n[0] + double(a[1]) * n[1] + double(a[2]) * n[2];
+    }
+};
+
+// A surface's figures, accumulated vertex by vertex and triangle by triangle.
+struct SurfaceMeasure {
+    TriangleMeasure triangles;
+    float boundsMin[3] = {INFINITY, INFINITY, INFINITY}, boundsMax[3] = {-INFINITY, -INFINITY, -INFINITY};
+    bool touchesBorder = false;
+
+    void addVertex(const Vertex& v, const GridEdge& e, const Dims& dims) {
+        for (int k = 0; k < 3; ++k) {
+            boundsMin[k] = std::min(boundsMin[k], v.position[k]);
+            boundsMax[k] = std::max(boundsMax[k], v.position[k]);
+        }
+        if (!touchesBorder) touchesBorder = edgeOnVolumeBorder(e, dims);
+    }
+    void addTriangle(const Vertex* vertices, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        triangles.add(vertices[a].position, vertices[b].position, vertices[c].position);
     }
 };
 

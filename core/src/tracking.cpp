@@ -22,7 +22,9 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <exception>
 #include <string>
+#include <thread>
 
 #include "edge_vertex.h"
 #include "flat_hash.h"
@@ -30,6 +32,7 @@
 #include "parallel.h"
 #include "sparse_blocks.h"
 #include "surface_measure.h"
+#include "work_stream.h"
 #include "isotrack/continuation.h"
 #include "isotrack/cube.h"
 #include "isotrack/errors.h"
@@ -202,7 +205,11 @@ struct TrackState {
     Mesh mesh;
     detail::SparseBlocks blocks;
     std::uint8_t* denseVisited = nullptr;  // one bit per piece per cell, for trackAllSurfaces
-    bool deferVertices = false;            // vertices get their grid edge only; fillVertices computes them later
+    // Either the walk computes vertices and, given `measure`, measures as it goes;
+    // or, given `stream`, it records grid edges only and hands each new vertex and
+    // triangle, in order, to a thread that computes and measures them (consume).
+    detail::SurfaceMeasure* measure = nullptr;
+    detail::WorkStream* stream = nullptr;
     PieceQueue queue;
     std::size_t cellsVisited = 0;
     bool leftVolume = false;
@@ -216,9 +223,14 @@ public:
     virtual std::size_t advance(TrackState& state, std::size_t cellBudget) const = 0;
     virtual std::uint8_t config(int x, int y, int z) const = 0;
     virtual bool crossed(const GridEdge& edge) const = 0;
-    // Computes vertices [begin, end) of a mesh from their grid edges.
-    virtual void fillVertices(Mesh& mesh, std::size_t begin, std::size_t end) const = 0;
+    // Computes into `vertices` and measures what a walk hands over in `stream`, until it finishes.
+    virtual void consume(detail::WorkStream& stream, Buffer<Vertex>& vertices, detail::SurfaceMeasure& measure) const = 0;
 };
+
+// Words of a WorkStream: a vertex is its packed grid edge (top bit clear); a
+// triangle is two words, kTriangleTag | a | b << 32, then c.
+constexpr std::uint64_t kTriangleTag = std::uint64_t(1) << 63;
+constexpr std::uint32_t kMaxStreamedVertices = 1u << 31;
 
 template <class T>
 class TypedTrackWorker final : public TrackWorker {
@@ -228,7 +240,7 @@ class TypedTrackWorker final : public TrackWorker {
 
 public:
     TypedTrackWorker(const Volume& volume, const T* samples, double iso, TableKind table)
-        : grid_(volume, samples, iso), walk_(walkTable(table)) {
+        : grid_(volume, samples, iso), dims_(volume.dims()), walk_(walkTable(table)) {
         const std::size_t stride[3] = {1, grid_.strideY(), grid_.strideZ()};
         const int last[3] = {grid_.nx() - 2, grid_.ny() - 2, grid_.nz() - 2};
         for (int f = 0; f < cube::kFaceCount; ++f) {
@@ -250,15 +262,22 @@ public:
         enqueueIn(state, state.blocks.indexAt(x, y, z), detail::SparseBlocks::local(x, y, z), grid_.index(x, y, z), edge);
     }
 
-    void fillVertices(Mesh& mesh, std::size_t begin, std::size_t end) const override {
-        for (std::size_t i = begin; i < end; ++i) {
-            const GridEdge e = mesh.vertexEdges[i];
-            switch (e.axis) {
-                case 0: vertexAlong<0>(e.x, e.y, e.z, mesh.vertices[i]); break;
-                case 1: vertexAlong<1>(e.x, e.y, e.z, mesh.vertices[i]); break;
-                default: vertexAlong<2>(e.x, e.y, e.z, mesh.vertices[i]); break;
+    void consume(detail::WorkStream& stream, Buffer<Vertex>& vertices, detail::SurfaceMeasure& measure) const override {
+        Appender<Vertex> out(vertices);
+        std::uint64_t first = 0;  // a triangle's first word, until its second arrives
+        stream.drain([&](std::uint64_t word) {
+            if (first != 0) {
+                measure.addTriangle(vertices.data(), std::uint32_t(first), std::uint32_t(first >> 32 & 0x7fffffffu), std::uint32_t(word));
+                first = 0;
+            } else if (word & kTriangleTag) {
+                first = word;
+            } else {
+                const GridEdge e = PackedGridEdge::fromBits(word);
+                Vertex& v = *out.extend(1);
+                computeVertex(e, v);
+                measure.addVertex(v, e, dims_);
             }
-        }
+        });
     }
 
     std::size_t advance(TrackState& state, std::size_t cellBudget) const override {
@@ -279,11 +298,20 @@ public:
                 const int edge = __builtin_ctz(mask);
                 std::uint32_t& id = cornersInBlock ? block.vertex[std::size_t(3 * (cell + walk_.edgeLocal[edge]) + walk_.edgeAxis[edge])]
                                                    : vertexSlot(state, entry.block, local, edge);
-                if (id == detail::SparseBlocks::kNoVertex) id = newVertex(out, at, edge, state.deferVertices);
+                if (id == detail::SparseBlocks::kNoVertex) id = newVertex(state, out, at, edge);
                 vertexOf[edge] = id;
             }
             std::uint32_t* indices = out.indices.extend(walk.cornerCount);
             for (int k = 0; k < walk.cornerCount; ++k) indices[k] = vertexOf[walk.corners[std::size_t(k)]];
+            if (state.measure) {
+                for (int k = 0; k < walk.cornerCount; k += 3) state.measure->addTriangle(state.mesh.vertices.data(), indices[k], indices[k + 1], indices[k + 2]);
+            } else if (state.stream) {
+                for (int k = 0; k < walk.cornerCount; k += 3) {
+                    state.stream->push(kTriangleTag | indices[k] | std::uint64_t(indices[k + 1]) << 32);
+                    state.stream->push(indices[k + 2]);
+                }
+                if ((visited & 63) == 0) state.stream->publish();
+            }
             const std::size_t sample = grid_.index(at[0], at[1], at[2]);
             for (int k = 0; k < walk.exitCount; ++k) {
                 const int f = walk.exits[std::size_t(k)] >> 4, edge = walk.exits[std::size_t(k)] & 15;
@@ -298,6 +326,7 @@ public:
                 }
             }
         }
+        if (state.stream) state.stream->publish();
         state.cellsVisited += visited;
         return visited;
     }
@@ -353,21 +382,33 @@ private:
         }
     }
 
-    std::uint32_t newVertex(MeshAppender& out, const int at[3], int edge, bool defer) const {
-        const auto& o = walk_.edgeOrigin[edge];
-        const int axis = walk_.edgeAxis[edge];
-        const int x = at[0] + o[0], y = at[1] + o[1], z = at[2] + o[2];
-        Vertex& v = *out.vertices.extend(1);
-        if (!defer) switch (axis) {
-            case 0: vertexAlong<0>(x, y, z, v); break;
-            case 1: vertexAlong<1>(x, y, z, v); break;
-            default: vertexAlong<2>(x, y, z, v); break;
+    void computeVertex(const GridEdge& e, Vertex& v) const {
+        switch (e.axis) {
+            case 0: vertexAlong<0>(e.x, e.y, e.z, v); break;
+            case 1: vertexAlong<1>(e.x, e.y, e.z, v); break;
+            default: vertexAlong<2>(e.x, e.y, e.z, v); break;
         }
-        *out.vertexEdges.extend(1) = GridEdge{x, y, z, axis};
-        return static_cast<std::uint32_t>(out.vertices.size() - 1);
+    }
+
+    std::uint32_t newVertex(TrackState& state, MeshAppender& out, const int at[3], int edge) const {
+        const auto& o = walk_.edgeOrigin[edge];
+        const GridEdge e{at[0] + o[0], at[1] + o[1], at[2] + o[2], walk_.edgeAxis[edge]};
+        PackedGridEdge& packed = *out.vertexEdges.extend(1);
+        packed = e;
+        const std::size_t id = out.vertexEdges.size() - 1;
+        if (state.stream) {
+            if (id >= kMaxStreamedVertices) throw std::length_error("tracking: more than 2^31 vertices");
+            state.stream->push(packed.bits());
+            return static_cast<std::uint32_t>(id);
+        }
+        Vertex& v = *out.vertices.extend(1);
+        computeVertex(e, v);
+        if (state.measure) state.measure->addVertex(v, e, dims_);
+        return static_cast<std::uint32_t>(id);
     }
 
     detail::SampleGrid<T> grid_;
+    const Dims dims_;
     const WalkTable& walk_;
     std::array<std::size_t, 6> sampleStep_{};  // to the first corner of the cell across each face
     std::array<int, 6> border_{};              // the cells' coordinate on the volume's border, per face
@@ -545,28 +586,81 @@ Mesh SurfaceTracker::takeMesh() { return std::move(impl_->state.mesh); }
 
 // ---- whole surfaces -------------------------------------------------------
 
-// On one thread each vertex is computed as the walk meets it, while its samples
-// are in cache. On more, the walk only records the vertices' grid edges, and the
-// vertices are computed afterwards, in parallel, as is the measuring.
+namespace {
+
+// The figures of a tracked surface from its measure. With the consistent table a
+// tracked surface has no holes: it is closed exactly when the border does not cut it.
+SurfaceStats statsOf(const Mesh& mesh, const detail::SurfaceMeasure& measure, TableKind table) {
+    SurfaceStats stats;
+    stats.triangles = mesh.triangleCount();
+    stats.vertices = mesh.vertices.size();
+    stats.bytes = mesh.byteSize();
+    if (!mesh.vertices.empty()) {
+        for (int k = 0; k < 3; ++k) {
+            stats.boundsMin[k] = measure.boundsMin[k];
+            stats.boundsMax[k] = measure.boundsMax[k];
+        }
+    }
+    stats.area = measure.triangles.area();
+    stats.touchesBorder = measure.touchesBorder;
+    stats.closed = table == TableKind::Consistent ? !stats.touchesBorder && !mesh.indices.empty() : detail::meshIsClosed(mesh);
+    if (stats.closed) stats.enclosedVolume = std::abs(measure.triangles.signedVolume());
+    return stats;
+}
+
+// Cells walked on one thread before a surface counts as large enough to share out.
+constexpr std::size_t kCellsBeforeSharing = 4096;
+
+}  // namespace
+
+// The walk computes each vertex as it meets it and measures as it goes. With
+// more threads, once a surface proves large, the walk goes on recording grid
+// edges only and hands every new vertex and triangle, in order, to a second
+// thread that computes and measures them meanwhile: the figures accumulate in
+// the same order, so the surface and its figures are the same on any number of
+// threads.
 Surface trackSurface(const Volume& volume, double iso, const GridEdge& seed, TableKind table, int threads) {
     const auto start = Clock::now();
     const auto worker = makeWorker(volume, iso, table);
     checkSeed(volume, iso, *worker, seed);
     TrackState state(volume.dims());
-    state.deferVertices = threads > 1;
+    detail::SurfaceMeasure measure;
+    state.measure = &measure;
     queueSeed(volume, seed, *worker, state);
-    while (!state.queue.empty()) worker->advance(state, std::numeric_limits<std::size_t>::max());
+    const std::size_t firstBudget = threads > 1 ? kCellsBeforeSharing : std::numeric_limits<std::size_t>::max();
+    worker->advance(state, firstBudget);
+    if (!state.queue.empty()) {
+        if (threads > 1) {
+            detail::WorkStream stream;
+            Buffer<Vertex> vertices = std::move(state.mesh.vertices);
+            std::exception_ptr consumerFailure;
+            std::thread consumer([&] {
+                try {
+                    worker->consume(stream, vertices, measure);
+                } catch (...) {
+                    consumerFailure = std::current_exception();
+                }
+            });
+            state.measure = nullptr;
+            state.stream = &stream;
+            try {
+                while (!state.queue.empty()) worker->advance(state, std::numeric_limits<std::size_t>::max());
+            } catch (...) {
+                stream.finish();
+                consumer.join();
+                throw;
+            }
+            stream.finish();
+            consumer.join();
+            if (consumerFailure) std::rethrow_exception(consumerFailure);
+            state.mesh.vertices = std::move(vertices);
+        } else {
+            while (!state.queue.empty()) worker->advance(state, std::numeric_limits<std::size_t>::max());
+        }
+    }
     Surface surface;
     surface.mesh = std::move(state.mesh);
-    if (state.deferVertices) {
-        Mesh& mesh = surface.mesh;
-        const int parts = 4 * threads;
-        detail::parallelFor(parts, threads, [&](int r) {
-            worker->fillVertices(mesh, mesh.vertices.size() * std::size_t(r) / std::size_t(parts),
-                                 mesh.vertices.size() * std::size_t(r + 1) / std::size_t(parts));
-        });
-    }
-    surface.stats = measureTracked(surface.mesh, volume, table, threads);
+    surface.stats = statsOf(surface.mesh, measure, table);
     surface.stats.cellsVisited = state.cellsVisited;
     surface.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return surface;

@@ -144,11 +144,15 @@ TEST_CASE("tracking on several threads gives the one-thread surface and figures 
     for (int z = 0; z < n[2]; ++z)
         for (int y = 0; y < n[1]; ++y)
             for (int x = 0; x < n[0]; ++x) ints.setValue(x, y, z, std::round(1000.0 * noise.value(x, y, z)));
-    for (const auto& [volume, iso] : {std::pair<const Volume&, double>{noise, 0.5}, {ints, 500.5}}) {
+    // The gyroid fills its volume: tens of thousands of cells, enough for the work to be shared out.
+    const Volume gyroid = makeField({"gyroid", 48});
+    for (const auto& [volume, iso] : {std::pair<const Volume&, double>{noise, 0.5}, {ints, 500.5}, {gyroid, 0.0}}) {
         const Surface largest = extractAllSurfaces(volume, iso).front();
         const GridEdge seed = largest.mesh.vertexEdges[0];
         const Surface one = trackSurface(volume, iso, seed);
         REQUIRE(one.mesh.triangleCount() == largest.mesh.triangleCount());
+        CHECK(one.stats.area == Approx(largest.stats.area));
+        if (&volume == &gyroid) CHECK(one.stats.cellsVisited > 20000);
         for (int threads : {2, 3}) {
             const Surface many = trackSurface(volume, iso, seed, TableKind::Consistent, threads);
             REQUIRE(many.mesh.vertices.size() == one.mesh.vertices.size());
