@@ -39,12 +39,25 @@ struct Range {
     std::size_t chunkBegin = 0, chunkEnd = 0;
 };
 
+// Ranges end at the chunk boundaries nearest to equal shares of the triangles.
 std::vector<Range> ranges(const std::vector<detail::MarchedChunk>& chunks, int threads) {
+    if (chunks.empty()) return {};
     const std::size_t count = std::min(chunks.size(), std::size_t(std::max(1, threads)));
+    const std::size_t triangles = chunks.back().triangleEnd;
     std::vector<Range> out(count);
+    std::size_t begin = 0;
     for (std::size_t r = 0; r < count; ++r) {
-        const std::size_t begin = chunks.size() * r / count, end = chunks.size() * (r + 1) / count;
+        // At least one chunk each, ending where the running count is nearest the target.
+        const std::size_t target = triangles * (r + 1) / count, limit = chunks.size() - (count - r - 1);
+        std::size_t end = begin + 1;
+        while (end < limit) {
+            const std::size_t here = chunks[end - 1].triangleEnd, next = chunks[end].triangleEnd;
+            if (here >= target || (next >= target && next - target >= target - here)) break;
+            ++end;
+        }
+        if (r + 1 == count) end = chunks.size();
         out[r] = {chunks[begin].vertexBegin, chunks[end - 1].vertexEnd, chunks[begin].triangleBegin, chunks[end - 1].triangleEnd, begin, end};
+        begin = end;
     }
     return out;
 }
