@@ -120,17 +120,22 @@ void requireSameVertexBits(const Volume& volume, double iso) {
     CHECK(compared == whole.vertices.size());
 }
 
+// White noise of size n as int16 samples (0..1000), with anisotropic spacing and an offset origin.
+Volume int16Noise(int n) {
+    const Volume noise = makeField({"noise", n});
+    Volume volume(noise.dims(), ScalarType::Int16, {0.75, 1.0, 1.5}, {-3.0, 2.0, 0.5});
+    for (int z = 0; z < n; ++z)
+        for (int y = 0; y < n; ++y)
+            for (int x = 0; x < n; ++x) volume.setValue(x, y, z, std::round(1000.0 * noise.value(x, y, z)));
+    return volume;
+}
+
 }  // namespace
 
 TEST_CASE("tracked vertices are the exhaustive pass's, bit for bit", "[core][tracking]") {
     SECTION("float samples, cut by the border") { requireSameVertexBits(makeField({"noise", 24}), 0.5); }
     SECTION("int16 samples, anisotropic spacing, offset origin") {
-        const Volume noise = makeField({"noise", 20});
-        Volume volume(noise.dims(), ScalarType::Int16, {0.75, 1.0, 1.5}, {-3.0, 2.0, 0.5});
-        const Dims& n = volume.dims();
-        for (int z = 0; z < n[2]; ++z)
-            for (int y = 0; y < n[1]; ++y)
-                for (int x = 0; x < n[0]; ++x) volume.setValue(x, y, z, std::round(1000.0 * noise.value(x, y, z)));
+        const Volume volume = int16Noise(20);
         requireSameVertexBits(volume, 400.0);
         requireSameVertexBits(volume, 500.5);
     }
@@ -139,11 +144,7 @@ TEST_CASE("tracked vertices are the exhaustive pass's, bit for bit", "[core][tra
 TEST_CASE("tracking on several threads gives the one-thread surface and figures exactly", "[core][tracking]") {
     // Float samples cut by the border (border gradients), and int16 samples.
     const Volume noise = makeField({"noise", 24});
-    Volume ints(noise.dims(), ScalarType::Int16, {0.75, 1.0, 1.5}, {-3.0, 2.0, 0.5});
-    const Dims& n = noise.dims();
-    for (int z = 0; z < n[2]; ++z)
-        for (int y = 0; y < n[1]; ++y)
-            for (int x = 0; x < n[0]; ++x) ints.setValue(x, y, z, std::round(1000.0 * noise.value(x, y, z)));
+    const Volume ints = int16Noise(24);
     // The gyroid fills its volume: tens of thousands of cells, enough for the work to be shared out.
     const Volume gyroid = makeField({"gyroid", 48});
     for (const auto& [volume, iso] : {std::pair<const Volume&, double>{noise, 0.5}, {ints, 500.5}, {gyroid, 0.0}}) {
