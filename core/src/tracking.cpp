@@ -22,17 +22,13 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <exception>
 #include <string>
-#include <thread>
 
 #include "edge_vertex.h"
 #include "flat_hash.h"
 #include "huge_pages.h"
-#include "parallel.h"
 #include "sparse_blocks.h"
 #include "surface_measure.h"
-#include "work_stream.h"
 #include "isotrack/continuation.h"
 #include "isotrack/cube.h"
 #include "isotrack/errors.h"
@@ -41,12 +37,6 @@ namespace isotrack {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-// With the consistent table a tracked surface has no holes: it is closed exactly
-// when the volume's border does not cut it.
-SurfaceStats measureTracked(const Mesh& mesh, const Volume& volume, TableKind table, int threads = 1) {
-    return measureSurface(mesh, volume, table == TableKind::Consistent, threads);
-}
 
 // A cell piece waiting in the queue; it was marked when queued, so each piece is
 // queued once.
@@ -205,11 +195,7 @@ struct TrackState {
     Mesh mesh;
     detail::SparseBlocks blocks;
     std::uint8_t* denseVisited = nullptr;  // one bit per piece per cell, for trackAllSurfaces
-    // Either the walk computes vertices and, given `measure`, measures as it goes;
-    // or, given `stream`, it records grid edges only and hands each new vertex and
-    // triangle, in order, to a thread that computes and measures them (consume).
-    detail::SurfaceMeasure* measure = nullptr;
-    detail::WorkStream* stream = nullptr;
+    detail::SurfaceMeasure* measure = nullptr;  // when given, the walk measures the surface as it goes
     PieceQueue queue;
     std::size_t cellsVisited = 0;
     bool leftVolume = false;
@@ -223,14 +209,7 @@ public:
     virtual std::size_t advance(TrackState& state, std::size_t cellBudget) const = 0;
     virtual std::uint8_t config(int x, int y, int z) const = 0;
     virtual bool crossed(const GridEdge& edge) const = 0;
-    // Computes into `vertices` and measures what a walk hands over in `stream`, until it finishes.
-    virtual void consume(detail::WorkStream& stream, Buffer<Vertex>& vertices, detail::SurfaceMeasure& measure) const = 0;
 };
-
-// Words of a WorkStream: a vertex is its packed grid edge (top bit clear); a
-// triangle is two words, kTriangleTag | a | b << 32, then c.
-constexpr std::uint64_t kTriangleTag = std::uint64_t(1) << 63;
-constexpr std::uint32_t kMaxStreamedVertices = 1u << 31;
 
 template <class T>
 class TypedTrackWorker final : public TrackWorker {
@@ -262,24 +241,6 @@ public:
         enqueueIn(state, state.blocks.indexAt(x, y, z), detail::SparseBlocks::local(x, y, z), grid_.index(x, y, z), edge);
     }
 
-    void consume(detail::WorkStream& stream, Buffer<Vertex>& vertices, detail::SurfaceMeasure& measure) const override {
-        Appender<Vertex> out(vertices);
-        std::uint64_t first = 0;  // a triangle's first word, until its second arrives
-        stream.drain([&](std::uint64_t word) {
-            if (first != 0) {
-                measure.addTriangle(vertices.data(), std::uint32_t(first), std::uint32_t(first >> 32 & 0x7fffffffu), std::uint32_t(word));
-                first = 0;
-            } else if (word & kTriangleTag) {
-                first = word;
-            } else {
-                const GridEdge e = PackedGridEdge::fromBits(word);
-                Vertex& v = *out.extend(1);
-                computeVertex(e, v);
-                measure.addVertex(v, e, dims_);
-            }
-        });
-    }
-
     std::size_t advance(TrackState& state, std::size_t cellBudget) const override {
         MeshAppender out(state.mesh);
         std::size_t visited = 0;
@@ -305,12 +266,6 @@ public:
             for (int k = 0; k < walk.cornerCount; ++k) indices[k] = vertexOf[walk.corners[std::size_t(k)]];
             if (state.measure) {
                 for (int k = 0; k < walk.cornerCount; k += 3) state.measure->addTriangle(state.mesh.vertices.data(), indices[k], indices[k + 1], indices[k + 2]);
-            } else if (state.stream) {
-                for (int k = 0; k < walk.cornerCount; k += 3) {
-                    state.stream->push(kTriangleTag | indices[k] | std::uint64_t(indices[k + 1]) << 32);
-                    state.stream->push(indices[k + 2]);
-                }
-                if ((visited & 63) == 0) state.stream->publish();
             }
             const std::size_t sample = grid_.index(at[0], at[1], at[2]);
             for (int k = 0; k < walk.exitCount; ++k) {
@@ -326,7 +281,6 @@ public:
                 }
             }
         }
-        if (state.stream) state.stream->publish();
         state.cellsVisited += visited;
         return visited;
     }
@@ -382,29 +336,18 @@ private:
         }
     }
 
-    void computeVertex(const GridEdge& e, Vertex& v) const {
+    std::uint32_t newVertex(TrackState& state, MeshAppender& out, const int at[3], int edge) const {
+        const auto& o = walk_.edgeOrigin[edge];
+        const GridEdge e{at[0] + o[0], at[1] + o[1], at[2] + o[2], walk_.edgeAxis[edge]};
+        Vertex& v = *out.vertices.extend(1);
         switch (e.axis) {
             case 0: vertexAlong<0>(e.x, e.y, e.z, v); break;
             case 1: vertexAlong<1>(e.x, e.y, e.z, v); break;
             default: vertexAlong<2>(e.x, e.y, e.z, v); break;
         }
-    }
-
-    std::uint32_t newVertex(TrackState& state, MeshAppender& out, const int at[3], int edge) const {
-        const auto& o = walk_.edgeOrigin[edge];
-        const GridEdge e{at[0] + o[0], at[1] + o[1], at[2] + o[2], walk_.edgeAxis[edge]};
-        PackedGridEdge& packed = *out.vertexEdges.extend(1);
-        packed = e;
-        const std::size_t id = out.vertexEdges.size() - 1;
-        if (state.stream) {
-            if (id >= kMaxStreamedVertices) throw std::length_error("tracking: more than 2^31 vertices");
-            state.stream->push(packed.bits());
-            return static_cast<std::uint32_t>(id);
-        }
-        Vertex& v = *out.vertices.extend(1);
-        computeVertex(e, v);
+        *out.vertexEdges.extend(1) = e;
         if (state.measure) state.measure->addVertex(v, e, dims_);
-        return static_cast<std::uint32_t>(id);
+        return static_cast<std::uint32_t>(out.vertices.size() - 1);
     }
 
     detail::SampleGrid<T> grid_;
@@ -588,9 +531,10 @@ Mesh SurfaceTracker::takeMesh() { return std::move(impl_->state.mesh); }
 
 namespace {
 
-// The figures of a tracked surface from its measure. With the consistent table a
-// tracked surface has no holes: it is closed exactly when the border does not cut it.
-SurfaceStats statsOf(const Mesh& mesh, const detail::SurfaceMeasure& measure, TableKind table) {
+// The figures of a surface from its measure. With `closedUnlessOnBorder` (the
+// consistent table leaves no holes) a surface is closed exactly when the border
+// does not cut it; otherwise every edge is checked.
+SurfaceStats statsOf(const Mesh& mesh, const detail::SurfaceMeasure& measure, bool closedUnlessOnBorder) {
     SurfaceStats stats;
     stats.triangles = mesh.triangleCount();
     stats.vertices = mesh.vertices.size();
@@ -603,67 +547,33 @@ SurfaceStats statsOf(const Mesh& mesh, const detail::SurfaceMeasure& measure, Ta
     }
     stats.area = measure.triangles.area();
     stats.touchesBorder = measure.touchesBorder;
-    stats.closed = table == TableKind::Consistent ? !stats.touchesBorder && !mesh.indices.empty() : detail::meshIsClosed(mesh);
+    stats.closed = closedUnlessOnBorder ? !stats.touchesBorder && !mesh.indices.empty() : detail::meshIsClosed(mesh);
     if (stats.closed) stats.enclosedVolume = std::abs(measure.triangles.signedVolume());
     return stats;
 }
 
-// Cells walked on one thread before a surface counts as large enough to share out.
-constexpr std::size_t kCellsBeforeSharing = 4096;
+// Walks the surface from the queued seed to the end, measuring it on the way.
+Surface walkWhole(const TrackWorker& worker, TrackState& state, TableKind table, Clock::time_point start) {
+    detail::SurfaceMeasure measure;
+    state.measure = &measure;
+    while (!state.queue.empty()) worker.advance(state, std::numeric_limits<std::size_t>::max());
+    Surface surface;
+    surface.mesh = std::move(state.mesh);
+    surface.stats = statsOf(surface.mesh, measure, table == TableKind::Consistent);
+    surface.stats.cellsVisited = state.cellsVisited;
+    surface.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return surface;
+}
 
 }  // namespace
 
-// The walk computes each vertex as it meets it and measures as it goes. With
-// more threads, once a surface proves large, the walk goes on recording grid
-// edges only and hands every new vertex and triangle, in order, to a second
-// thread that computes and measures them meanwhile: the figures accumulate in
-// the same order, so the surface and its figures are the same on any number of
-// threads.
-Surface trackSurface(const Volume& volume, double iso, const GridEdge& seed, TableKind table, int threads) {
+Surface trackSurface(const Volume& volume, double iso, const GridEdge& seed, TableKind table) {
     const auto start = Clock::now();
     const auto worker = makeWorker(volume, iso, table);
     checkSeed(volume, iso, *worker, seed);
     TrackState state(volume.dims());
-    detail::SurfaceMeasure measure;
-    state.measure = &measure;
     queueSeed(volume, seed, *worker, state);
-    const std::size_t firstBudget = threads > 1 ? kCellsBeforeSharing : std::numeric_limits<std::size_t>::max();
-    worker->advance(state, firstBudget);
-    if (!state.queue.empty()) {
-        if (threads > 1) {
-            detail::WorkStream stream;
-            Buffer<Vertex> vertices = std::move(state.mesh.vertices);
-            std::exception_ptr consumerFailure;
-            std::thread consumer([&] {
-                try {
-                    worker->consume(stream, vertices, measure);
-                } catch (...) {
-                    consumerFailure = std::current_exception();
-                }
-            });
-            state.measure = nullptr;
-            state.stream = &stream;
-            try {
-                while (!state.queue.empty()) worker->advance(state, std::numeric_limits<std::size_t>::max());
-            } catch (...) {
-                stream.finish();
-                consumer.join();
-                throw;
-            }
-            stream.finish();
-            consumer.join();
-            if (consumerFailure) std::rethrow_exception(consumerFailure);
-            state.mesh.vertices = std::move(vertices);
-        } else {
-            while (!state.queue.empty()) worker->advance(state, std::numeric_limits<std::size_t>::max());
-        }
-    }
-    Surface surface;
-    surface.mesh = std::move(state.mesh);
-    surface.stats = statsOf(surface.mesh, measure, table);
-    surface.stats.cellsVisited = state.cellsVisited;
-    surface.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    return surface;
+    return walkWhole(*worker, state, table, start);
 }
 
 std::vector<Surface> trackAllSurfaces(const Volume& volume, double iso, TableKind table) {
@@ -688,13 +598,7 @@ std::vector<Surface> trackAllSurfaces(const Volume& volume, double iso, TableKin
                     int entryEdge = 0;
                     while (!(cased.pieces[p].edgeMask >> entryEdge & 1u)) ++entryEdge;
                     worker->enqueue(state, x, y, z, entryEdge);
-                    while (!state.queue.empty()) worker->advance(state, std::numeric_limits<std::size_t>::max());
-                    Surface surface;
-                    surface.mesh = std::move(state.mesh);
-                    surface.stats = measureTracked(surface.mesh, volume, table);
-                    surface.stats.cellsVisited = state.cellsVisited;
-                    surface.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-                    surfaces.push_back(std::move(surface));
+                    surfaces.push_back(walkWhole(*worker, state, table, start));
                 }
             }
         }
@@ -720,55 +624,13 @@ std::vector<Surface> trackAllSurfaces(const Volume& volume, double iso, TableKin
 
 // ---- measurement ----------------------------------------------------------
 
-// The mesh is measured in a fixed number of parts, summed in order, so that the
-// figures do not depend on the number of threads.
-SurfaceStats measureSurface(const Mesh& mesh, const Volume& volume, bool closedUnlessOnBorder, int threads) {
-    SurfaceStats stats;
-    stats.triangles = mesh.triangleCount();
-    stats.vertices = mesh.vertices.size();
-    stats.bytes = mesh.byteSize();
-    constexpr int kParts = 8;
-    struct Part {
-        Vec3d boundsMin{INFINITY, INFINITY, INFINITY}, boundsMax{-INFINITY, -INFINITY, -INFINITY};
-        bool touchesBorder = false;
-        detail::TriangleMeasure measure;
-    };
-    std::array<Part, kParts> parts;
-    detail::parallelFor(kParts, threads, [&](int r) {
-        Part& part = parts[std::size_t(r)];
-        const std::size_t vertices = mesh.vertices.size(), triangles = mesh.triangleCount();
-        for (std::size_t i = vertices * std::size_t(r) / kParts; i < vertices * std::size_t(r + 1) / kParts; ++i) {
-            const Vertex& v = mesh.vertices[i];
-            for (int k = 0; k < 3; ++k) {
-                part.boundsMin[k] = std::min(part.boundsMin[k], double(v.position[k]));
-                part.boundsMax[k] = std::max(part.boundsMax[k], double(v.position[k]));
-            }
-            if (!part.touchesBorder) part.touchesBorder = detail::edgeOnVolumeBorder(mesh.vertexEdges[i], volume.dims());
-        }
-        for (std::size_t t = triangles * std::size_t(r) / kParts; t < triangles * std::size_t(r + 1) / kParts; ++t) {
-            const std::uint32_t* idx = &mesh.indices[3 * t];
-            part.measure.add(mesh.vertices[idx[0]].position, mesh.vertices[idx[1]].position, mesh.vertices[idx[2]].position);
-        }
-    });
-    double signedVolume = 0.0;
-    if (!mesh.vertices.empty()) {
-        for (int k = 0; k < 3; ++k) {
-            stats.boundsMin[k] = INFINITY;
-            stats.boundsMax[k] = -INFINITY;
-        }
+SurfaceStats measureSurface(const Mesh& mesh, const Volume& volume, bool closedUnlessOnBorder) {
+    detail::SurfaceMeasure measure;
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) measure.addVertex(mesh.vertices[v], mesh.vertexEdges[v], volume.dims());
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        measure.addTriangle(mesh.vertices.data(), mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]);
     }
-    for (const Part& part : parts) {
-        for (int k = 0; k < 3 && !mesh.vertices.empty(); ++k) {
-            stats.boundsMin[k] = std::min(stats.boundsMin[k], part.boundsMin[k]);
-            stats.boundsMax[k] = std::max(stats.boundsMax[k], part.boundsMax[k]);
-        }
-        stats.touchesBorder = stats.touchesBorder || part.touchesBorder;
-        stats.area += part.measure.area();
-        signedVolume += part.measure.signedVolume();
-    }
-    stats.closed = closedUnlessOnBorder ? !stats.touchesBorder && !mesh.indices.empty() : detail::meshIsClosed(mesh);
-    if (stats.closed) stats.enclosedVolume = std::abs(signedVolume);
-    return stats;
+    return statsOf(mesh, measure, closedUnlessOnBorder);
 }
 
 }  // namespace isotrack

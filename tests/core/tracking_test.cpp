@@ -141,34 +141,24 @@ TEST_CASE("tracked vertices are the exhaustive pass's, bit for bit", "[core][tra
     }
 }
 
-TEST_CASE("tracking on several threads gives the one-thread surface and figures exactly", "[core][tracking]") {
-    // Float samples cut by the border (border gradients), and int16 samples.
+TEST_CASE("the figures the tracker measures as it walks are measureSurface's, exactly", "[core][tracking]") {
+    // Float samples cut by the border, int16 samples, and a surface filling its volume.
     const Volume noise = makeField({"noise", 24});
     const Volume ints = int16Noise(24);
-    // The gyroid fills its volume: tens of thousands of cells, enough for the work to be shared out.
     const Volume gyroid = makeField({"gyroid", 48});
     for (const auto& [volume, iso] : {std::pair<const Volume&, double>{noise, 0.5}, {ints, 500.5}, {gyroid, 0.0}}) {
         const Surface largest = extractAllSurfaces(volume, iso).front();
-        const GridEdge seed = largest.mesh.vertexEdges[0];
-        const Surface one = trackSurface(volume, iso, seed);
-        REQUIRE(one.mesh.triangleCount() == largest.mesh.triangleCount());
-        CHECK(one.stats.area == Approx(largest.stats.area));
-        if (&volume == &gyroid) CHECK(one.stats.cellsVisited > 20000);
-        for (int threads : {2, 3}) {
-            const Surface many = trackSurface(volume, iso, seed, TableKind::Consistent, threads);
-            REQUIRE(many.mesh.vertices.size() == one.mesh.vertices.size());
-            CHECK(std::memcmp(many.mesh.vertices.data(), one.mesh.vertices.data(), one.mesh.vertices.size() * sizeof(Vertex)) == 0);
-            CHECK(std::equal(many.mesh.indices.begin(), many.mesh.indices.end(), one.mesh.indices.begin(), one.mesh.indices.end()));
-            CHECK(vertexEdgeSet(many.mesh, volume.dims()) == vertexEdgeSet(one.mesh, volume.dims()));
-            CHECK(many.stats.area == one.stats.area);
-            CHECK(many.stats.enclosedVolume == one.stats.enclosedVolume);
-            CHECK(many.stats.touchesBorder == one.stats.touchesBorder);
-            CHECK(many.stats.cellsVisited == one.stats.cellsVisited);
-            for (int k = 0; k < 3; ++k) {
-                CHECK(many.stats.boundsMin[k] == one.stats.boundsMin[k]);
-                CHECK(many.stats.boundsMax[k] == one.stats.boundsMax[k]);
-            }
-        }
+        const Surface tracked = trackSurface(volume, iso, largest.mesh.vertexEdges[0]);
+        REQUIRE(tracked.mesh.triangleCount() == largest.mesh.triangleCount());
+        const SurfaceStats measured = measureSurface(tracked.mesh, volume, true);
+        CHECK(tracked.stats.area == measured.area);
+        CHECK(tracked.stats.area == Approx(largest.stats.area));
+        CHECK(tracked.stats.enclosedVolume == measured.enclosedVolume);
+        CHECK(tracked.stats.touchesBorder == measured.touchesBorder);
+        CHECK(tracked.stats.closed == measured.closed);
+        CHECK(tracked.stats.boundsMin == measured.boundsMin);
+        CHECK(tracked.stats.boundsMax == measured.boundsMax);
+        CHECK(tracked.stats.bytes == measured.bytes);
     }
 }
 

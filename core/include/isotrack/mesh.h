@@ -62,13 +62,6 @@ public:
     operator GridEdge() const {  // NOLINT(google-explicit-constructor)
         return GridEdge{int(bits_ & kMask), int(bits_ >> 20 & kMask), int(bits_ >> 40 & kMask), int(bits_ >> 60)};
     }
-    // The 64 bits (the top two always clear), and back.
-    std::uint64_t bits() const { return bits_; }
-    static PackedGridEdge fromBits(std::uint64_t bits) {
-        PackedGridEdge e;
-        e.bits_ = bits;
-        return e;
-    }
 
 private:
     static constexpr std::uint64_t kMask = (std::uint64_t(1) << 20) - 1;

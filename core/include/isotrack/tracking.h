@@ -48,15 +48,14 @@ struct Surface {
 // Computes area, bounds, closedness and enclosed volume of a mesh. With
 // `closedUnlessOnBorder`, for meshes of the consistent table, which have no holes,
 // the mesh counts as closed exactly when no vertex lies on the volume's border,
-// instead of checking every edge. The figures are the same on any number of threads.
-SurfaceStats measureSurface(const Mesh& mesh, const Volume& volume, bool closedUnlessOnBorder = false, int threads = 1);
+// instead of checking every edge.
+SurfaceStats measureSurface(const Mesh& mesh, const Volume& volume, bool closedUnlessOnBorder = false);
 
-// One connected surface, the one through `seed`. Throws InputError when the seed
-// edge is outside the volume or not crossed at `iso`. The walk is sequential;
-// with more threads, vertices are computed and the surface measured in parallel
-// after it (the mesh is the same on any number of threads).
+// One connected surface, the one through `seed`, measured as it is walked (the
+// figures equal measureSurface's). Throws InputError when the seed edge is
+// outside the volume or not crossed at `iso`.
 Surface trackSurface(const Volume& volume, double iso, const GridEdge& seed,
-                     TableKind table = TableKind::Consistent, int threads = 1);
+                     TableKind table = TableKind::Consistent);
 
 // Every surface, sorted by triangle count, largest first (ties: the surface with
 // the first grid edge in memory order first). Together they hold exactly the
