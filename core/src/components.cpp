@@ -10,8 +10,6 @@
 // exactly the surfaces trackAllSurfaces finds by tracking one surface at a time
 // (the tests hold them equal), with no per-voxel memory.
 #include <algorithm>
-#include <cmath>
-#include <limits>
 #include <numeric>
 
 #include "isotrack/tracking.h"
@@ -25,10 +23,8 @@ namespace {
 // One thread's share of one surface.
 struct Share {
     std::uint32_t vertices = 0, triangles = 0, pieces = 0;
-    bool touchesBorder = false;
     std::size_t vertexBase = 0, triangleBase = 0;  // where the share starts in the surface's buffers
-    float boundsMin[3] = {INFINITY, INFINITY, INFINITY}, boundsMax[3] = {-INFINITY, -INFINITY, -INFINITY};
-    detail::TriangleMeasure measure;
+    detail::SurfaceMeasure measure;
 };
 
 // Consecutive chunks of the exhaustive pass, one range per thread: splitting
@@ -152,7 +148,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         for (std::size_t t = part.triangleBegin; t < part.triangleEnd; ++t) {
             const std::uint32_t* v = &mesh.indices[3 * t];
             const std::uint32_t k = component[v[0]];
-            share[k].measure.add(mesh.vertices[v[0]].position, mesh.vertices[v[1]].position, mesh.vertices[v[2]].position);
+            share[k].measure.addTriangle(mesh.vertices.data(), v[0], v[1], v[2]);
             const std::uint32_t own = base[k], next = nextBase[k];
             // Read before writing: a compacted triangle may land on its own corners.
             const std::uint32_t a = localIndex[v[0]] + (v[0] < vertexEnd ? own : next);
@@ -181,11 +177,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             const std::uint32_t k = component[v];
             Share& s = share[k];
             const Vertex& vertex = mesh.vertices[v];
-            for (int a = 0; a < 3; ++a) {
-                s.boundsMin[a] = std::min(s.boundsMin[a], vertex.position[a]);
-                s.boundsMax[a] = std::max(s.boundsMax[a], vertex.position[a]);
-            }
-            if (!s.touchesBorder) s.touchesBorder = detail::edgeOnVolumeBorder(mesh.vertexEdges[v], dims);
+            s.measure.addVertex(vertex, mesh.vertexEdges[v], dims);
             if (k != largest) {
                 const std::size_t at = local[v] + s.vertexBase;
                 surfaces[k].mesh.vertices[at] = vertex;
@@ -211,40 +203,22 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         mesh.indices.resize(3 * surfaces[largest].stats.triangles);
     }
     if (count > 0) surfaces[largest].mesh = std::move(mesh);  // a lone surface is the mesh as it is
-    // The shares' measures summed in range order.
+    // The shares' measures merged in range order.
     detail::parallelFor(int(count), threads, [&](int index) {
         const std::size_t k = std::size_t(index);
-        SurfaceStats& stats = surfaces[k].stats;
-        stats.bytes = surfaces[k].mesh.byteSize();
-        for (int a = 0; a < 3; ++a) {
-            stats.boundsMin[a] = INFINITY;
-            stats.boundsMax[a] = -INFINITY;
-        }
-        double signedVolume = 0.0;
+        detail::SurfaceMeasure measure;
+        std::size_t pieces = 0;
         for (const std::vector<Share>& share : shares) {
-            const Share& s = share[k];
-            stats.cellsVisited += s.pieces;
-            stats.touchesBorder = stats.touchesBorder || s.touchesBorder;
-            stats.area += s.measure.area();
-            signedVolume += s.measure.signedVolume();
-            for (int a = 0; a < 3; ++a) {
-                stats.boundsMin[a] = std::min(stats.boundsMin[a], double(s.boundsMin[a]));
-                stats.boundsMax[a] = std::max(stats.boundsMax[a], double(s.boundsMax[a]));
-            }
+            measure.merge(share[k].measure);
+            pieces += share[k].pieces;
         }
-        // The consistent table leaves no holes: a surface is closed unless the border cuts it.
-        stats.closed = table == TableKind::Consistent ? !stats.touchesBorder : detail::meshIsClosed(surfaces[k].mesh);
-        if (stats.closed) stats.enclosedVolume = std::abs(signedVolume);
+        surfaces[k].stats = detail::surfaceStats(surfaces[k].mesh, measure, table == TableKind::Consistent);
+        surfaces[k].stats.cellsVisited = pieces;
     });
     std::vector<std::size_t> triangles(count);
     for (std::size_t k = 0; k < count; ++k) triangles[k] = surfaces[k].stats.triangles;
 
     // Largest first; equal sizes by their first grid edge in memory order, as trackAllSurfaces.
-    auto firstEdge = [&](std::size_t c) {
-        std::uint64_t first = std::numeric_limits<std::uint64_t>::max();
-        for (const GridEdge e : surfaces[c].mesh.vertexEdges) first = std::min(first, detail::edgeOrder(e, dims));
-        return first;
-    };
     std::vector<std::size_t> order(count);
     std::iota(order.begin(), order.end(), 0);
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return triangles[a] > triangles[b]; });
@@ -253,7 +227,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         while (j < count && triangles[order[j]] == triangles[order[i]]) ++j;
         if (j - i > 1) {
             std::vector<std::pair<std::uint64_t, std::size_t>> keyed;
-            for (std::size_t k = i; k < j; ++k) keyed.push_back({firstEdge(order[k]), order[k]});
+            for (std::size_t k = i; k < j; ++k) keyed.push_back({detail::firstEdgeOrder(surfaces[order[k]].mesh, dims), order[k]});
             std::sort(keyed.begin(), keyed.end());
             for (std::size_t k = i; k < j; ++k) order[k] = keyed[k - i].second;
         }

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "flat_hash.h"
 #include "isotrack/mesh.h"
+#include "isotrack/tracking.h"
 #include "isotrack/volume.h"
 
 namespace isotrack::detail {
@@ -26,6 +28,13 @@ inline std::uint64_t edgeOrder(const GridEdge& e, const Dims& dims) {
            std::uint64_t(e.axis);
 }
 
+// A surface's first grid edge in memory order: equal-sized surfaces are ordered by it.
+inline std::uint64_t firstEdgeOrder(const Mesh& mesh, const Dims& dims) {
+    std::uint64_t first = std::numeric_limits<std::uint64_t>::max();
+    for (const GridEdge e : mesh.vertexEdges) first = std::min(first, edgeOrder(e, dims));
+    return first;
+}
+
 // Area and signed enclosed volume (divergence theorem), triangle by triangle,
 // kept as twice the area and six times the volume so that a triangle costs no
 // division.
@@ -34,6 +43,10 @@ struct TriangleMeasure {
 
     double area() const { return 0.5 * doubleArea; }
     double signedVolume() const { return sixfoldVolume / 6.0; }
+    void merge(const TriangleMeasure& other) {
+        doubleArea += other.doubleArea;
+        sixfoldVolume += other.sixfoldVolume;
+    }
 
     void add(const float* a, const float* b, const float* c) {
         const double u[3] = {double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2]};
@@ -60,6 +73,15 @@ struct SurfaceMeasure {
     void addTriangle(const Vertex* vertices, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
         triangles.add(vertices[a].position, vertices[b].position, vertices[c].position);
     }
+    // Adds what another part of the same surface measured.
+    void merge(const SurfaceMeasure& other) {
+        triangles.merge(other.triangles);
+        for (int k = 0; k < 3; ++k) {
+            boundsMin[k] = std::min(boundsMin[k], other.boundsMin[k]);
+            boundsMax[k] = std::max(boundsMax[k], other.boundsMax[k]);
+        }
+        touchesBorder = touchesBorder || other.touchesBorder;
+    }
 };
 
 // Every directed side appears once and so does its reverse: no holes, no
@@ -76,6 +98,27 @@ inline bool meshIsClosed(const Mesh& mesh) {
         if (!sides.find(std::uint64_t(mesh.indices[next]) << 32 | mesh.indices[i])) return false;
     }
     return true;
+}
+
+// The figures of a surface from its measure (cells visited and time aside). With
+// `closedUnlessOnBorder` (the consistent table leaves no holes) a surface is
+// closed exactly when the border does not cut it; otherwise every edge is checked.
+inline SurfaceStats surfaceStats(const Mesh& mesh, const SurfaceMeasure& measure, bool closedUnlessOnBorder) {
+    SurfaceStats stats;
+    stats.triangles = mesh.triangleCount();
+    stats.vertices = mesh.vertices.size();
+    stats.bytes = mesh.byteSize();
+    if (!mesh.vertices.empty()) {
+        for (int k = 0; k < 3; ++k) {
+            stats.boundsMin[k] = measure.boundsMin[k];
+            stats.boundsMax[k] = measure.boundsMax[k];
+        }
+    }
+    stats.area = measure.triangles.area();
+    stats.touchesBorder = measure.touchesBorder;
+    stats.closed = closedUnlessOnBorder ? !stats.touchesBorder && !mesh.indices.empty() : meshIsClosed(mesh);
+    if (stats.closed) stats.enclosedVolume = std::abs(measure.triangles.signedVolume());
+    return stats;
 }
 
 }  // namespace isotrack::detail

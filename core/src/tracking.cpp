@@ -531,27 +531,6 @@ Mesh SurfaceTracker::takeMesh() { return std::move(impl_->state.mesh); }
 
 namespace {
 
-// The figures of a surface from its measure. With `closedUnlessOnBorder` (the
-// consistent table leaves no holes) a surface is closed exactly when the border
-// does not cut it; otherwise every edge is checked.
-SurfaceStats statsOf(const Mesh& mesh, const detail::SurfaceMeasure& measure, bool closedUnlessOnBorder) {
-    SurfaceStats stats;
-    stats.triangles = mesh.triangleCount();
-    stats.vertices = mesh.vertices.size();
-    stats.bytes = mesh.byteSize();
-    if (!mesh.vertices.empty()) {
-        for (int k = 0; k < 3; ++k) {
-            stats.boundsMin[k] = measure.boundsMin[k];
-            stats.boundsMax[k] = measure.boundsMax[k];
-        }
-    }
-    stats.area = measure.triangles.area();
-    stats.touchesBorder = measure.touchesBorder;
-    stats.closed = closedUnlessOnBorder ? !stats.touchesBorder && !mesh.indices.empty() : detail::meshIsClosed(mesh);
-    if (stats.closed) stats.enclosedVolume = std::abs(measure.triangles.signedVolume());
-    return stats;
-}
-
 // Walks the surface from the queued seed to the end, measuring it on the way.
 Surface walkWhole(const TrackWorker& worker, TrackState& state, TableKind table, Clock::time_point start) {
     detail::SurfaceMeasure measure;
@@ -559,7 +538,7 @@ Surface walkWhole(const TrackWorker& worker, TrackState& state, TableKind table,
     while (!state.queue.empty()) worker.advance(state, std::numeric_limits<std::size_t>::max());
     Surface surface;
     surface.mesh = std::move(state.mesh);
-    surface.stats = statsOf(surface.mesh, measure, table == TableKind::Consistent);
+    surface.stats = detail::surfaceStats(surface.mesh, measure, table == TableKind::Consistent);
     surface.stats.cellsVisited = state.cellsVisited;
     surface.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return surface;
@@ -604,13 +583,8 @@ std::vector<Surface> trackAllSurfaces(const Volume& volume, double iso, TableKin
         }
     }
     // Discovery order is the order of each surface's first cell; break ties by first grid edge.
-    auto firstEdge = [&](const Surface& s) {
-        std::uint64_t first = std::numeric_limits<std::uint64_t>::max();
-        for (const GridEdge e : s.mesh.vertexEdges) first = std::min(first, detail::edgeOrder(e, n));
-        return first;
-    };
     std::vector<std::pair<std::uint64_t, std::size_t>> keys;
-    for (std::size_t i = 0; i < surfaces.size(); ++i) keys.push_back({firstEdge(surfaces[i]), i});
+    for (std::size_t i = 0; i < surfaces.size(); ++i) keys.push_back({detail::firstEdgeOrder(surfaces[i].mesh, n), i});
     std::sort(keys.begin(), keys.end(), [&](const auto& a, const auto& b) {
         const std::size_t ta = surfaces[a.second].mesh.triangleCount(), tb = surfaces[b.second].mesh.triangleCount();
         return ta != tb ? ta > tb : a.first < b.first;
@@ -630,7 +604,7 @@ SurfaceStats measureSurface(const Mesh& mesh, const Volume& volume, bool closedU
     for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
         measure.addTriangle(mesh.vertices.data(), mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]);
     }
-    return statsOf(mesh, measure, closedUnlessOnBorder);
+    return detail::surfaceStats(mesh, measure, closedUnlessOnBorder);
 }
 
 }  // namespace isotrack
