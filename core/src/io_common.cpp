@@ -323,4 +323,39 @@ std::uint64_t Inflater::skip(std::uint64_t n) {
     return done;
 }
 
+void checkMesh(const std::string& path, const Mesh& mesh, const std::vector<std::int32_t>* faceComponent) {
+    if (mesh.indices.size() % 3 != 0)
+        throw InputError(path + ": mesh has " + std::to_string(mesh.indices.size()) + " indices, not a multiple of 3");
+    for (std::uint32_t i : mesh.indices)
+        if (i >= mesh.vertices.size())
+            throw InputError(path + ": mesh index " + std::to_string(i) + " is out of range (" +
+                             std::to_string(mesh.vertices.size()) + " vertices)");
+    if (faceComponent && faceComponent->size() != mesh.triangleCount())
+        throw InputError(path + ": " + std::to_string(faceComponent->size()) + " face components for " +
+                         std::to_string(mesh.triangleCount()) + " triangles");
+}
+
+BufferedOutput::BufferedOutput(const std::string& path) : path_(path), file_(openForWriting(path)) { buf_.reserve(kFlushBytes + 256); }
+
+void BufferedOutput::close() {
+    flush();
+    if (std::fclose(file_.release()) != 0) throw FormatError(path_ + ": cannot write: " + std::strerror(errno));
+}
+
+void BufferedOutput::flush() {
+    if (std::fwrite(buf_.data(), 1, buf_.size(), file_.get()) != buf_.size())
+        throw FormatError(path_ + ": cannot write: " + std::strerror(errno));
+    buf_.clear();
+}
+
+void appendU32LE(std::string& out, std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) out += char((v >> (8 * i)) & 0xff);
+}
+
+void appendFloatLE(std::string& out, float f) {
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &f, 4);
+    appendU32LE(out, bits);
+}
+
 }  // namespace isotrack::detail

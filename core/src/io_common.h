@@ -1,6 +1,7 @@
 #pragma once
-// Plumbing shared by the volume loaders: files, one-line messages, header
-// numbers, byte order, and the one path by which samples reach memory.
+// Plumbing shared by the volume loaders and mesh writers: files, one-line
+// messages, header numbers, byte order, the one path by which samples reach
+// memory, and buffered output.
 //
 // Every loader ends in readSamples(): it checks the dimensions against the
 // volume limit and against the bytes the data actually holds (for compressed
@@ -13,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "isotrack/mesh.h"
 #include "isotrack/volume.h"
 
 namespace isotrack::detail {
@@ -81,6 +83,33 @@ std::string dataWhere(const VolumeHeader& header, const SampleData& data);
 
 // Validates every size, then allocates once, reads and converts to host order.
 Volume readSamples(const VolumeHeader& header, const SampleData& data);
+
+// A mesh a writer can write: whole triangles, every index in range, and one
+// component per triangle when given; else an InputError naming `path`.
+void checkMesh(const std::string& path, const Mesh& mesh, const std::vector<std::int32_t>* faceComponent);
+
+// A file written through a buffer that goes out a few MiB at a time.
+class BufferedOutput {
+public:
+    explicit BufferedOutput(const std::string& path);
+    std::string& buffer() { return buf_; }
+    void maybeFlush() {
+        if (buf_.size() >= kFlushBytes) flush();
+    }
+    // Writes what is left and closes the file; a FormatError when either fails.
+    void close();
+
+private:
+    static constexpr std::size_t kFlushBytes = std::size_t(4) << 20;
+    void flush();
+    const std::string& path_;
+    FilePtr file_;
+    std::string buf_;
+};
+
+// Byte by byte little endian, so the file layout does not depend on the host.
+void appendU32LE(std::string& out, std::uint32_t v);
+void appendFloatLE(std::string& out, float f);
 
 // Inflates a gzip or zlib stream from `file`'s current position, a chunk at a time.
 class Inflater {

@@ -1,11 +1,8 @@
 // Mesh files by extension: PLY (ply.cpp), Wavefront OBJ and binary STL (here).
 #include <array>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
-#include <cstring>
 #include <limits>
 #include <string>
 #include <vector>
@@ -20,61 +17,13 @@ namespace {
 
 using namespace detail;
 
-constexpr std::size_t kFlushBytes = std::size_t(4) << 20;
 constexpr std::size_t kStlHeaderBytes = 80;
-
-void checkMesh(const std::string& path, const Mesh& mesh, const std::vector<std::int32_t>* faceComponent) {
-    if (mesh.indices.size() % 3 != 0)
-        throw InputError(path + ": mesh has " + std::to_string(mesh.indices.size()) + " indices, not a multiple of 3");
-    for (std::uint32_t i : mesh.indices)
-        if (i >= mesh.vertices.size())
-            throw InputError(path + ": mesh index " + std::to_string(i) + " is out of range (" +
-                             std::to_string(mesh.vertices.size()) + " vertices)");
-    if (faceComponent && faceComponent->size() != mesh.triangleCount())
-        throw InputError(path + ": " + std::to_string(faceComponent->size()) + " face components for " +
-                         std::to_string(mesh.triangleCount()) + " triangles");
-}
-
-// Collects output and writes it a few MiB at a time.
-class Output {
-public:
-    explicit Output(const std::string& path) : path_(path), file_(openForWriting(path)) { buf_.reserve(kFlushBytes + 256); }
-
-    std::string& buffer() { return buf_; }
-    void maybeFlush() {
-        if (buf_.size() >= kFlushBytes) flush();
-    }
-    void close() {
-        flush();
-        if (std::fclose(file_.release()) != 0) throw FormatError(path_ + ": cannot write: " + std::strerror(errno));
-    }
-
-private:
-    void flush() {
-        if (std::fwrite(buf_.data(), 1, buf_.size(), file_.get()) != buf_.size())
-            throw FormatError(path_ + ": cannot write: " + std::strerror(errno));
-        buf_.clear();
-    }
-    const std::string& path_;
-    FilePtr file_;
-    std::string buf_;
-};
 
 // Shortest text that reads back as the same float.
 void appendFloat(std::string& out, float v) {
     char buf[32];
     const auto result = std::to_chars(buf, buf + sizeof buf, v);
     out.append(buf, result.ptr);
-}
-
-void appendU32LE(std::string& out, std::uint32_t v) {
-    for (int i = 0; i < 4; ++i) out += char((v >> (8 * i)) & 0xff);
-}
-
-void appendFloatLE(std::string& out, float f) {
-    std::uint32_t bits = 0;
-    std::memcpy(&bits, &f, 4);
-    appendU32LE(out, bits);
 }
 
 // The unit normal of triangle (a, b, c), right-handed; zero when it is degenerate.
@@ -116,7 +65,7 @@ void writeMesh(const std::string& path, const Mesh& mesh, const std::vector<std:
 
 void writeObj(const std::string& path, const Mesh& mesh, const std::vector<std::int32_t>* faceComponent) {
     checkMesh(path, mesh, faceComponent);
-    Output out(path);
+    BufferedOutput out(path);
     std::string& buf = out.buffer();
     buf += "# written by isotrack: " + std::to_string(mesh.vertices.size()) + " vertices, " +
            std::to_string(mesh.triangleCount()) + " triangles\n";
@@ -146,7 +95,7 @@ void writeStl(const std::string& path, const Mesh& mesh) {
     checkMesh(path, mesh, nullptr);
     if (mesh.triangleCount() > std::numeric_limits<std::uint32_t>::max())
         throw InputError(path + ": " + std::to_string(mesh.triangleCount()) + " triangles, more than binary STL can count");
-    Output out(path);
+    BufferedOutput out(path);
     std::string& buf = out.buffer();
     // Readers take a header starting with "solid" for ASCII STL, so this one does not.
     std::string header = "binary STL written by isotrack";

@@ -4,10 +4,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <limits>
-#include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -19,8 +16,6 @@ namespace isotrack {
 
 namespace {
 
-namespace fs = std::filesystem;
-
 constexpr std::size_t kChunkBytes = std::size_t(4) << 20;
 constexpr std::size_t kMaxHeaderBytes = std::size_t(64) << 10;
 constexpr std::size_t kVertexBytes = 6 * 4;
@@ -28,17 +23,6 @@ constexpr std::size_t kFaceBytes = 1 + 3 * 4;  // plus 4 with a component
 
 using detail::FilePtr;
 using detail::printable;
-
-// Byte-by-byte little endian, so the file layout does not depend on the host.
-void putU32(std::vector<unsigned char>& out, std::uint32_t v) {
-    for (int i = 0; i < 4; ++i) out.push_back(static_cast<unsigned char>(v >> (8 * i)));
-}
-
-void putFloat(std::vector<unsigned char>& out, float f) {
-    std::uint32_t bits = 0;
-    std::memcpy(&bits, &f, 4);
-    putU32(out, bits);
-}
 
 std::uint32_t getU32(const unsigned char* p) {
     return std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 | std::uint32_t(p[3]) << 24;
@@ -49,32 +33,6 @@ float getFloat(const unsigned char* p) {
     float f = 0;
     std::memcpy(&f, &bits, 4);
     return f;
-}
-
-class ChunkWriter {
-public:
-    ChunkWriter(std::FILE* f, const std::string& path) : f_(f), path_(path) { buf_.reserve(kChunkBytes + 64); }
-    std::vector<unsigned char>& buffer() { return buf_; }
-    void maybeFlush() {
-        if (buf_.size() >= kChunkBytes) flush();
-    }
-    void flush() {
-        if (std::fwrite(buf_.data(), 1, buf_.size(), f_) != buf_.size())
-            throw FormatError(path_ + ": cannot write: " + std::strerror(errno));
-        buf_.clear();
-    }
-
-private:
-    std::FILE* f_;
-    const std::string& path_;
-    std::vector<unsigned char> buf_;
-};
-
-std::string normalized(const std::string& line) {
-    std::istringstream in(line);
-    std::string out;
-    for (std::string w; in >> w;) out += (out.empty() ? "" : " ") + w;
-    return out;
 }
 
 // Parses "element NAME COUNT"; false when the line is not that element.
@@ -99,19 +57,11 @@ void readExact(std::FILE* f, unsigned char* dst, std::size_t n, const std::strin
 void writePly(const std::string& path, const Mesh& mesh, const std::vector<std::int32_t>* faceComponent) {
     const std::size_t vertexCount = mesh.vertices.size();
     const std::size_t faceCount = mesh.triangleCount();
-    if (mesh.indices.size() % 3 != 0)
-        throw InputError(path + ": mesh has " + std::to_string(mesh.indices.size()) + " indices, not a multiple of 3");
     if (vertexCount > std::size_t(std::numeric_limits<std::int32_t>::max()))
         throw InputError(path + ": mesh has " + std::to_string(vertexCount) + " vertices, more than PLY int indices allow");
-    for (std::uint32_t i : mesh.indices)
-        if (i >= vertexCount)
-            throw InputError(path + ": mesh index " + std::to_string(i) + " is out of range (" +
-                             std::to_string(vertexCount) + " vertices)");
-    if (faceComponent && faceComponent->size() != faceCount)
-        throw InputError(path + ": " + std::to_string(faceComponent->size()) + " face components for " +
-                         std::to_string(faceCount) + " triangles");
+    detail::checkMesh(path, mesh, faceComponent);
 
-    FilePtr f = detail::openForWriting(path);
+    detail::BufferedOutput out(path);
     std::string header = "ply\nformat binary_little_endian 1.0\ncomment written by isotrack\n";
     header += "element vertex " + std::to_string(vertexCount) + "\n";
     header += "property float x\nproperty float y\nproperty float z\n";
@@ -120,29 +70,25 @@ void writePly(const std::string& path, const Mesh& mesh, const std::vector<std::
     if (faceComponent) header += "property int component\n";
     header += "end_header\n";
 
-    ChunkWriter out(f.get(), path);
-    auto& buf = out.buffer();
-    buf.insert(buf.end(), header.begin(), header.end());
+    std::string& buf = out.buffer();
+    buf += header;
     for (const Vertex& v : mesh.vertices) {
-        for (float c : v.position) putFloat(buf, c);
-        for (float c : v.normal) putFloat(buf, c);
+        for (float c : v.position) detail::appendFloatLE(buf, c);
+        for (float c : v.normal) detail::appendFloatLE(buf, c);
         out.maybeFlush();
     }
     for (std::size_t t = 0; t < faceCount; ++t) {
-        buf.push_back(3);
-        for (std::size_t k = 0; k < 3; ++k) putU32(buf, mesh.indices[3 * t + k]);
-        if (faceComponent) putU32(buf, std::uint32_t((*faceComponent)[t]));
+        buf += char(3);
+        for (std::size_t k = 0; k < 3; ++k) detail::appendU32LE(buf, mesh.indices[3 * t + k]);
+        if (faceComponent) detail::appendU32LE(buf, std::uint32_t((*faceComponent)[t]));
         out.maybeFlush();
     }
-    out.flush();
-    if (std::fclose(f.release()) != 0) throw FormatError(path + ": cannot write: " + std::strerror(errno));
+    out.close();
 }
 
 Mesh readPly(const std::string& path, std::vector<std::int32_t>* faceComponent) {
     FilePtr f = detail::openForReading(path);
-    std::error_code ec;
-    const std::uint64_t fileSize = fs::file_size(path, ec);
-    if (ec) throw FormatError(path + ": cannot read: " + ec.message());
+    const std::uint64_t fileSize = detail::fileSizeOf(path, path);
 
     // Header lines, comments dropped; ends at end_header.
     std::vector<std::string> lines;
@@ -156,7 +102,7 @@ Mesh readPly(const std::string& path, std::vector<std::int32_t>* faceComponent) 
             line += char(c);
             continue;
         }
-        line = normalized(line);
+        line = detail::joinWords(line);
         if (lines.empty() && line != "ply") throw FormatError(path + ": not a PLY file: first line is \"" + printable(line) + "\"");
         if (line.compare(0, 8, "comment ") != 0 && line != "comment" && line.compare(0, 8, "obj_info") != 0)
             lines.push_back(line);
