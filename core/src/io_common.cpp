@@ -127,6 +127,28 @@ std::optional<double> parseFinite(const std::string& s) {
     return v;
 }
 
+std::optional<Dims> parseDims(const std::vector<std::string>& words) {
+    if (words.size() != 3) return std::nullopt;
+    Dims dims{};
+    for (std::size_t a = 0; a < 3; ++a) {
+        const auto v = parseInteger(words[a]);
+        if (!v || *v <= 0 || *v > INT32_MAX) return std::nullopt;
+        dims[a] = int(*v);
+    }
+    return dims;
+}
+
+std::optional<Vec3d> parseVec3(const std::vector<std::string>& words, bool positive) {
+    if (words.size() != 3) return std::nullopt;
+    Vec3d out{};
+    for (std::size_t a = 0; a < 3; ++a) {
+        const auto v = parseFinite(words[a]);
+        if (!v || (positive && !(*v > 0))) return std::nullopt;
+        out[a] = *v;
+    }
+    return out;
+}
+
 std::string dimsText(const Dims& dims) {
     return std::to_string(dims[0]) + " x " + std::to_string(dims[1]) + " x " + std::to_string(dims[2]);
 }

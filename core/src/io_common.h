@@ -41,6 +41,10 @@ std::vector<std::string> splitWords(const std::string& s);
 std::string joinWords(const std::string& s);
 std::optional<long long> parseInteger(const std::string& s);
 std::optional<double> parseFinite(const std::string& s);
+// Exactly three words: positive integers that fit an int (a header's sizes), or
+// finite numbers, positive when asked (spacings, origins).
+std::optional<Dims> parseDims(const std::vector<std::string>& words);
+std::optional<Vec3d> parseVec3(const std::vector<std::string>& words, bool positive);
 std::string dimsText(const Dims& dims);
 std::string numberText(double v);  // shortest form that reads back exactly
 

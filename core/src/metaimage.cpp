@@ -113,16 +113,9 @@ bool MetaImageReader::flag(const std::string& field, bool otherwise) const {
 Vec3d MetaImageReader::numbers(const std::string& field, Vec3d otherwise, bool positive) const {
     const std::string* text = find(field);
     if (!text) return otherwise;
-    const std::vector<std::string> words = splitWords(*text);
-    Vec3d out{};
-    bool ok = words.size() == 3;
-    for (std::size_t a = 0; ok && a < 3; ++a) {
-        const auto v = parseFinite(words[a]);
-        ok = v && (!positive || *v > 0);
-        if (ok) out[a] = *v;
-    }
-    if (!ok) fail(field, std::string("expected 3 ") + (positive ? "positive " : "") + "numbers, got \"" + printable(*text) + "\"");
-    return out;
+    const auto out = parseVec3(splitWords(*text), positive);
+    if (!out) fail(field, std::string("expected 3 ") + (positive ? "positive " : "") + "numbers, got \"" + printable(*text) + "\"");
+    return *out;
 }
 
 void MetaImageReader::parseGeometry() {
@@ -132,14 +125,9 @@ void MetaImageReader::parseGeometry() {
     if (ndims != "3") fail("NDims", "expected 3, got \"" + printable(ndims) + "\"");
 
     const std::string& sizesText = require("DimSize");
-    const std::vector<std::string> sizes = splitWords(sizesText);
-    bool sizesOk = sizes.size() == 3;
-    for (std::size_t a = 0; sizesOk && a < 3; ++a) {
-        const auto v = parseInteger(sizes[a]);
-        sizesOk = v && *v > 0 && *v <= INT32_MAX;
-        if (sizesOk) geometry_.dims[a] = int(*v);
-    }
-    if (!sizesOk) fail("DimSize", "expected 3 positive integers, got \"" + printable(sizesText) + "\"");
+    const auto sizes = parseDims(splitWords(sizesText));
+    if (!sizes) fail("DimSize", "expected 3 positive integers, got \"" + printable(sizesText) + "\"");
+    geometry_.dims = *sizes;
 
     const std::string& typeText = require("ElementType");
     bool typeOk = false;

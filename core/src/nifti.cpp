@@ -164,15 +164,14 @@ void NiftiHeader::readType(const HeaderBytes& h) {
 void NiftiHeader::readGeometry(const HeaderBytes& h) {
     for (std::size_t a = 0; a < 3; ++a) geometry.spacing[a] = double(h.f32(kPixdim + 4 * (a + 1)));
     // Orientation is dropped; the translation of the chosen transform is the origin.
+    const char* originField = "qoffset";
     if (h.i16(kSformCode) > 0) {
         for (std::size_t a = 0; a < 3; ++a) geometry.origin[a] = double(h.f32(kSrow + 16 * a + 12));
-        checkGeometry(geometry, "pixdim", "srow");
+        originField = "srow";
     } else if (h.i16(kQformCode) > 0) {
         for (std::size_t a = 0; a < 3; ++a) geometry.origin[a] = double(h.f32(kQoffset + 4 * a));
-        checkGeometry(geometry, "pixdim", "qoffset");
-    } else {
-        checkGeometry(geometry, "pixdim", "qoffset");
     }
+    checkGeometry(geometry, "pixdim", originField);
 }
 
 void NiftiHeader::readScaling(const HeaderBytes& h) {

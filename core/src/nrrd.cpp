@@ -2,7 +2,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
-#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -202,14 +201,9 @@ void NrrdReader::parseGeometry() {
     geometry_.type = t->type;
 
     const std::string& sizesText = require("sizes");
-    const std::vector<std::string> sizes = splitWords(sizesText);
-    bool sizesOk = sizes.size() == 3;
-    for (std::size_t a = 0; sizesOk && a < 3; ++a) {
-        const auto v = parseInteger(sizes[a]);
-        sizesOk = v && *v > 0 && *v <= INT_MAX;
-        if (sizesOk) geometry_.dims[a] = int(*v);
-    }
-    if (!sizesOk) fail("sizes", "expected 3 positive integers, got \"" + printable(sizesText) + "\"");
+    const auto sizes = parseDims(splitWords(sizesText));
+    if (!sizes) fail("sizes", "expected 3 positive integers, got \"" + printable(sizesText) + "\"");
+    geometry_.dims = *sizes;
 
     Vec3d& spacing = geometry_.spacing;
     if (const std::string* dirs = find("space directions")) {
@@ -224,14 +218,9 @@ void NrrdReader::parseGeometry() {
         if (std::any_of(spacing.begin(), spacing.end(), [](double s) { return !(s > 0) || !std::isfinite(s); }))
             fail("space directions", "expected 3 non-zero vectors, got \"" + printable(*dirs) + "\"");
     } else if (const std::string* spacings = find("spacings")) {
-        const std::vector<std::string> words = splitWords(*spacings);
-        bool ok = words.size() == 3;
-        for (std::size_t a = 0; ok && a < 3; ++a) {
-            const auto v = parseFinite(words[a]);
-            ok = v && *v > 0;
-            if (ok) spacing[a] = *v;
-        }
-        if (!ok) fail("spacings", "expected 3 positive numbers, got \"" + printable(*spacings) + "\"");
+        const auto parsed = parseVec3(splitWords(*spacings), true);
+        if (!parsed) fail("spacings", "expected 3 positive numbers, got \"" + printable(*spacings) + "\"");
+        spacing = *parsed;
     }
 
     if (const std::string* originText = find("space origin")) {

@@ -111,6 +111,8 @@ private:
     }
     std::string keyword();
     Vec3d numbers(const std::string& field, bool positive);
+    std::vector<std::string> threeWords();  // the next three tokens
+    static std::string wordsText(const std::vector<std::string>& words);
     void readPreamble();
     void readStructure();
     void readScalarsHeader();
@@ -129,19 +131,21 @@ std::string VtkReader::keyword() {
     return lowerCase(word_);
 }
 
+std::vector<std::string> VtkReader::threeWords() {
+    std::vector<std::string> words;
+    for (int a = 0; a < 3; ++a) words.push_back(tokens_.next());
+    return words;
+}
+
+std::string VtkReader::wordsText(const std::vector<std::string>& words) {
+    return words[0] + " " + words[1] + " " + words[2];
+}
+
 Vec3d VtkReader::numbers(const std::string& field, bool positive) {
-    Vec3d v{};
-    std::string text;
-    bool ok = true;
-    for (std::size_t a = 0; a < 3; ++a) {
-        const std::string word = tokens_.next();
-        text += (a ? " " : "") + word;
-        const auto x = parseFinite(word);
-        ok = ok && x && (!positive || *x > 0);
-        if (x) v[a] = *x;
-    }
-    if (!ok) fail(field, std::string("expected 3 ") + (positive ? "positive " : "") + "numbers, got \"" + printable(text) + "\"");
-    return v;
+    const std::vector<std::string> words = threeWords();
+    const auto v = parseVec3(words, positive);
+    if (!v) fail(field, std::string("expected 3 ") + (positive ? "positive " : "") + "numbers, got \"" + printable(wordsText(words)) + "\"");
+    return *v;
 }
 
 void VtkReader::readPreamble() {
@@ -167,16 +171,10 @@ void VtkReader::readStructure() {
     std::string spacingField = "SPACING";
     for (std::string key = keyword();; key = keyword()) {
         if (key == "dimensions") {
-            std::string text;
-            bool ok = true;
-            for (std::size_t a = 0; a < 3; ++a) {
-                const std::string word = tokens_.next();
-                text += (a ? " " : "") + word;
-                const auto v = parseInteger(word);
-                ok = ok && v && *v > 0 && *v <= INT32_MAX;
-                if (ok) geometry_.dims[a] = int(*v);
-            }
-            if (!ok) fail("DIMENSIONS", "expected 3 positive integers, got \"" + printable(text) + "\"");
+            const std::vector<std::string> words = threeWords();
+            const auto dims = parseDims(words);
+            if (!dims) fail("DIMENSIONS", "expected 3 positive integers, got \"" + printable(wordsText(words)) + "\"");
+            geometry_.dims = *dims;
             haveDims = true;
         } else if (key == "spacing" || key == "aspect_ratio") {
             spacingField = key == "spacing" ? "SPACING" : "ASPECT_RATIO";
