@@ -1,7 +1,6 @@
 #include "viewer/surface_structure.h"
 
 #include <algorithm>
-#include <cmath>
 
 #include "viewer/extraction_worker.h"
 
@@ -9,16 +8,6 @@ namespace isotrack::viewer {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double triangleArea(const Mesh& mesh, std::size_t triangle) {
-    const float* a = mesh.vertices[mesh.indices[3 * triangle]].position;
-    const float* b = mesh.vertices[mesh.indices[3 * triangle + 1]].position;
-    const float* c = mesh.vertices[mesh.indices[3 * triangle + 2]].position;
-    const double u[3] = {double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2]};
-    const double v[3] = {double(c[0]) - a[0], double(c[1]) - a[1], double(c[2]) - a[2]};
-    const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-    return 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-}
 
 }  // namespace
 
@@ -44,8 +33,6 @@ void SurfaceStructure::restartGrowth() {
     tracker_->start(seed_);
     mesh_ = Mesh{};
     stats_ = SurfaceStats{};
-    stats_.boundsMin = {1e300, 1e300, 1e300};
-    stats_.boundsMax = {-1e300, -1e300, -1e300};
     gpu_ = render::GpuMesh();
 }
 
@@ -56,7 +43,7 @@ GrowthStep SurfaceStructure::grow(const GrowthBudget& budget) {
     if (!tracker_) return result;
     const auto start = Clock::now();
     const SurfaceTracker::Step step = budget.cells > 0 ? tracker_->step(budget.cells) : tracker_->stepFor(budget.time);
-    accumulate(tracker_->mesh(), step.firstIndex, step.firstVertex);
+    stats_ = tracker_->stats();
     const auto extracted = Clock::now();
     gpu_.append(tracker_->mesh(), step);
     result.cells = step.cellsVisited;
@@ -66,34 +53,12 @@ GrowthStep SurfaceStructure::grow(const GrowthBudget& budget) {
     return result;
 }
 
-void SurfaceStructure::accumulate(const Mesh& mesh, std::size_t firstIndex, std::size_t firstVertex) {
-    for (std::size_t t = firstIndex / 3; t < mesh.triangleCount(); ++t) stats_.area += triangleArea(mesh, t);
-    for (std::size_t v = firstVertex; v < mesh.vertices.size(); ++v) {
-        for (int axis = 0; axis < 3; ++axis) {
-            const double p = mesh.vertices[v].position[axis];
-            stats_.boundsMin[axis] = std::min(stats_.boundsMin[axis], p);
-            stats_.boundsMax[axis] = std::max(stats_.boundsMax[axis], p);
-        }
-    }
-    stats_.triangles = mesh.triangleCount();
-    stats_.vertices = mesh.vertices.size();
-    stats_.bytes = mesh.byteSize();
-    stats_.cellsVisited = tracker_->cellsVisited();
-}
-
 void SurfaceStructure::finishGrowth() {
-    const bool leftVolume = tracker_->leftVolume();
-    mesh_ = tracker_->takeMesh();
+    Surface surface = tracker_->takeSurface();
+    mesh_ = std::move(surface.mesh);
+    stats_ = surface.stats;
     tracker_.reset();    // frees the tracker's visited sets and queues
     gpu_.shrinkToFit();  // and the GPU buffers' spare capacity
-    stats_.touchesBorder = leftVolume;
-    if (table_ == TableKind::Consistent) {
-        stats_.closed = !leftVolume;  // the consistent table leaves no holes inside the volume
-    } else {
-        const SurfaceStats measured = measureSurface(mesh_, volume_->volume);
-        stats_.closed = measured.closed;
-        stats_.enclosedVolume = measured.enclosedVolume;
-    }
 }
 
 bool SurfaceStructure::containsEdge(const GridEdge& edge) const {
@@ -107,7 +72,6 @@ void SurfaceStructure::setExplode(float factor, const glm::vec3& volumeCentre) {
 }
 
 glm::vec3 SurfaceStructure::centre() const {
-    if (stats_.boundsMin[0] > stats_.boundsMax[0]) return glm::vec3(0.0f);  // nothing grown yet
     return {static_cast<float>(0.5 * (stats_.boundsMin[0] + stats_.boundsMax[0])),
             static_cast<float>(0.5 * (stats_.boundsMin[1] + stats_.boundsMax[1])),
             static_cast<float>(0.5 * (stats_.boundsMin[2] + stats_.boundsMax[2]))};
@@ -140,7 +104,7 @@ void SurfaceStructure::buildUI(ui::PanelState& state) const {
     row.offset = {userOffset.x, userOffset.y, userOffset.z};
     row.triangles = mesh().triangleCount();
     row.vertices = mesh().vertices.size();
-    row.cellsVisited = growing() ? tracker_->cellsVisited() : stats_.cellsVisited;
+    row.cellsVisited = stats_.cellsVisited;
     row.cpuBytes = cpuBytes();
     row.gpuBytes = gpuBytes();
     row.area = stats_.area;

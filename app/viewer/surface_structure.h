@@ -6,8 +6,8 @@
 //
 // A growing surface is fed a budget per frame: grow() runs the tracker for that
 // long (or that many cells) and appends exactly the new vertex and index ranges
-// to the GPU buffers; area and bounds accumulate from the new triangles, so
-// finishing costs nothing extra.
+// to the GPU buffers; the tracker measures area and bounds as it walks, so
+// finishing costs nothing extra (but the edge check of a classic-table surface).
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
@@ -77,7 +77,6 @@ public:
     std::size_t drawnIndexCount() const { return gpu_.indexCount(); }
 
 private:
-    void accumulate(const Mesh& mesh, std::size_t firstIndex, std::size_t firstVertex);
     void finishGrowth();
 
     std::uint32_t id_;

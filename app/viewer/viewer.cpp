@@ -29,13 +29,6 @@ int extractionThreads(int requested) {
     return std::max(1, cores - 1);  // leave a core to draw with
 }
 
-ui::Method parseMethod(const std::string& name) {
-    if (name == "mc") return ui::Method::Exhaustive;
-    if (name == "track") return ui::Method::Track;
-    if (name == "all") return ui::Method::All;
-    throw InputError("--method \"" + name + "\": expected mc, track or all");
-}
-
 // The script loads its own volume first: skip building the default one.
 bool scriptLoadsFirst(const std::optional<Script>& script) {
     if (!script || script->commands.empty()) return false;
@@ -44,6 +37,13 @@ bool scriptLoadsFirst(const std::optional<Script>& script) {
 }
 
 }  // namespace
+
+ui::Method parseMethod(const std::string& name) {
+    if (name == "mc") return ui::Method::Exhaustive;
+    if (name == "track") return ui::Method::Track;
+    if (name == "all") return ui::Method::All;
+    throw InputError("--method \"" + name + "\": expected mc, track or all");
+}
 
 Viewer::Viewer(const ViewerOptions& options, std::optional<Script> script)
     : options_(options),
@@ -207,14 +207,16 @@ void Viewer::frame() {
         Profiler::Scope scope(profiler_, Stage::Present);
         window_.swapBuffers();
     }
-    FrameCounters counters;
-    counters.surfaces = scene_.surfaces().size();
-    for (const auto& surface : scene_.surfaces()) counters.triangles += surface->mesh().triangleCount();
-    counters.grownCells = grownCells_;
-    counters.growing = scene_.anyGrowing();
-    counters.extracting = worker_.busy();
-    counters.cpuBytes = cpuBytes();
-    counters.gpuBytes = gpuBytes();
+    FrameCounters counters;  // only a recorded trace keeps them
+    if (profiler_.recording()) {
+        counters.surfaces = scene_.surfaces().size();
+        for (const auto& surface : scene_.surfaces()) counters.triangles += surface->mesh().triangleCount();
+        counters.grownCells = grownCells_;
+        counters.growing = scene_.anyGrowing();
+        counters.extracting = worker_.busy();
+        counters.cpuBytes = cpuBytes();
+        counters.gpuBytes = gpuBytes();
+    }
     profiler_.endFrame(counters);
 }
 

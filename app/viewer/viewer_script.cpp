@@ -113,9 +113,7 @@ bool Viewer::runCommand(const ScriptCommand& c) {
     else if (name == "table")
         apply(ui::SetTable{c.text == "classic" ? ui::Table::Classic : ui::Table::Consistent});
     else if (name == "method") {
-        apply(ui::SetMethod{c.text == "mc"      ? ui::Method::Exhaustive
-                            : c.text == "track" ? ui::Method::Track
-                                                : ui::Method::All});
+        apply(ui::SetMethod{parseMethod(c.text)});
     } else if (name == "click") {
         run.clickX = static_cast<float>(c.numbers[0]);
         run.clickY = static_cast<float>(c.numbers[1]);

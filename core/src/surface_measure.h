@@ -100,10 +100,9 @@ inline bool meshIsClosed(const Mesh& mesh) {
     return true;
 }
 
-// The figures of a surface from its measure (cells visited and time aside). With
-// `closedUnlessOnBorder` (the consistent table leaves no holes) a surface is
-// closed exactly when the border does not cut it; otherwise every edge is checked.
-inline SurfaceStats surfaceStats(const Mesh& mesh, const SurfaceMeasure& measure, bool closedUnlessOnBorder) {
+// The figures of a surface from its measure, but for cells visited, time, and
+// whether it is closed (known once it is finished: settleClosed).
+inline SurfaceStats measuredStats(const Mesh& mesh, const SurfaceMeasure& measure) {
     SurfaceStats stats;
     stats.triangles = mesh.triangleCount();
     stats.vertices = mesh.vertices.size();
@@ -116,8 +115,21 @@ inline SurfaceStats surfaceStats(const Mesh& mesh, const SurfaceMeasure& measure
     }
     stats.area = measure.triangles.area();
     stats.touchesBorder = measure.touchesBorder;
+    return stats;
+}
+
+// Whether a finished surface is closed, and then the volume it encloses. With
+// `closedUnlessOnBorder` (the consistent table leaves no holes) a surface is
+// closed exactly when the border does not cut it; otherwise every edge is checked.
+inline void settleClosed(SurfaceStats& stats, const Mesh& mesh, const SurfaceMeasure& measure, bool closedUnlessOnBorder) {
     stats.closed = closedUnlessOnBorder ? !stats.touchesBorder && !mesh.indices.empty() : meshIsClosed(mesh);
     if (stats.closed) stats.enclosedVolume = std::abs(measure.triangles.signedVolume());
+}
+
+// measuredStats and settleClosed of a finished surface.
+inline SurfaceStats surfaceStats(const Mesh& mesh, const SurfaceMeasure& measure, bool closedUnlessOnBorder) {
+    SurfaceStats stats = measuredStats(mesh, measure);
+    settleClosed(stats, mesh, measure, closedUnlessOnBorder);
     return stats;
 }
 

@@ -195,10 +195,9 @@ struct TrackState {
     Mesh mesh;
     detail::SparseBlocks blocks;
     std::uint8_t* denseVisited = nullptr;  // one bit per piece per cell, for trackAllSurfaces
-    detail::SurfaceMeasure* measure = nullptr;  // when given, the walk measures the surface as it goes
+    detail::SurfaceMeasure measure;  // the walk measures the surface as it goes
     PieceQueue queue;
     std::size_t cellsVisited = 0;
-    bool leftVolume = false;
 };
 
 class TrackWorker {
@@ -264,16 +263,11 @@ public:
             }
             std::uint32_t* indices = out.indices.extend(walk.cornerCount);
             for (int k = 0; k < walk.cornerCount; ++k) indices[k] = vertexOf[walk.corners[std::size_t(k)]];
-            if (state.measure) {
-                for (int k = 0; k < walk.cornerCount; k += 3) state.measure->addTriangle(state.mesh.vertices.data(), indices[k], indices[k + 1], indices[k + 2]);
-            }
+            for (int k = 0; k < walk.cornerCount; k += 3) state.measure.addTriangle(state.mesh.vertices.data(), indices[k], indices[k + 1], indices[k + 2]);
             const std::size_t sample = grid_.index(at[0], at[1], at[2]);
             for (int k = 0; k < walk.exitCount; ++k) {
                 const int f = walk.exits[std::size_t(k)] >> 4, edge = walk.exits[std::size_t(k)] & 15;
-                if (at[cube::faceAxis(f)] == border_[f]) {
-                    state.leftVolume = true;  // the surface is cut open by the volume's border here
-                    continue;
-                }
+                if (at[cube::faceAxis(f)] == border_[f]) continue;  // the surface is cut open by the volume's border here
                 if ((cell & walk_.faceMask[f]) == walk_.faceSide[f]) {
                     enqueueIn(state, state.blocks.linked(entry.block, walk_.link[f]), cell ^ walk_.faceMask[f], sample + sampleStep_[f], edge);
                 } else {
@@ -346,7 +340,7 @@ private:
             default: vertexAlong<2>(e.x, e.y, e.z, v); break;
         }
         *out.vertexEdges.extend(1) = e;
-        if (state.measure) state.measure->addVertex(v, e, dims_);
+        state.measure.addVertex(v, e, dims_);
         return static_cast<std::uint32_t>(out.vertices.size() - 1);
     }
 
@@ -484,6 +478,15 @@ SurfaceTracker& SurfaceTracker::operator=(SurfaceTracker&&) noexcept = default;
 
 namespace {
 
+// The finished surface, its mesh taken from the walk's state.
+Surface finishedSurface(TrackState& state, TableKind table) {
+    Surface surface;
+    surface.mesh = std::move(state.mesh);
+    surface.stats = detail::surfaceStats(surface.mesh, state.measure, table == TableKind::Consistent);
+    surface.stats.cellsVisited = state.cellsVisited;
+    return surface;
+}
+
 void checkSeed(const Volume& volume, double iso, const TrackWorker& worker, const GridEdge& seed) {
     if (!edgeInside(volume, seed)) throw InputError("seed edge " + edgeText(seed) + " is outside the volume");
     if (!worker.crossed(seed)) throw InputError("seed edge " + edgeText(seed) + " does not cross iso " + numberText(iso));
@@ -521,25 +524,24 @@ SurfaceTracker::Step SurfaceTracker::stepFor(std::chrono::nanoseconds budget) {
 bool SurfaceTracker::done() const { return impl_->state.queue.empty(); }
 const Mesh& SurfaceTracker::mesh() const { return impl_->state.mesh; }
 std::size_t SurfaceTracker::cellsVisited() const { return impl_->state.cellsVisited; }
-bool SurfaceTracker::leftVolume() const { return impl_->state.leftVolume; }
 std::size_t SurfaceTracker::workingBytes() const {
     return impl_->state.blocks.byteSize() + impl_->state.queue.capacity() * sizeof(Entry);
 }
-Mesh SurfaceTracker::takeMesh() { return std::move(impl_->state.mesh); }
+SurfaceStats SurfaceTracker::stats() const {
+    SurfaceStats stats = detail::measuredStats(impl_->state.mesh, impl_->state.measure);
+    stats.cellsVisited = impl_->state.cellsVisited;
+    return stats;
+}
+Surface SurfaceTracker::takeSurface() { return finishedSurface(impl_->state, impl_->table); }
 
 // ---- whole surfaces -------------------------------------------------------
 
 namespace {
 
-// Walks the surface from the queued seed to the end, measuring it on the way.
+// Walks the surface from the queued seed to the end.
 Surface walkWhole(const TrackWorker& worker, TrackState& state, TableKind table, Clock::time_point start) {
-    detail::SurfaceMeasure measure;
-    state.measure = &measure;
     while (!state.queue.empty()) worker.advance(state, std::numeric_limits<std::size_t>::max());
-    Surface surface;
-    surface.mesh = std::move(state.mesh);
-    surface.stats = detail::surfaceStats(surface.mesh, measure, table == TableKind::Consistent);
-    surface.stats.cellsVisited = state.cellsVisited;
+    Surface surface = finishedSurface(state, table);
     surface.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return surface;
 }

@@ -91,11 +91,13 @@ public:
 
     const Mesh& mesh() const;
     std::size_t cellsVisited() const;
-    // True once the surface has reached the volume's border and been cut open there.
-    bool leftVolume() const;
     // Bytes of the tracker's own bookkeeping (sparse blocks and queue), mesh excluded.
     std::size_t workingBytes() const;
-    Mesh takeMesh();
+    // The figures of the surface grown so far (touchesBorder once it has reached
+    // the volume's border); whether it is closed is known once it is done.
+    SurfaceStats stats() const;
+    // Once done: the surface and all its figures, as trackSurface gives them.
+    Surface takeSurface();
 
 private:
     struct Impl;
