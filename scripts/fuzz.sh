@@ -1,14 +1,13 @@
 #!/usr/bin/env bash
 # Builds the loader fuzzers (tests/fuzz/) with clang, libFuzzer, ASan and UBSan into
 # build-fuzz/ and runs each for a fixed time from its seed corpus.
-# Usage: scripts/fuzz.sh [SECONDS_PER_TARGET]   (default 20; five targets)
+# Usage: scripts/fuzz.sh [SECONDS_PER_TARGET]   (default 20; one target per loader)
 # New corpus entries stay in build-fuzz/corpus/; a crash leaves its input in
 # build-fuzz/artifacts/ and makes the script fail.
 set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 seconds=${1:-20}
 build=$repo/build-fuzz
-targets=(nrrd nifti metaimage vtk ply)
 
 command -v clang++ >/dev/null || { echo "fuzz: clang++ not found (scripts/setup.sh installs it)" >&2; exit 1; }
 flags="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer -g"
@@ -16,6 +15,11 @@ cmake -S "$repo" -B "$build" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang
       -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags" -DISOTRACK_FUZZ=ON -DISOTRACK_BUILD_BENCH=OFF \
       -DISOTRACK_WERROR=OFF >/dev/null
 cmake --build "$build" --target isotrack_fuzzers -j"$(nproc)" >/dev/null
+# The targets tests/fuzz/CMakeLists.txt defines, one per loader.
+targets=()
+for f in "$build"/tests/fuzz/fuzz_*; do
+    [[ -f $f && -x $f ]] && targets+=("${f##*/fuzz_}")
+done
 
 mkdir -p "$build/artifacts"
 # The targets write each input to a file here (on tmpfs when there is one).

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "golden_compare.h"
 #include "isotrack/mesh.h"
 #include "isotrack/volume.h"
 #include "render/image.h"
@@ -32,14 +33,6 @@ struct GoldenTolerance {
     int channelTolerance = 8;
     double maxDifferentFraction = 0.005;
 };
-
-struct ImageDifference {
-    std::size_t differentPixels = 0;
-    int largestChannelDelta = 0;
-    render::Image diff;
-};
-
-ImageDifference compareImages(const render::Image& expected, const render::Image& actual, int channelTolerance);
 
 // Checks `actual` against tests/golden/<name>.png as described above (Catch2 assertions).
 void checkGolden(const std::string& name, const render::Image& actual, const GoldenTolerance& tolerance = {});

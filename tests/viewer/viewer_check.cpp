@@ -19,14 +19,13 @@
 // ISOTRACK_UPDATE_GOLDEN=1 writes the baseline instead: look at it first.
 #include <algorithm>
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "golden_compare.h"
 #include "render/image.h"
 
 using isotrack::render::Image;
@@ -70,8 +69,7 @@ int golden(const std::string& actualPath, const std::string& name) {
     const Image actual = reduce(isotrack::render::readPng(actualPath));
     const std::string goldenPath = std::string(ISOTRACK_GOLDEN_DIR) + "/" + name + ".png";
     const std::string stem = std::filesystem::path(actualPath).replace_extension().string();
-    const char* update = std::getenv("ISOTRACK_UPDATE_GOLDEN");
-    if (update != nullptr && std::strcmp(update, "1") == 0) {
+    if (isotrack::test::updateRequested()) {
         isotrack::render::writePng(actual, goldenPath);
         std::printf("wrote %s (look at it before committing)\n", goldenPath.c_str());
         return 0;
@@ -87,33 +85,15 @@ int golden(const std::string& actualPath, const std::string& name) {
         return fail(name + ": golden is " + std::to_string(expected.width) + "x" + std::to_string(expected.height) +
                     ", reduced screenshot is " + std::to_string(actual.width) + "x" + std::to_string(actual.height));
     }
-    Image diff(actual.width, actual.height);
-    std::size_t different = 0;
-    int largest = 0;
-    for (int y = 0; y < actual.height; ++y) {
-        for (int x = 0; x < actual.width; ++x) {
-            int delta = 0;
-            for (int c = 0; c < 3; ++c)
-                delta = std::max(delta, std::abs(expected.pixel(x, y)[c] - actual.pixel(x, y)[c]));
-            largest = std::max(largest, delta);
-            std::uint8_t* d = diff.pixel(x, y);
-            if (delta > kChannelTolerance) {
-                ++different;
-                d[0] = static_cast<std::uint8_t>(128 + delta / 2);
-                d[1] = d[2] = 0;
-            } else {
-                d[0] = d[1] = d[2] = static_cast<std::uint8_t>(
-                    (expected.pixel(x, y)[0] + expected.pixel(x, y)[1] + expected.pixel(x, y)[2]) / 9);
-            }
-            d[3] = 255;
-        }
-    }
+    const isotrack::test::ImageDifference difference = isotrack::test::compareImages(expected, actual, kChannelTolerance);
+    const std::size_t different = difference.differentPixels;
+    const int largest = difference.largestChannelDelta;
     const double fraction = double(different) / double(actual.width * actual.height);
     std::printf("%s: %zu of %d pixels differ (%.3f%%, limit %.1f%%), largest channel delta %d\n", name.c_str(),
                 different, actual.width * actual.height, 100.0 * fraction, 100.0 * kMaxDifferentFraction, largest);
     if (fraction <= kMaxDifferentFraction) return 0;
     isotrack::render::writePng(actual, stem + ".reduced.png");
-    isotrack::render::writePng(diff, stem + ".diff.png");
+    isotrack::render::writePng(difference.diff, stem + ".diff.png");
     return fail(name + " differs from " + goldenPath + "\n  actual: " + stem + ".reduced.png\n  diff:   " + stem +
                 ".diff.png");
 }
