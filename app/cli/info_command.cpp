@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <memory>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -46,19 +47,8 @@ Histogram histogram(const Volume& volume, int bins) {
     }
     h.min = range[0];
     h.max = range[1];
-    h.counts.assign(std::size_t(bins), 0);
-    const double scale = h.max > h.min ? double(bins) / (h.max - h.min) : 0.0;
-    visitSamples(volume, [&](const auto* samples) {
-        for (std::size_t i = 0; i < n; ++i) {
-            const double v = double(samples[i]);
-            if (!std::isfinite(v)) {
-                ++h.nonFinite;
-                continue;
-            }
-            const auto bin = std::min(std::size_t((v - h.min) * scale), std::size_t(bins - 1));
-            ++h.counts[bin];
-        }
-    });
+    h.counts = sampleHistogram(volume, range, std::size_t(bins));
+    h.nonFinite = n - std::accumulate(h.counts.begin(), h.counts.end(), std::uint64_t(0));
     return h;
 }
 

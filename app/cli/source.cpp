@@ -12,11 +12,15 @@ namespace isotrack::cli {
 
 namespace {
 
-const std::map<std::string, ScalarType> kRawTypes = {
-    {"uint8", ScalarType::UInt8},     {"int8", ScalarType::Int8},     {"uint16", ScalarType::UInt16},
-    {"int16", ScalarType::Int16},     {"uint32", ScalarType::UInt32}, {"int32", ScalarType::Int32},
-    {"float32", ScalarType::Float32}, {"float64", ScalarType::Float64},
-};
+// --type takes the names info and extract --json print (scalarTypeName).
+const std::map<std::string, ScalarType> kRawTypes = [] {
+    std::map<std::string, ScalarType> types;
+    for (ScalarType t : {ScalarType::UInt8, ScalarType::Int8, ScalarType::UInt16, ScalarType::Int16, ScalarType::UInt32,
+                         ScalarType::Int32, ScalarType::Float32, ScalarType::Float64}) {
+        types[scalarTypeName(t)] = t;
+    }
+    return types;
+}();
 
 }  // namespace
 

@@ -27,21 +27,8 @@ double msSince(Clock::time_point start) {
 }
 
 std::vector<float> histogramOf(const Volume& volume, const std::array<double, 2>& range) {
-    std::vector<float> bins(kHistogramBins, 0.0f);
-    const double span = range[1] - range[0];
-    const double scale = span > 0.0 ? double(kHistogramBins) / span : 0.0;
-    visitSamples(volume, [&](const auto* samples) {
-        std::vector<std::size_t> counts(kHistogramBins, 0);
-        for (std::size_t i = 0, n = volume.sampleCount(); i < n; ++i) {
-            const double v = static_cast<double>(samples[i]);
-            if (!std::isfinite(v)) continue;
-            const auto bin =
-                static_cast<std::size_t>(std::clamp((v - range[0]) * scale, 0.0, double(kHistogramBins - 1)));
-            ++counts[bin];
-        }
-        for (std::size_t b = 0; b < kHistogramBins; ++b) bins[b] = static_cast<float>(counts[b]);
-    });
-    return bins;
+    const std::vector<std::uint64_t> counts = sampleHistogram(volume, range, kHistogramBins);
+    return std::vector<float>(counts.begin(), counts.end());
 }
 
 std::shared_ptr<LoadedVolume> load(const SourceSpec& source) {

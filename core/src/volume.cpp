@@ -106,4 +106,19 @@ std::array<double, 2> Volume::range() const {
     });
 }
 
+std::vector<std::uint64_t> sampleHistogram(const Volume& volume, const std::array<double, 2>& range, std::size_t bins) {
+    std::vector<std::uint64_t> counts(bins, 0);
+    if (bins == 0) return counts;
+    const double span = range[1] - range[0];
+    const double scale = span > 0.0 ? double(bins) / span : 0.0;
+    visitSamples(volume, [&](const auto* samples) {
+        for (std::size_t i = 0, n = volume.sampleCount(); i < n; ++i) {
+            const double v = static_cast<double>(samples[i]);
+            if (!std::isfinite(v)) continue;
+            ++counts[static_cast<std::size_t>(std::clamp((v - range[0]) * scale, 0.0, double(bins - 1)))];
+        }
+    });
+    return counts;
+}
+
 }  // namespace isotrack

@@ -109,3 +109,14 @@ TEST_CASE("volume rejects bad dimensions without allocating", "[core][volume]") 
     CHECK_THROWS_AS(Volume({2048, 2048, 2048}, ScalarType::Float32), InputError);
     CHECK_THROWS_WITH(Volume({2, 0, 3}, ScalarType::UInt8), Catch::Contains("2 x 0 x 3"));
 }
+
+TEST_CASE("sample histogram: finite samples in equal bins, the ends clamped", "[core][volume]") {
+    Volume volume({6, 1, 1}, ScalarType::Float32);
+    const double values[6] = {0.0, 0.9, 1.0, 3.99, 4.0, std::nan("")};
+    for (int x = 0; x < 6; ++x) volume.setValue(x, 0, 0, values[x]);
+    // [0, 4] in 4 bins of width 1: 4.0 belongs to the last bin, NaN to none.
+    CHECK(sampleHistogram(volume, volume.range(), 4) == std::vector<std::uint64_t>{2, 1, 0, 2});
+    // A range narrower than the data clamps to the end bins; a flat range puts everything in the first.
+    CHECK(sampleHistogram(volume, {1.0, 3.0}, 2) == std::vector<std::uint64_t>{3, 2});
+    CHECK(sampleHistogram(volume, {2.0, 2.0}, 3) == std::vector<std::uint64_t>{5, 0, 0});
+}

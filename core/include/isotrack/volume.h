@@ -86,4 +86,8 @@ decltype(auto) visitSamples(const Volume& volume, Fn&& fn) {
     return fn(volume.data<double>());
 }
 
+// Counts of the finite samples in `bins` equal bins over [range[0], range[1]]
+// (values outside go to the end bins); NaN and infinities are not counted.
+std::vector<std::uint64_t> sampleHistogram(const Volume& volume, const std::array<double, 2>& range, std::size_t bins);
+
 }  // namespace isotrack
