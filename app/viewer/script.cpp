@@ -16,7 +16,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Argument shapes: N a number, I a surface index (integer >= 0), W a word, P a
+// Argument shapes: N a number, I a surface index (integer >= 0, or one of the
+// command's keywords in its place), W a word, P a
 // path (the rest of the line, may hold spaces), K one of a command's keywords.
 struct Syntax {
     std::string arguments;  // one letter per argument
@@ -40,7 +41,7 @@ const std::map<std::string, Syntax>& commands() {
         {"checkpoint", {"W", 0, {}}},
         {"camera", {"W", 0, {}}},
         {"frame", {"K", 1, {"all", "selection"}}},
-        {"select", {"W", 0, {}}},
+        {"select", {"I", 0, {"none"}}},
         {"hide", {"I", 0, {}}},
         {"show", {"I", 0, {}}},
         {"isolate", {"I", 0, {}}},
@@ -128,6 +129,10 @@ ScriptCommand parseLine(const std::string& path, int line, const std::string& co
                 command.numbers.push_back(value);
                 break;
             case 'I':
+                if (syntax.keywords.count(word) != 0) {  // a command's word in place of the index ("select none")
+                    command.text = word;
+                    break;
+                }
                 if (!parseNumber(word, value) || value < 0.0 || value != std::floor(value) || value > 1e9) {
                     throw fail(command.name + ": \"" + word + "\" is not a whole number >= 0");
                 }

@@ -153,17 +153,8 @@ bool Viewer::runCommand(const ScriptCommand& c) {
     } else if (name == "select") {
         if (c.text == "none")
             apply(ui::Select{std::nullopt});
-        else {
-            double index = 0.0;
-            ScriptCommand numbered = c;
-            try {
-                index = std::stod(c.text);
-            } catch (const std::exception&) {
-                throw run.script.error(c, "select: \"" + c.text + "\" is not a surface index or none");
-            }
-            numbered.numbers = {index};
-            apply(ui::Select{surfaceAt(numbered, 0).id()});
-        }
+        else
+            apply(ui::Select{surfaceAt(c, 0).id()});
     } else if (name == "hide" || name == "show") {
         apply(ui::SetVisible{surfaceAt(c, 0).id(), name == "show"});
     } else if (name == "isolate") {

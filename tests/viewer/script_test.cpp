@@ -61,6 +61,8 @@ TEST_CASE("a script of every command parses, skipping comments and blank lines",
     CHECK(script.commands[9].text == "out dir/shot one.png");  // a path is the rest of the line
     CHECK(script.commands[13].text == "selection");
     CHECK(script.commands[14].text.empty());  // frame, with its optional keyword left out
+    CHECK(script.commands[15].text == "none");
+    CHECK(script.commands[16].numbers == std::vector<double>{2});
     CHECK(script.commands.back().name == "quit");
 }
 
@@ -69,6 +71,8 @@ TEST_CASE("script errors name the file and the line", "[viewer][script]") {
     CHECK(errorOf("\n\niso one\n") == "s.isotrack:3: iso: \"one\" is not a number");
     CHECK(errorOf("frames -2") == "s.isotrack:1: frames: \"-2\" is not a whole number >= 0");
     CHECK(errorOf("frames 1.5") == "s.isotrack:1: frames: \"1.5\" is not a whole number >= 0");
+    CHECK(errorOf("select -1") == "s.isotrack:1: select: \"-1\" is not a whole number >= 0");
+    CHECK(errorOf("select 1.7") == "s.isotrack:1: select: \"1.7\" is not a whole number >= 0");
     CHECK(errorOf("method fast") == "s.isotrack:1: method: \"fast\" is not one of all|mc|track");
     CHECK(errorOf("click 0.5") == "s.isotrack:1: click: expected 2 to 3 arguments, got 1");
     CHECK(errorOf("click 0.5 1.2") == "s.isotrack:1: click: 1.2 is outside 0..1 (a fraction of the 3D view)");
