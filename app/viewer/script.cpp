@@ -17,8 +17,8 @@ namespace {
 namespace fs = std::filesystem;
 
 // Argument shapes: N a number, I a surface index (integer >= 0, or one of the
-// command's keywords in its place), W a word, P a
-// path (the rest of the line, may hold spaces), K one of a command's keywords.
+// command's keywords in its place), W a word, P a path (the rest of the line,
+// may hold spaces), K one of a command's keywords.
 struct Syntax {
     std::string arguments;  // one letter per argument
     int optional = 0;       // how many trailing arguments may be left out
