@@ -162,56 +162,30 @@ void Profiler::writeTrace() {
     metadata(1, "frame loop (CPU)");
     metadata(2, "GPU (timer queries)");
     metadata(3, "extraction worker");
+    // A complete ("X") event: a span of `dur` microseconds from `ts` on thread `tid`.
+    auto complete = [](const std::string& name, const char* category, int tid, double ts, double dur) {
+        return json{{"name", name}, {"cat", category}, {"ph", "X"}, {"pid", 1}, {"tid", tid}, {"ts", ts}, {"dur", dur}};
+    };
     for (const FrameRecord& record : records_) {
         const FrameCounters& c = record.counters;
-        events.push_back({{"name", "frame"},
-                          {"cat", "frame"},
-                          {"ph", "X"},
-                          {"pid", 1},
-                          {"tid", 1},
-                          {"ts", record.startUs},
-                          {"dur", record.durationUs},
-                          {"args",
-                           {{"frame", record.index},
-                            {"surfaces", c.surfaces},
-                            {"triangles", c.triangles},
-                            {"growing", c.growing},
-                            {"grown_cells", c.grownCells},
-                            {"extracting", c.extracting},
-                            {"gpu_ms", record.gpuUs >= 0.0 ? json(record.gpuUs / 1000.0) : json(nullptr)}}}});
-        for (const Span& span : record.spans) {
-            events.push_back({{"name", stageName(span.stage)},
-                              {"cat", "stage"},
-                              {"ph", "X"},
-                              {"pid", 1},
-                              {"tid", 1},
-                              {"ts", span.startUs},
-                              {"dur", span.durationUs}});
-        }
-        if (record.gpuUs >= 0.0) {
-            events.push_back({{"name", "gpu draw"},
-                              {"cat", "gpu"},
-                              {"ph", "X"},
-                              {"pid", 1},
-                              {"tid", 2},
-                              {"ts", record.gpuStartUs},
-                              {"dur", record.gpuUs}});
-        }
+        json frame = complete("frame", "frame", 1, record.startUs, record.durationUs);
+        frame["args"] = {{"frame", record.index},
+                         {"surfaces", c.surfaces},
+                         {"triangles", c.triangles},
+                         {"growing", c.growing},
+                         {"grown_cells", c.grownCells},
+                         {"extracting", c.extracting},
+                         {"gpu_ms", record.gpuUs >= 0.0 ? json(record.gpuUs / 1000.0) : json(nullptr)}};
+        events.push_back(std::move(frame));
+        for (const Span& span : record.spans) events.push_back(complete(stageName(span.stage), "stage", 1, span.startUs, span.durationUs));
+        if (record.gpuUs >= 0.0) events.push_back(complete("gpu draw", "gpu", 2, record.gpuStartUs, record.gpuUs));
         events.push_back({{"name", "memory"},
                           {"ph", "C"},
                           {"pid", 1},
                           {"ts", record.startUs},
                           {"args", {{"cpu_bytes", c.cpuBytes}, {"gpu_bytes", c.gpuBytes}}}});
     }
-    for (const WorkerSpan& span : workerSpans_) {
-        events.push_back({{"name", span.name},
-                          {"cat", "worker"},
-                          {"ph", "X"},
-                          {"pid", 1},
-                          {"tid", 3},
-                          {"ts", span.startUs},
-                          {"dur", span.durationUs}});
-    }
+    for (const WorkerSpan& span : workerSpans_) events.push_back(complete(span.name, "worker", 3, span.startUs, span.durationUs));
     const json trace = {{"traceEvents", events}, {"displayTimeUnit", "ms"}};
     std::ofstream file(tracePath_);
     file << trace.dump() << '\n';

@@ -69,7 +69,6 @@ public:
     double fps() const { return fps_; }
     std::vector<float> history() const;  // oldest first
     double medianFrameMs() const;        // over every frame so far (to 0.05 ms)
-    // Frames [first, last] as counted by frames() since a mark, for summaries.
     bool gpuTimersAvailable() const { return !queries_.empty(); }
 
     // ---- the trace ----
