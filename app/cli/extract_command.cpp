@@ -117,7 +117,7 @@ Extraction extractOnce(const ExtractOptions& options, const Source& source, Tabl
     }
     if (options.method == "track") {
         const GridEdge seed = nearestCrossedEdge(source.volume, source.iso, {options.seed[0], options.seed[1], options.seed[2]});
-        Surface surface = trackSurface(source.volume, source.iso, seed, table);
+        Surface surface = trackSurface(source.volume, source.iso, seed, table, options.threads);
         out.seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
         out.components = 1;
         out.cellsVisited = surface.stats.cellsVisited;
@@ -225,7 +225,7 @@ int runExtract(const ExtractOptions& options) {
             {"cells_total", cellsTotal},
             {"seconds", seconds},
             {"seconds_all", result.seconds},
-            {"threads", options.method == "track" ? 1 : options.threads},
+            {"threads", options.threads},
             {"mesh_bytes", result.meshBytes},
             {"soup_bytes", soupBytes},
             {"mesh_to_soup", soupBytes ? double(result.meshBytes) / double(soupBytes) : 0.0},
@@ -264,7 +264,7 @@ RunCommand addExtractCommand(CLI::App& app) {
     command->add_option("--seed", options->seed, "World point X,Y,Z: tracking starts at the crossed edge nearest to it")
         ->delimiter(',')
         ->expected(3);
-    command->add_option("--threads", options->threads, "Threads for mc and all (default: all cores)")
+    command->add_option("--threads", options->threads, "Threads (default: all cores)")
         ->check(CLI::Range(1, 256));
     command->add_option("--repeat", options->repeat, "Run the extraction K times; seconds is the median")
         ->check(CLI::Range(1, 1000));

@@ -219,7 +219,7 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
                 } catch (const InputError&) {
                     continue;  // no surface at this isovalue any more
                 }
-                Surface surface = trackSurface(volume, result.iso, seed, request.table);
+                Surface surface = trackSurface(volume, result.iso, seed, request.table, threads_);
                 if (!seen.insert(surfaceKey(surface.mesh, volume)).second) continue;
                 result.surfaces.push_back(std::move(surface));
                 result.seeds.emplace_back(point);

@@ -1,19 +1,29 @@
 #pragma once
 // Per-surface storage for the tracker: blocks of 8x8x8 grid points, created on
-// first touch and found through a hash map keyed by block. A surface touches a
-// thin shell of blocks, so memory follows the surface, not the volume, while
-// neighbouring cells and edges share cache lines, unlike a map keyed by cell.
+// first touch. A surface touches a thin shell of blocks, so memory follows the
+// surface, not the volume, while neighbouring cells and edges share cache lines,
+// unlike a map keyed by cell.
 //
-// Each block keeps links to the 26 blocks around it, resolved through the hash
-// map the first time they are needed: a cell's neighbours and the far ends of its
-// edges are then one load away, however often the tracker crosses block faces.
+// Blocks are found through a two-level directory: a table of regions of 8x8x8
+// blocks (64^3 grid points), each region a table of its blocks, both filled as
+// the surface reaches them. Each block also keeps links to the 26 blocks around
+// it, looked up the first time they are needed, so a cell's neighbours and the
+// far ends of its edges are one load away however often the tracker crosses
+// block faces.
+//
+// Several threads may walk one surface. Each region belongs to one of them (in a
+// checkerboard of regions), the only thread that classifies, marks and queues
+// the region's cells; regions and blocks are published with a compare-and-swap,
+// each thread allocating from its own arena.
+#include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <deque>
 #include <limits>
+#include <memory>
 #include <vector>
 
-#include "flat_hash.h"
 #include "isotrack/volume.h"
 
 namespace isotrack::detail {
@@ -29,62 +39,119 @@ public:
     static constexpr int kSelf = 13;
 
     struct Block {
-        std::array<std::uint8_t, kPoints> config{};       // per cell; 0 until classified (0 is never queued)
-        std::array<std::uint8_t, kPoints> visited{};      // per cell, one bit per piece
-        std::array<std::uint32_t, 3 * kPoints> vertex;    // per grid point and axis, the vertex on that edge
-        std::array<std::uint32_t, 27> link{};             // 1 + index of each adjacent block; 0 until looked up
-        std::array<int, 3> origin{};                      // grid coordinates of local point (0, 0, 0)
-        Block() { vertex.fill(kNoVertex); }
+        std::array<std::uint8_t, kPoints> config{};     // per cell; 0 until classified (0 is never queued)
+        std::array<std::uint8_t, kPoints> visited{};    // per cell, one bit per piece
+        std::array<std::uint32_t, 3 * kPoints> vertex;  // per grid point and axis, the vertex on that edge
+        std::array<std::atomic<Block*>, 27> link;       // each adjacent block; null until looked up
+        std::array<int, 3> origin{};                    // grid coordinates of local point (0, 0, 0)
+        int owner = 0;                                  // the thread walking the block's cells
+        Block(const std::array<int, 3>& at, int thread) : origin(at), owner(thread) {
+            vertex.fill(kNoVertex);
+            for (auto& l : link) l.store(nullptr, std::memory_order_relaxed);
+            link[kSelf].store(this, std::memory_order_relaxed);
+        }
     };
 
-    explicit SparseBlocks(const Dims& dims)
-        : blocksX_((dims[0] + kSide - 1) / kSide), blocksY_((dims[1] + kSide - 1) / kSide) {}
+    // A region of 8x8x8 blocks.
+    struct Region {
+        std::array<std::atomic<Block*>, kPoints> block;
+        Region() {
+            for (auto& b : block) b.store(nullptr, std::memory_order_relaxed);
+        }
+    };
+
+    // Where one thread's blocks and regions come from; only that thread uses it.
+    class Arena {
+    public:
+        std::size_t byteSize() const { return blocks_.size() * sizeof(Block) + regions_.size() * sizeof(Region); }
+
+    private:
+        friend class SparseBlocks;
+        std::deque<Block> blocks_;
+        std::deque<Region> regions_;
+        Block* spareBlock_ = nullptr;  // made, but another thread published its block first
+        Region* spareRegion_ = nullptr;
+    };
+
+    SparseBlocks(const Dims& dims, int threads = 1)
+        : blocksX_((dims[0] + kSide - 1) >> kShift),
+          blocksY_((dims[1] + kSide - 1) >> kShift),
+          regionsX_((blocksX_ + kSide - 1) >> kShift),
+          regionsY_((blocksY_ + kSide - 1) >> kShift),
+          regions_(std::size_t(regionsX_) * std::size_t(regionsY_) * std::size_t((((dims[2] + kSide - 1) >> kShift) + kSide - 1) >> kShift)),
+          arenas_(std::size_t(std::max(threads, 1))),
+          threads_(std::max(threads, 1)) {
+        for (auto& r : regions_) r.store(nullptr, std::memory_order_relaxed);
+    }
 
     static int local(int x, int y, int z) {
         constexpr int m = kSide - 1;
         return (x & m) | (y & m) << kShift | (z & m) << (2 * kShift);
     }
+    // Grid points whose coordinates differ only in these low bits lie in one region.
+    static constexpr int kRegionMask = (1 << 2 * kShift) - 1;
+    // The thread walking the cells of the region holding grid point (x, y, z).
+    int ownerAt(int x, int y, int z) const { return ((x >> 2 * kShift) + (y >> 2 * kShift) + (z >> 2 * kShift)) % threads_; }
+
     // The step in local index for a unit step along each axis.
     static constexpr std::array<int, 3> kLocalStep{1, kSide, kSide * kSide};
 
-    // The index of the block holding grid point (x, y, z), created empty on first use.
-    std::uint32_t indexAt(int x, int y, int z) {
+    // The block holding grid point (x, y, z), created empty on first use from
+    // thread `thread`'s arena.
+    Block* at(int x, int y, int z, int thread = 0) {
         const int bx = x >> kShift, by = y >> kShift, bz = z >> kShift;
-        const std::uint64_t key = std::uint64_t(bx) + std::uint64_t(blocksX_) * (std::uint64_t(by) + std::uint64_t(blocksY_) * std::uint64_t(bz));
-        bool inserted = false;
-        const std::uint32_t index = index_.findOrInsert(key, static_cast<std::uint32_t>(pointers_.size()), inserted);
-        if (inserted) {
-            blocks_.emplace_back();
-            blocks_.back().origin = {bx << kShift, by << kShift, bz << kShift};
-            blocks_.back().link[kSelf] = index + 1;
-            pointers_.push_back(&blocks_.back());
+        Arena& arena = arenas_[std::size_t(thread)];
+        std::atomic<Region*>& regionSlot =
+            regions_[std::size_t(bx >> kShift) + std::size_t(regionsX_) * (std::size_t(by >> kShift) + std::size_t(regionsY_) * std::size_t(bz >> kShift))];
+        Region* region = regionSlot.load(std::memory_order_acquire);
+        if (region == nullptr) region = publish(regionSlot, arena.spareRegion_, [&] { return &arena.regions_.emplace_back(); });
+        std::atomic<Block*>& blockSlot = region->block[std::size_t(local(bx, by, bz))];
+        Block* block = blockSlot.load(std::memory_order_acquire);
+        if (block == nullptr) {
+            const std::array<int, 3> origin{bx << kShift, by << kShift, bz << kShift};
+            const int owner = ownerAt(x, y, z);
+            if (arena.spareBlock_ != nullptr) arena.spareBlock_->origin = origin, arena.spareBlock_->owner = owner;
+            block = publish(blockSlot, arena.spareBlock_, [&] { return &arena.blocks_.emplace_back(origin, owner); });
         }
-        return index;
+        return block;
     }
 
-    // References stay valid as blocks are added (a deque never moves them).
-    Block& operator[](std::uint32_t index) { return *pointers_[index]; }
-
-    // The index of the block at `link` from block `index` (see kSelf).
-    std::uint32_t linked(std::uint32_t index, int link) {
-        const std::uint32_t slot = pointers_[index]->link[std::size_t(link)];
-        return slot != 0 ? slot - 1 : resolve(index, link);
+    // The block at `link` from `block` (see kSelf).
+    Block* linked(Block* block, int link, int thread = 0) {
+        Block* found = block->link[std::size_t(link)].load(std::memory_order_acquire);
+        return found != nullptr ? found : resolve(block, link, thread);
     }
 
-    std::size_t byteSize() const { return blocks_.size() * (sizeof(Block) + sizeof(Block*)) + index_.byteSize(); }
+    std::size_t byteSize() const {
+        std::size_t bytes = regions_.size() * sizeof(regions_[0]);
+        for (const Arena& arena : arenas_) bytes += arena.byteSize();
+        return bytes;
+    }
 
 private:
-    [[gnu::noinline]] std::uint32_t resolve(std::uint32_t index, int link) {
-        const std::array<int, 3> o = pointers_[index]->origin;
-        const std::uint32_t found = indexAt(o[0] + (link % 3 - 1) * kSide, o[1] + (link / 3 % 3 - 1) * kSide, o[2] + (link / 9 - 1) * kSide);
-        pointers_[index]->link[std::size_t(link)] = found + 1;
+    // Publishes a new object in `slot` unless another thread was first; the
+    // loser keeps its object as `spare` for its next creation of the same kind.
+    template <class T, class Make>
+    static T* publish(std::atomic<T*>& slot, T*& spare, Make make) {
+        T* made = spare != nullptr ? spare : make();
+        spare = nullptr;
+        T* expected = nullptr;
+        if (slot.compare_exchange_strong(expected, made, std::memory_order_acq_rel, std::memory_order_acquire)) return made;
+        spare = made;
+        return expected;
+    }
+
+    [[gnu::noinline]] Block* resolve(Block* block, int link, int thread) {
+        const std::array<int, 3> o = block->origin;
+        Block* found = at(o[0] + (link % 3 - 1) * kSide, o[1] + (link / 3 % 3 - 1) * kSide, o[2] + (link / 9 - 1) * kSide, thread);
+        block->link[std::size_t(link)].store(found, std::memory_order_release);
         return found;
     }
 
-    int blocksX_, blocksY_;
-    FlatHashMap index_;
-    std::deque<Block> blocks_;
-    std::vector<Block*> pointers_;
+    int blocksX_, blocksY_, regionsX_, regionsY_;
+    std::vector<std::atomic<Region*>> regions_;
+    std::vector<Arena> arenas_;
+    int threads_;
 };
 
 }  // namespace isotrack::detail

@@ -22,11 +22,14 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <mutex>
 #include <string>
+#include <thread>
 
 #include "edge_vertex.h"
 #include "flat_hash.h"
 #include "huge_pages.h"
+#include "parallel.h"
 #include "sparse_blocks.h"
 #include "surface_measure.h"
 #include "isotrack/continuation.h"
@@ -37,12 +40,14 @@ namespace isotrack {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+using detail::SparseBlocks;
+using Block = SparseBlocks::Block;
 
 // A cell piece waiting in the queue; it was marked when queued, so each piece is
 // queued once.
 struct Entry {
-    std::uint32_t block;  // index in the surface's sparse blocks
-    std::uint16_t cell;   // local index in the block
+    Block* block;
+    std::uint16_t cell;  // local index in the block
     std::uint8_t config;
     std::uint8_t piece;
 };
@@ -53,11 +58,17 @@ struct Entry {
 class PieceQueue {
 public:
     bool empty() const { return head_ == tail_; }
+    std::size_t size() const { return tail_ - head_; }
     void push(const Entry& entry) {
         if (tail_ - head_ == ring_.size()) grow();
         ring_[tail_++ & (ring_.size() - 1)] = entry;
     }
     Entry pop() { return ring_[head_++ & (ring_.size() - 1)]; }
+    // Moves the `count` newest entries to the end of `out`.
+    void takeNewest(std::size_t count, std::vector<Entry>& out) {
+        for (std::size_t i = tail_ - count; i != tail_; ++i) out.push_back(ring_[i & (ring_.size() - 1)]);
+        tail_ -= count;
+    }
     std::size_t capacity() const { return ring_.size(); }
 
 private:
@@ -93,6 +104,8 @@ public:
         return at;
     }
     std::size_t size() const { return size_; }
+    // Gives back the last `count` elements.
+    void retract(std::size_t count) { size_ -= count; }
 
 private:
     // Sizes the buffer to its capacity, first moving to one twice as large when
@@ -189,32 +202,137 @@ std::string edgeText(const GridEdge& e) {
            "xyz"[e.axis];
 }
 
-// What a tracked surface accumulates, whatever the sample type.
-struct TrackState {
-    explicit TrackState(const Dims& dims) : blocks(dims) {}
+// One thread's share of a walk: its queue, and the vertices and triangles it
+// emits with their measure. A vertex id is the vertex's index in the walker's
+// mesh, with the walker's thread in the id's top bits when several walk.
+struct Walker {
     Mesh mesh;
-    detail::SparseBlocks blocks;
-    std::uint8_t* denseVisited = nullptr;  // one bit per piece per cell, for trackAllSurfaces
-    detail::SurfaceMeasure measure;  // the walk measures the surface as it goes
+    detail::SurfaceMeasure measure;
     PieceQueue queue;
     std::size_t cellsVisited = 0;
+    int thread = 0;  // the regions it walks, and its arena in the sparse blocks
+    std::uint32_t idBase = 0;                 // thread << the width of an index
+    std::uint32_t indexMask = ~std::uint32_t(0);  // the index bits of an id
+    std::vector<std::size_t> unmeasured;      // triangles (first index) with another thread's corners
+};
+
+// A surface walked by one thread, whatever the sample type.
+struct TrackState {
+    explicit TrackState(const Dims& dims) : blocks(dims) {}
+    SparseBlocks blocks;
+    std::uint8_t* denseVisited = nullptr;  // one bit per piece per cell, for trackAllSurfaces
+    Walker walker;
+};
+
+// The messages between threads walking one surface together. Each thread walks
+// the cells of its own regions; a piece that continues into another thread's
+// region is sent to that thread, which queues it as its own.
+class Exchange {
+public:
+    struct Message {
+        Block* block;
+        std::size_t sample;  // the cell's first corner
+        std::uint16_t cell;
+        std::uint8_t edge;   // the entry edge
+    };
+
+    explicit Exchange(int threads)
+        : threads_(threads), outbox_(std::size_t(threads) * std::size_t(threads)), inbox_(std::size_t(threads)), mail_(std::size_t(threads)) {}
+
+    // Collected by the sender, handed over at its next poll or wait.
+    void send(int from, int to, const Message& message) { outbox_[std::size_t(from * threads_ + to)].push_back(message); }
+
+    // From a walking thread every so often: hands over what it sent and takes
+    // what was sent to it; false once the walk is abandoned.
+    bool poll(int me, std::vector<Message>& received) {
+        if (stopped_.load(std::memory_order_relaxed)) return false;
+        bool sent = false;
+        for (int to = 0; to < threads_; ++to) sent = sent || !outbox_[std::size_t(me * threads_ + to)].empty();
+        if (sent || mail_[std::size_t(me)].flag.load(std::memory_order_relaxed)) {
+            const std::lock_guard<std::mutex> lock(mutex_);
+            handOver(me);
+            takeLocked(me, received);
+        }
+        return true;
+    }
+
+    // From a thread with nothing left to walk: waits for pieces sent to it
+    // (true) or for every thread to be done (false).
+    bool wait(int me, std::vector<Message>& received) {
+        {
+            const std::lock_guard<std::mutex> lock(mutex_);
+            handOver(me);
+            if (takeLocked(me, received)) return true;
+            ++idle_;
+            if (idle_ == threads_ && std::all_of(inbox_.begin(), inbox_.end(), [](const auto& box) { return box.empty(); })) {
+                finished_.store(true, std::memory_order_release);
+                return false;
+            }
+        }
+        for (;;) {
+            if (finished_.load(std::memory_order_acquire) || stopped_.load(std::memory_order_acquire)) return false;
+            if (mail_[std::size_t(me)].flag.load(std::memory_order_relaxed)) {
+                const std::lock_guard<std::mutex> lock(mutex_);
+                if (takeLocked(me, received)) {
+                    --idle_;
+                    return true;
+                }
+            }
+            std::this_thread::yield();
+        }
+    }
+
+    // Abandons the walk (a thread failed): every thread stops at its next poll or wait.
+    void stop() { stopped_.store(true, std::memory_order_release); }
+
+private:
+    void handOver(int me) {
+        for (int to = 0; to < threads_; ++to) {
+            auto& box = outbox_[std::size_t(me * threads_ + to)];
+            if (box.empty()) continue;
+            inbox_[std::size_t(to)].insert(inbox_[std::size_t(to)].end(), box.begin(), box.end());
+            box.clear();
+            mail_[std::size_t(to)].flag.store(true, std::memory_order_relaxed);
+        }
+    }
+
+    bool takeLocked(int me, std::vector<Message>& received) {
+        mail_[std::size_t(me)].flag.store(false, std::memory_order_relaxed);
+        if (inbox_[std::size_t(me)].empty()) return false;
+        received.swap(inbox_[std::size_t(me)]);
+        return true;
+    }
+
+    struct alignas(64) Flag {
+        std::atomic<bool> flag{false};
+    };
+
+    const int threads_;
+    std::vector<std::vector<Message>> outbox_;  // [from * threads + to], each used by its sender only
+    std::mutex mutex_;                          // guards inbox_ and idle_
+    std::vector<std::vector<Message>> inbox_;
+    int idle_ = 0;
+    std::vector<Flag> mail_;  // something may be in the thread's inbox
+    std::atomic<bool> finished_{false}, stopped_{false};
 };
 
 class TrackWorker {
 public:
     virtual ~TrackWorker() = default;
-    // Queues the piece of cell (x, y, z) holding cube edge `edge`, unless it was queued before.
-    virtual void enqueue(TrackState& state, int x, int y, int z, int edge) const = 0;
+    // Queues on `walker` the piece of cell (x, y, z) holding cube edge `edge`, unless it was queued before.
+    virtual void enqueue(SparseBlocks& blocks, std::uint8_t* denseVisited, Walker& walker, int x, int y, int z, int edge) const = 0;
+    // Walks on one thread for up to `cellBudget` cell pieces; returns how many it walked.
     virtual std::size_t advance(TrackState& state, std::size_t cellBudget) const = 0;
+    // Walks the walker's regions as one of several threads sharing `blocks`, until no piece is left.
+    virtual void walkShared(SparseBlocks& blocks, Walker& walker, Exchange& exchange) const = 0;
     virtual std::uint8_t config(int x, int y, int z) const = 0;
     virtual bool crossed(const GridEdge& edge) const = 0;
 };
 
 template <class T>
 class TypedTrackWorker final : public TrackWorker {
-    using Block = detail::SparseBlocks::Block;
-    static constexpr int kShift = detail::SparseBlocks::kShift;
-    static constexpr int kLast = detail::SparseBlocks::kSide - 1;
+    static constexpr int kShift = SparseBlocks::kShift;
+    static constexpr int kLast = SparseBlocks::kSide - 1;
 
 public:
     TypedTrackWorker(const Volume& volume, const T* samples, double iso, TableKind table)
@@ -236,47 +354,26 @@ public:
         return grid_.above(i) != grid_.above(i + stride[e.axis]);
     }
 
-    void enqueue(TrackState& state, int x, int y, int z, int edge) const override {
-        enqueueIn(state, state.blocks.indexAt(x, y, z), detail::SparseBlocks::local(x, y, z), grid_.index(x, y, z), edge);
+    void enqueue(SparseBlocks& blocks, std::uint8_t* denseVisited, Walker& walker, int x, int y, int z, int edge) const override {
+        enqueueIn(walker, denseVisited, blocks.at(x, y, z, walker.thread), SparseBlocks::local(x, y, z), grid_.index(x, y, z), edge);
     }
 
     std::size_t advance(TrackState& state, std::size_t cellBudget) const override {
-        MeshAppender out(state.mesh);
-        std::size_t visited = 0;
-        while (!state.queue.empty() && visited < cellBudget) {
-            const Entry entry = state.queue.pop();
-            ++visited;
-            const WalkTable::Walk& walk = walk_.walks[entry.config][entry.piece];
-            Block& block = state.blocks[entry.block];
-            const int cell = entry.cell;
-            const int local[3] = {cell & kLast, cell >> kShift & kLast, cell >> 2 * kShift};
-            const int at[3] = {block.origin[0] + local[0], block.origin[1] + local[1], block.origin[2] + local[2]};
-            // The cell's block holds its corners too unless it sits on the block's upper faces.
-            const bool cornersInBlock = local[0] < kLast && local[1] < kLast && local[2] < kLast;
-            std::array<std::uint32_t, 12> vertexOf;
-            for (unsigned mask = walk.edgeMask; mask != 0; mask &= mask - 1) {
-                const int edge = __builtin_ctz(mask);
-                std::uint32_t& id = cornersInBlock ? block.vertex[std::size_t(3 * (cell + walk_.edgeLocal[edge]) + walk_.edgeAxis[edge])]
-                                                   : vertexSlot(state, entry.block, local, edge);
-                if (id == detail::SparseBlocks::kNoVertex) id = newVertex(state, out, at, edge);
-                vertexOf[edge] = id;
-            }
-            std::uint32_t* indices = out.indices.extend(walk.cornerCount);
-            for (int k = 0; k < walk.cornerCount; ++k) indices[k] = vertexOf[walk.corners[std::size_t(k)]];
-            for (int k = 0; k < walk.cornerCount; k += 3) state.measure.addTriangle(state.mesh.vertices.data(), indices[k], indices[k + 1], indices[k + 2]);
-            const std::size_t sample = grid_.index(at[0], at[1], at[2]);
-            for (int k = 0; k < walk.exitCount; ++k) {
-                const int f = walk.exits[std::size_t(k)] >> 4, edge = walk.exits[std::size_t(k)] & 15;
-                if (at[cube::faceAxis(f)] == border_[f]) continue;  // the surface is cut open by the volume's border here
-                if ((cell & walk_.faceMask[f]) == walk_.faceSide[f]) {
-                    enqueueIn(state, state.blocks.linked(entry.block, walk_.link[f]), cell ^ walk_.faceMask[f], sample + sampleStep_[f], edge);
-                } else {
-                    enqueueIn(state, entry.block, cell + walk_.cellStep[f], sample + sampleStep_[f], edge);
-                }
-            }
+        return walk<false>(state.blocks, state.denseVisited, state.walker, cellBudget, nullptr);
+    }
+
+    void walkShared(SparseBlocks& blocks, Walker& walker, Exchange& exchange) const override {
+        std::vector<Exchange::Message> received;
+        try {
+            do {
+                for (const auto& m : received) enqueueIn(walker, nullptr, m.block, m.cell, m.sample, m.edge);
+                received.clear();
+                walk<true>(blocks, nullptr, walker, std::numeric_limits<std::size_t>::max(), &exchange);
+            } while (walker.queue.empty() && exchange.wait(walker.thread, received));
+        } catch (...) {
+            exchange.stop();
+            throw;
         }
-        state.cellsVisited += visited;
-        return visited;
     }
 
 private:
@@ -287,6 +384,76 @@ private:
         Appender<PackedGridEdge> vertexEdges;
     };
 
+    // Walks the walker's queue for up to `cellBudget` cell pieces. Shared: other
+    // threads walk the other regions; pieces continuing there are sent to them,
+    // vertices on edges between regions are claimed atomically, and triangles
+    // with another thread's corners are measured once the walk is over.
+    template <bool Shared>
+    std::size_t walk(SparseBlocks& blocks, std::uint8_t* denseVisited, Walker& w, std::size_t cellBudget, Exchange* exchange) const {
+        MeshAppender out(w.mesh);
+        std::size_t visited = 0;
+        std::vector<Exchange::Message> received;
+        while (!w.queue.empty() && visited < cellBudget) {
+            if constexpr (Shared) {
+                if ((visited & 63) == 0) {
+                    if (!exchange->poll(w.thread, received)) break;
+                    for (const auto& m : received) enqueueIn(w, nullptr, m.block, m.cell, m.sample, m.edge);
+                    received.clear();
+                }
+            }
+            const Entry entry = w.queue.pop();
+            ++visited;
+            const WalkTable::Walk& walk = walk_.walks[entry.config][entry.piece];
+            Block* block = entry.block;
+            const int cell = entry.cell;
+            const int local[3] = {cell & kLast, cell >> kShift & kLast, cell >> 2 * kShift};
+            const int at[3] = {block->origin[0] + local[0], block->origin[1] + local[1], block->origin[2] + local[2]};
+            // The cell's block holds its corners too unless it sits on the block's upper faces.
+            const bool cornersInBlock = local[0] < kLast && local[1] < kLast && local[2] < kLast;
+            std::array<std::uint32_t, 12> vertexOf;
+            for (unsigned mask = walk.edgeMask; mask != 0; mask &= mask - 1) {
+                const int edge = __builtin_ctz(mask);
+                std::uint32_t& slot = cornersInBlock ? block->vertex[std::size_t(3 * (cell + walk_.edgeLocal[edge]) + walk_.edgeAxis[edge])]
+                                                     : vertexSlot(blocks, block, local, edge, w.thread);
+                std::uint32_t id = Shared ? __atomic_load_n(&slot, __ATOMIC_RELAXED) : slot;
+                if (id == SparseBlocks::kNoVertex) id = newVertex<Shared>(w, out, slot, at, edge);
+                vertexOf[edge] = id;
+            }
+            std::uint32_t* indices = out.indices.extend(walk.cornerCount);
+            for (int k = 0; k < walk.cornerCount; ++k) indices[k] = vertexOf[walk.corners[std::size_t(k)]];
+            if constexpr (Shared) {
+                const std::uint32_t tagMask = ~w.indexMask;
+                for (int k = 0; k < walk.cornerCount; k += 3) {
+                    const std::uint32_t a = indices[k], b = indices[k + 1], c = indices[k + 2];
+                    if ((((a ^ w.idBase) | (b ^ w.idBase) | (c ^ w.idBase)) & tagMask) == 0) {
+                        w.measure.addTriangle(w.mesh.vertices.data(), a & w.indexMask, b & w.indexMask, c & w.indexMask);
+                    } else {
+                        w.unmeasured.push_back(out.indices.size() - walk.cornerCount + std::size_t(k));
+                    }
+                }
+            } else {
+                for (int k = 0; k < walk.cornerCount; k += 3) w.measure.addTriangle(w.mesh.vertices.data(), indices[k], indices[k + 1], indices[k + 2]);
+            }
+            const std::size_t sample = grid_.index(at[0], at[1], at[2]);
+            for (int k = 0; k < walk.exitCount; ++k) {
+                const int f = walk.exits[std::size_t(k)] >> 4, edge = walk.exits[std::size_t(k)] & 15;
+                if (at[cube::faceAxis(f)] == border_[f]) continue;  // the surface is cut open by the volume's border here
+                if ((cell & walk_.faceMask[f]) == walk_.faceSide[f]) {
+                    Block* next = blocks.linked(block, walk_.link[f], w.thread);
+                    if (Shared && next->owner != w.thread) {
+                        exchange->send(w.thread, next->owner, {next, sample + sampleStep_[f], static_cast<std::uint16_t>(cell ^ walk_.faceMask[f]), static_cast<std::uint8_t>(edge)});
+                    } else {
+                        enqueueIn(w, denseVisited, next, cell ^ walk_.faceMask[f], sample + sampleStep_[f], edge);
+                    }
+                } else {
+                    enqueueIn(w, denseVisited, block, cell + walk_.cellStep[f], sample + sampleStep_[f], edge);
+                }
+            }
+        }
+        w.cellsVisited += visited;
+        return visited;
+    }
+
     // The configuration of the cell whose first corner is `sample`.
     std::uint8_t configAt(std::size_t i) const {
         const std::size_t sy = grid_.strideY(), sz = grid_.strideZ();
@@ -296,27 +463,27 @@ private:
         return static_cast<std::uint8_t>(c);
     }
 
-    // Queues the piece holding `edge` of the cell at local index `cell` of block `index`, whose first corner is `sample`.
-    void enqueueIn(TrackState& state, std::uint32_t index, int cell, std::size_t sample, int edge) const {
-        Block& block = state.blocks[index];
-        if (block.config[std::size_t(cell)] == 0) block.config[std::size_t(cell)] = configAt(sample);
-        const std::uint8_t c = block.config[std::size_t(cell)];
+    // Queues the piece holding `edge` of the cell at local index `cell` of `block`,
+    // whose first corner is `sample`; only the thread walking the cell's region does.
+    void enqueueIn(Walker& w, std::uint8_t* denseVisited, Block* block, int cell, std::size_t sample, int edge) const {
+        if (block->config[std::size_t(cell)] == 0) block->config[std::size_t(cell)] = configAt(sample);
+        const std::uint8_t c = block->config[std::size_t(cell)];
         const int piece = walk_.pieceOfEdge[c][std::size_t(edge)];
         if (piece < 0) return;
-        std::uint8_t& marks = state.denseVisited ? state.denseVisited[sample] : block.visited[std::size_t(cell)];
+        std::uint8_t& marks = denseVisited ? denseVisited[sample] : block->visited[std::size_t(cell)];
         const auto bit = static_cast<std::uint8_t>(1u << piece);
         if (marks & bit) return;
         marks = static_cast<std::uint8_t>(marks | bit);
-        state.queue.push({index, static_cast<std::uint16_t>(cell), c, static_cast<std::uint8_t>(piece)});
+        w.queue.push({block, static_cast<std::uint16_t>(cell), c, static_cast<std::uint8_t>(piece)});
     }
 
     // The vertex slot of a cell's edge when the edge's origin may lie in a block further up.
-    std::uint32_t& vertexSlot(TrackState& state, std::uint32_t index, const int local[3], int edge) const {
+    std::uint32_t& vertexSlot(SparseBlocks& blocks, Block* block, const int local[3], int edge, int thread) const {
         const auto& o = walk_.edgeOrigin[edge];
         const int p[3] = {local[0] + o[0], local[1] + o[1], local[2] + o[2]};
-        const int link = detail::SparseBlocks::kSelf + (p[0] >> kShift) + 3 * (p[1] >> kShift) + 9 * (p[2] >> kShift);
-        Block& block = state.blocks[state.blocks.linked(index, link)];
-        return block.vertex[std::size_t(3 * detail::SparseBlocks::local(p[0], p[1], p[2]) + walk_.edgeAxis[edge])];
+        const int link = SparseBlocks::kSelf + (p[0] >> kShift) + 3 * (p[1] >> kShift) + 9 * (p[2] >> kShift);
+        Block* owner = blocks.linked(block, link, thread);
+        return owner->vertex[std::size_t(3 * SparseBlocks::local(p[0], p[1], p[2]) + walk_.edgeAxis[edge])];
     }
 
     // edgeVertex, through its interior form when both ends of the edge have their six neighbours in the volume.
@@ -330,7 +497,14 @@ private:
         }
     }
 
-    std::uint32_t newVertex(TrackState& state, MeshAppender& out, const int at[3], int edge) const {
+    // Computes the vertex of the cell's edge and records its id in `slot`. Shared,
+    // on an edge between regions (its cells may belong to several threads): when
+    // another thread recorded one first, the vertex is given back and its id used.
+    template <bool Shared>
+    std::uint32_t newVertex(Walker& w, MeshAppender& out, std::uint32_t& slot, const int at[3], int edge) const {
+        const std::size_t index = out.vertices.size();
+        if (index >= w.indexMask) throw InputError("surface too large: more than " + std::to_string(w.indexMask) + " vertices per thread");
+        const auto id = static_cast<std::uint32_t>(w.idBase | index);
         const auto& o = walk_.edgeOrigin[edge];
         const GridEdge e{at[0] + o[0], at[1] + o[1], at[2] + o[2], walk_.edgeAxis[edge]};
         Vertex& v = *out.vertices.extend(1);
@@ -339,9 +513,20 @@ private:
             case 1: vertexAlong<1>(e.x, e.y, e.z, v); break;
             default: vertexAlong<2>(e.x, e.y, e.z, v); break;
         }
+        const int p[3] = {e.x, e.y, e.z};
+        constexpr int m = SparseBlocks::kRegionMask;
+        if (Shared && ((e.axis != 0 && (p[0] & m) == 0) || (e.axis != 1 && (p[1] & m) == 0) || (e.axis != 2 && (p[2] & m) == 0))) {
+            std::uint32_t first = SparseBlocks::kNoVertex;
+            if (!__atomic_compare_exchange_n(&slot, &first, id, false, __ATOMIC_RELAXED, __ATOMIC_RELAXED)) {
+                out.vertices.retract(1);
+                return first;
+            }
+        } else {
+            slot = id;
+        }
         *out.vertexEdges.extend(1) = e;
-        state.measure.addVertex(v, e, dims_);
-        return static_cast<std::uint32_t>(out.vertices.size() - 1);
+        w.measure.addVertex(v, e, dims_);
+        return id;
     }
 
     detail::SampleGrid<T> grid_;
@@ -368,8 +553,9 @@ bool edgeInside(const Volume& volume, const GridEdge& e) {
     return true;
 }
 
-// Queues the cells around a seed edge, each entered through that edge.
-void queueSeed(const Volume& volume, const GridEdge& seed, const TrackWorker& worker, TrackState& state) {
+// Queues the cells around a seed edge, each entered through that edge, on the
+// walker of its region (walkers[0] for a walk on one thread).
+void queueSeed(const Volume& volume, const GridEdge& seed, const TrackWorker& worker, SparseBlocks& blocks, Walker* walkers) {
     const Dims& n = volume.dims();
     const int b = (seed.axis + 1) % 3, c = (seed.axis + 2) % 3;
     for (int db = 0; db < 2; ++db) {
@@ -381,7 +567,7 @@ void queueSeed(const Volume& volume, const GridEdge& seed, const TrackWorker& wo
             std::array<int, 3> local{0, 0, 0};
             local[b] = db;
             local[c] = dc;
-            worker.enqueue(state, cell[0], cell[1], cell[2], cube::edgeAt(local, seed.axis));
+            worker.enqueue(blocks, nullptr, walkers[blocks.ownerAt(cell[0], cell[1], cell[2])], cell[0], cell[1], cell[2], cube::edgeAt(local, seed.axis));
         }
     }
 }
@@ -481,9 +667,9 @@ namespace {
 // The finished surface, its mesh taken from the walk's state.
 Surface finishedSurface(TrackState& state, TableKind table) {
     Surface surface;
-    surface.mesh = std::move(state.mesh);
-    surface.stats = detail::surfaceStats(surface.mesh, state.measure, table == TableKind::Consistent);
-    surface.stats.cellsVisited = state.cellsVisited;
+    surface.mesh = std::move(state.walker.mesh);
+    surface.stats = detail::surfaceStats(surface.mesh, state.walker.measure, table == TableKind::Consistent);
+    surface.stats.cellsVisited = state.walker.cellsVisited;
     return surface;
 }
 
@@ -497,39 +683,41 @@ void checkSeed(const Volume& volume, double iso, const TrackWorker& worker, cons
 void SurfaceTracker::start(const GridEdge& seed) {
     checkSeed(*impl_->volume, impl_->iso, *impl_->worker, seed);
     impl_->state = TrackState(impl_->volume->dims());
-    queueSeed(*impl_->volume, seed, *impl_->worker, impl_->state);
+    queueSeed(*impl_->volume, seed, *impl_->worker, impl_->state.blocks, &impl_->state.walker);
 }
 
 SurfaceTracker::Step SurfaceTracker::step(std::size_t cellBudget) {
     TrackState& s = impl_->state;
-    Step step{s.mesh.vertices.size(), 0, s.mesh.indices.size(), 0, 0};
+    const Mesh& mesh = s.walker.mesh;
+    Step step{mesh.vertices.size(), 0, mesh.indices.size(), 0, 0};
     step.cellsVisited = impl_->worker->advance(s, cellBudget);
-    step.vertexCount = s.mesh.vertices.size() - step.firstVertex;
-    step.indexCount = s.mesh.indices.size() - step.firstIndex;
+    step.vertexCount = mesh.vertices.size() - step.firstVertex;
+    step.indexCount = mesh.indices.size() - step.firstIndex;
     return step;
 }
 
 SurfaceTracker::Step SurfaceTracker::stepFor(std::chrono::nanoseconds budget) {
     const auto deadline = Clock::now() + budget;
-    const TrackState& s = impl_->state;
-    Step total{s.mesh.vertices.size(), 0, s.mesh.indices.size(), 0, 0};
+    const Mesh& mesh = impl_->state.walker.mesh;
+    Step total{mesh.vertices.size(), 0, mesh.indices.size(), 0, 0};
     do {
         total.cellsVisited += step(512).cellsVisited;
     } while (!done() && Clock::now() < deadline);
-    total.vertexCount = s.mesh.vertices.size() - total.firstVertex;
-    total.indexCount = s.mesh.indices.size() - total.firstIndex;
+    total.vertexCount = mesh.vertices.size() - total.firstVertex;
+    total.indexCount = mesh.indices.size() - total.firstIndex;
     return total;
 }
 
-bool SurfaceTracker::done() const { return impl_->state.queue.empty(); }
-const Mesh& SurfaceTracker::mesh() const { return impl_->state.mesh; }
-std::size_t SurfaceTracker::cellsVisited() const { return impl_->state.cellsVisited; }
+bool SurfaceTracker::done() const { return impl_->state.walker.queue.empty(); }
+const Mesh& SurfaceTracker::mesh() const { return impl_->state.walker.mesh; }
+std::size_t SurfaceTracker::cellsVisited() const { return impl_->state.walker.cellsVisited; }
 std::size_t SurfaceTracker::workingBytes() const {
-    return impl_->state.blocks.byteSize() + impl_->state.queue.capacity() * sizeof(Entry);
+    return impl_->state.blocks.byteSize() + impl_->state.walker.queue.capacity() * sizeof(Entry);
 }
 SurfaceStats SurfaceTracker::stats() const {
-    SurfaceStats stats = detail::measuredStats(impl_->state.mesh, impl_->state.measure);
-    stats.cellsVisited = impl_->state.cellsVisited;
+    const Walker& walker = impl_->state.walker;
+    SurfaceStats stats = detail::measuredStats(walker.mesh, walker.measure);
+    stats.cellsVisited = walker.cellsVisited;
     return stats;
 }
 Surface SurfaceTracker::takeSurface() { return finishedSurface(impl_->state, impl_->table); }
@@ -540,7 +728,65 @@ namespace {
 
 // Walks the surface from the queued seed to the end.
 Surface walkWhole(const TrackWorker& worker, TrackState& state, TableKind table, Clock::time_point start) {
-    while (!state.queue.empty()) worker.advance(state, std::numeric_limits<std::size_t>::max());
+    while (!state.walker.queue.empty()) worker.advance(state, std::numeric_limits<std::size_t>::max());
+    Surface surface = finishedSurface(state, table);
+    surface.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return surface;
+}
+
+// Walks the surface from `seed` on `threads` threads, each walking its own
+// regions, then gathers their parts into one mesh.
+Surface walkTogether(const Volume& volume, const TrackWorker& worker, const GridEdge& seed, TableKind table, int threads,
+                     Clock::time_point start) {
+    SparseBlocks blocks(volume.dims(), threads);
+    std::vector<Walker> walkers(static_cast<std::size_t>(threads));
+    int tagBits = 0;
+    while ((1 << tagBits) < threads) ++tagBits;
+    const int idShift = 32 - tagBits;
+    for (int t = 0; t < threads; ++t) {
+        walkers[std::size_t(t)].thread = t;
+        walkers[std::size_t(t)].idBase = static_cast<std::uint32_t>(std::uint64_t(t) << idShift);
+        walkers[std::size_t(t)].indexMask = static_cast<std::uint32_t>((std::uint64_t(1) << idShift) - 1);
+    }
+    queueSeed(volume, seed, worker, blocks, walkers.data());
+    Exchange exchange(threads);
+    detail::parallelFor(threads, threads, [&](int t) { worker.walkShared(blocks, walkers[std::size_t(t)], exchange); });
+
+    // The parts, in thread order, in the first walker's buffers; vertex ids become indices.
+    std::vector<std::size_t> firstVertex(std::size_t(threads) + 1, 0), firstIndex(std::size_t(threads) + 1, 0);
+    for (std::size_t t = 0; t < walkers.size(); ++t) {
+        firstVertex[t + 1] = firstVertex[t] + walkers[t].mesh.vertices.size();
+        firstIndex[t + 1] = firstIndex[t] + walkers[t].mesh.indices.size();
+    }
+    Mesh& mesh = walkers[0].mesh;
+    mesh.vertices.resize(firstVertex.back());
+    mesh.vertexEdges.resize(firstVertex.back());
+    mesh.indices.resize(firstIndex.back());
+    const std::uint32_t indexMask = walkers[0].indexMask;
+    detail::parallelFor(threads, threads, [&](int t) {
+        const Mesh& part = walkers[std::size_t(t)].mesh;
+        const std::size_t count = t == 0 ? firstIndex[1] : part.indices.size();
+        const std::uint32_t* from = t == 0 ? mesh.indices.data() : part.indices.data();
+        std::uint32_t* to = mesh.indices.data() + firstIndex[std::size_t(t)];
+        for (std::size_t i = 0; i < count; ++i) to[i] = static_cast<std::uint32_t>(firstVertex[from[i] >> idShift] + (from[i] & indexMask));
+        if (t > 0) {
+            std::copy(part.vertices.begin(), part.vertices.end(), mesh.vertices.begin() + std::ptrdiff_t(firstVertex[std::size_t(t)]));
+            std::copy(part.vertexEdges.begin(), part.vertexEdges.end(), mesh.vertexEdges.begin() + std::ptrdiff_t(firstVertex[std::size_t(t)]));
+        }
+    });
+
+    TrackState state(volume.dims());
+    Walker& whole = state.walker;
+    whole.mesh = std::move(mesh);
+    for (std::size_t t = 0; t < walkers.size(); ++t) {
+        whole.measure.merge(walkers[t].measure);
+        whole.cellsVisited += walkers[t].cellsVisited;
+        // Triangles between regions, measured now that every corner is in place.
+        for (const std::size_t first : walkers[t].unmeasured) {
+            const std::size_t k = firstIndex[t] + first;
+            whole.measure.addTriangle(whole.mesh.vertices.data(), whole.mesh.indices[k], whole.mesh.indices[k + 1], whole.mesh.indices[k + 2]);
+        }
+    }
     Surface surface = finishedSurface(state, table);
     surface.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return surface;
@@ -548,12 +794,13 @@ Surface walkWhole(const TrackWorker& worker, TrackState& state, TableKind table,
 
 }  // namespace
 
-Surface trackSurface(const Volume& volume, double iso, const GridEdge& seed, TableKind table) {
+Surface trackSurface(const Volume& volume, double iso, const GridEdge& seed, TableKind table, int threads) {
     const auto start = Clock::now();
     const auto worker = makeWorker(volume, iso, table);
     checkSeed(volume, iso, *worker, seed);
+    if (threads > 1) return walkTogether(volume, *worker, seed, table, threads, start);
     TrackState state(volume.dims());
-    queueSeed(volume, seed, *worker, state);
+    queueSeed(volume, seed, *worker, state.blocks, &state.walker);
     return walkWhole(*worker, state, table, start);
 }
 
@@ -578,7 +825,7 @@ std::vector<Surface> trackAllSurfaces(const Volume& volume, double iso, TableKin
                     state.denseVisited = visited.data();
                     int entryEdge = 0;
                     while (!(cased.pieces[p].edgeMask >> entryEdge & 1u)) ++entryEdge;
-                    worker->enqueue(state, x, y, z, entryEdge);
+                    worker->enqueue(state.blocks, state.denseVisited, state.walker, x, y, z, entryEdge);
                     surfaces.push_back(walkWhole(*worker, state, table, start));
                 }
             }

@@ -130,7 +130,83 @@ Volume int16Noise(int n) {
     return volume;
 }
 
+// The surface tracked on several threads is the one-thread surface: the same
+// triangles, one vertex per crossed edge with the same bits, the same figures.
+void requireSameSurfaceOnThreads(const Volume& volume, double iso, const GridEdge& seed) {
+    const Surface one = trackSurface(volume, iso, seed);
+    std::map<std::uint64_t, Vertex> vertexOfEdge;
+    for (std::size_t v = 0; v < one.mesh.vertices.size(); ++v) {
+        vertexOfEdge[isotrack::testing::edgeKey(one.mesh.vertexEdges[v], volume.dims())] = one.mesh.vertices[v];
+    }
+    REQUIRE(vertexOfEdge.size() == one.mesh.vertices.size());
+    for (int threads : {2, 3}) {
+        INFO(threads << " threads");
+        const Surface many = trackSurface(volume, iso, seed, TableKind::Consistent, threads);
+        REQUIRE(many.mesh.vertices.size() == one.mesh.vertices.size());
+        REQUIRE(many.mesh.vertexEdges.size() == one.mesh.vertices.size());
+        CHECK(triangleSet(many.mesh, volume.dims()) == triangleSet(one.mesh, volume.dims()));
+        std::set<std::uint64_t> edges;
+        std::size_t differing = 0;
+        for (std::size_t v = 0; v < many.mesh.vertices.size(); ++v) {
+            const std::uint64_t key = isotrack::testing::edgeKey(many.mesh.vertexEdges[v], volume.dims());
+            edges.insert(key);
+            const auto expected = vertexOfEdge.find(key);
+            if (expected == vertexOfEdge.end() || std::memcmp(&many.mesh.vertices[v], &expected->second, sizeof(Vertex)) != 0) ++differing;
+        }
+        CHECK(edges.size() == many.mesh.vertices.size());  // welded: no edge has two vertices
+        CHECK(differing == 0);
+        const SurfaceStats &a = many.stats, &b = one.stats;
+        CHECK(a.triangles == b.triangles);
+        CHECK(a.cellsVisited == b.cellsVisited);
+        CHECK(a.bytes == b.bytes);
+        CHECK(a.closed == b.closed);
+        CHECK(a.touchesBorder == b.touchesBorder);
+        CHECK(a.boundsMin == b.boundsMin);
+        CHECK(a.boundsMax == b.boundsMax);
+        CHECK(a.area == Approx(b.area).epsilon(1e-12));
+        REQUIRE(a.enclosedVolume.has_value() == b.enclosedVolume.has_value());
+        if (a.enclosedVolume) CHECK(*a.enclosedVolume == Approx(*b.enclosedVolume).epsilon(1e-12));
+        // Closed by every edge, not only by the border: seams between threads are welded.
+        CHECK(measureSurface(many.mesh, volume, false).closed == b.closed);
+    }
+}
+
 }  // namespace
+
+TEST_CASE("several threads track the same surface as one", "[core][tracking]") {
+    // Threads walk regions of 64^3 samples: these surfaces cross the regions' seams.
+    SECTION("a sphere, closed, seeded on a seam") {
+        const int n = 150;
+        const Volume volume = makeField({"sphere", n});
+        const Vec3d c = sphereFieldCenter(n);
+        const double r = sphereFieldRadius(n), dx = 64.0 - c[0];
+        const GridEdge seed = nearestCrossedEdge(volume, 0.0, {64.0, c[1] + std::sqrt(r * r - dx * dx), c[2]});
+        REQUIRE((seed.x == 63 || seed.x == 64));
+        requireSameSurfaceOnThreads(volume, 0.0, seed);
+    }
+    SECTION("a gyroid filling its volume, cut by the border") {
+        const Volume volume = makeField({"gyroid", 72});
+        requireSameSurfaceOnThreads(volume, 0.0, nearestCrossedEdge(volume, 0.0, {36.0, 36.0, 36.0}));
+    }
+    SECTION("int16 noise: the largest piece across a seam, anisotropic spacing") {
+        const Volume volume = int16Noise(70);
+        const double iso = 700.5;
+        bool crossing = false;
+        for (const Surface& s : extractAllSurfaces(volume, iso)) {
+            int lo[3] = {70, 70, 70}, hi[3] = {0, 0, 0};
+            for (const GridEdge e : s.mesh.vertexEdges) {
+                const int p[3] = {e.x, e.y, e.z};
+                for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+            }
+            if ((lo[0] < 64 && hi[0] >= 64) || (lo[1] < 64 && hi[1] >= 64) || (lo[2] < 64 && hi[2] >= 64)) {
+                requireSameSurfaceOnThreads(volume, iso, s.mesh.vertexEdges[0]);
+                crossing = true;
+                break;
+            }
+        }
+        CHECK(crossing);
+    }
+}
 
 TEST_CASE("tracked vertices are the exhaustive pass's, bit for bit", "[core][tracking]") {
     SECTION("float samples, cut by the border") { requireSameVertexBits(makeField({"noise", 24}), 0.5); }

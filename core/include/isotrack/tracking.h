@@ -54,8 +54,13 @@ SurfaceStats measureSurface(const Mesh& mesh, const Volume& volume, bool closedU
 // One connected surface, the one through `seed`, measured as it is walked (the
 // figures equal measureSurface's). Throws InputError when the seed edge is
 // outside the volume or not crossed at `iso`.
+//
+// On one thread the vertices and triangles come in the order the walk reaches
+// them, breadth-first from the seed. With `threads` > 1 the threads walk the
+// surface together: the same triangles and vertices, but in an order that varies
+// from run to run (and area and volume may differ in their last bits).
 Surface trackSurface(const Volume& volume, double iso, const GridEdge& seed,
-                     TableKind table = TableKind::Consistent);
+                     TableKind table = TableKind::Consistent, int threads = 1);
 
 // Every surface, sorted by triangle count, largest first (ties: the surface with
 // the first grid edge in memory order first). Together they hold exactly the
