@@ -68,7 +68,21 @@ public:
     double at(std::size_t i) const { return static_cast<double>(samples_[i]); }
     // The one classification rule of isotrack, VTK's: a sample at or above the
     // isovalue is above; everything else, NaN included, is below.
-    bool above(std::size_t i) const { return static_cast<double>(samples_[i]) >= iso_; }
+    // Compared in the samples' own type (NativeThreshold keeps the two equal).
+    bool above(std::size_t i) const { return threshold_.all || (!threshold_.none && samples_[i] >= threshold_.value); }
+
+    // The configuration of the cell whose first corner is sample i: bit k set
+    // when the cube's corner k is above (corners in isotrack's cube order).
+    std::uint8_t cellConfig(std::size_t i) const {
+        if (threshold_.all || threshold_.none) return threshold_.all ? 255 : 0;
+        const T* s = samples_ + i;
+        const T t = threshold_.value;
+        const std::size_t sy = strideY_, sz = strideZ_;
+        const unsigned c = unsigned(s[0] >= t) | unsigned(s[1] >= t) << 1 | unsigned(s[1 + sy] >= t) << 2 | unsigned(s[sy] >= t) << 3 |
+                           unsigned(s[sz] >= t) << 4 | unsigned(s[1 + sz] >= t) << 5 | unsigned(s[1 + sy + sz] >= t) << 6 |
+                           unsigned(s[sy + sz] >= t) << 7;
+        return static_cast<std::uint8_t>(c);
+    }
 
     // flags[i] = above(begin + i) for `count` samples.
     void classify(std::size_t begin, std::size_t count, std::uint8_t* flags) const {

@@ -89,9 +89,10 @@ public:
         return (x & m) | (y & m) << kShift | (z & m) << (2 * kShift);
     }
     // Grid points whose coordinates differ only in these low bits lie in one region.
-    static constexpr int kRegionMask = (1 << 2 * kShift) - 1;
+    static constexpr int kOwnerShift = 2 * kShift;
+    static constexpr int kRegionMask = (1 << kOwnerShift) - 1;
     // The thread walking the cells of the region holding grid point (x, y, z).
-    int ownerAt(int x, int y, int z) const { return ((x >> 2 * kShift) + (y >> 2 * kShift) + (z >> 2 * kShift)) % threads_; }
+    int ownerAt(int x, int y, int z) const { return ((x >> kOwnerShift) + (y >> kOwnerShift) + (z >> kOwnerShift)) % threads_; }
 
     // The step in local index for a unit step along each axis.
     static constexpr std::array<int, 3> kLocalStep{1, kSide, kSide * kSide};

@@ -455,13 +455,7 @@ private:
     }
 
     // The configuration of the cell whose first corner is `sample`.
-    std::uint8_t configAt(std::size_t i) const {
-        const std::size_t sy = grid_.strideY(), sz = grid_.strideZ();
-        const unsigned c = grid_.above(i) | grid_.above(i + 1) << 1 | grid_.above(i + 1 + sy) << 2 |
-                           grid_.above(i + sy) << 3 | grid_.above(i + sz) << 4 | grid_.above(i + 1 + sz) << 5 |
-                           grid_.above(i + 1 + sy + sz) << 6 | grid_.above(i + sy + sz) << 7;
-        return static_cast<std::uint8_t>(c);
-    }
+    std::uint8_t configAt(std::size_t i) const { return grid_.cellConfig(i); }
 
     // Queues the piece holding `edge` of the cell at local index `cell` of `block`,
     // whose first corner is `sample`; only the thread walking the cell's region does.
