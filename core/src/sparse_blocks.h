@@ -88,11 +88,13 @@ public:
         constexpr int m = kSide - 1;
         return (x & m) | (y & m) << kShift | (z & m) << (2 * kShift);
     }
-    // Grid points whose coordinates differ only in these low bits lie in one region.
-    static constexpr int kOwnerShift = 2 * kShift;
-    static constexpr int kRegionMask = (1 << kOwnerShift) - 1;
+    // A region is 64^3 grid points: coordinates differing only in these low bits
+    // lie in one region. (Regions of 32^3 or 16^3 walked the CT skull no faster
+    // on two threads.)
+    static constexpr int kRegionShift = 2 * kShift;
+    static constexpr int kRegionMask = (1 << kRegionShift) - 1;
     // The thread walking the cells of the region holding grid point (x, y, z).
-    int ownerAt(int x, int y, int z) const { return ((x >> kOwnerShift) + (y >> kOwnerShift) + (z >> kOwnerShift)) % threads_; }
+    int ownerAt(int x, int y, int z) const { return ((x >> kRegionShift) + (y >> kRegionShift) + (z >> kRegionShift)) % threads_; }
 
     // The step in local index for a unit step along each axis.
     static constexpr std::array<int, 3> kLocalStep{1, kSide, kSide * kSide};
