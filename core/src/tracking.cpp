@@ -204,8 +204,9 @@ std::string edgeText(const GridEdge& e) {
 
 // One thread's share of a walk: its queue, and the vertices and triangles it
 // emits with their measure. A vertex id is the vertex's index in the walker's
-// mesh, with the walker's thread in the id's top bits when several walk.
-struct Walker {
+// mesh, with the walker's thread in the id's top bits when several walk. Each
+// walker has cache lines of its own: its queue and measure change every cell.
+struct alignas(128) Walker {
     Mesh mesh;
     detail::SurfaceMeasure measure;
     PieceQueue queue;
@@ -237,17 +238,19 @@ public:
     };
 
     explicit Exchange(int threads)
-        : threads_(threads), outbox_(std::size_t(threads) * std::size_t(threads)), inbox_(std::size_t(threads)), mail_(std::size_t(threads)) {}
+        : threads_(threads), outbox_(std::size_t(threads)), inbox_(std::size_t(threads)), mail_(std::size_t(threads)) {
+        for (Outbox& box : outbox_) box.to.resize(std::size_t(threads));
+    }
 
     // Collected by the sender, handed over at its next poll or wait.
-    void send(int from, int to, const Message& message) { outbox_[std::size_t(from * threads_ + to)].push_back(message); }
+    void send(int from, int to, const Message& message) { outbox_[std::size_t(from)].to[std::size_t(to)].push_back(message); }
 
     // From a walking thread every so often: hands over what it sent and takes
     // what was sent to it; false once the walk is abandoned.
     bool poll(int me, std::vector<Message>& received) {
         if (stopped_.load(std::memory_order_relaxed)) return false;
         bool sent = false;
-        for (int to = 0; to < threads_; ++to) sent = sent || !outbox_[std::size_t(me * threads_ + to)].empty();
+        for (const auto& box : outbox_[std::size_t(me)].to) sent = sent || !box.empty();
         if (sent || mail_[std::size_t(me)].flag.load(std::memory_order_relaxed)) {
             const std::lock_guard<std::mutex> lock(mutex_);
             handOver(me);
@@ -288,7 +291,7 @@ public:
 private:
     void handOver(int me) {
         for (int to = 0; to < threads_; ++to) {
-            auto& box = outbox_[std::size_t(me * threads_ + to)];
+            auto& box = outbox_[std::size_t(me)].to[std::size_t(to)];
             if (box.empty()) continue;
             inbox_[std::size_t(to)].insert(inbox_[std::size_t(to)].end(), box.begin(), box.end());
             box.clear();
@@ -306,9 +309,12 @@ private:
     struct alignas(64) Flag {
         std::atomic<bool> flag{false};
     };
+    struct alignas(64) Outbox {
+        std::vector<std::vector<Message>> to;  // used by its sender only
+    };
 
     const int threads_;
-    std::vector<std::vector<Message>> outbox_;  // [from * threads + to], each used by its sender only
+    std::vector<Outbox> outbox_;  // per sender
     std::mutex mutex_;                          // guards inbox_ and idle_
     std::vector<std::vector<Message>> inbox_;
     int idle_ = 0;
