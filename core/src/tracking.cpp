@@ -328,7 +328,7 @@ public:
     // Queues on `walker` the piece of cell (x, y, z) holding cube edge `edge`, unless it was queued before.
     virtual void enqueue(SparseBlocks& blocks, std::uint8_t* denseVisited, Walker& walker, int x, int y, int z, int edge) const = 0;
     // Walks on one thread for up to `cellBudget` cell pieces; returns how many it walked.
-    virtual std::size_t advance(TrackState& state, std::size_t cellBudget) const = 0;
+    virtual std::size_t advance(SparseBlocks& blocks, std::uint8_t* denseVisited, Walker& walker, std::size_t cellBudget) const = 0;
     // Walks the walker's regions as one of several threads sharing `blocks`, until no piece is left.
     virtual void walkShared(SparseBlocks& blocks, Walker& walker, Exchange& exchange) const = 0;
     virtual std::uint8_t config(int x, int y, int z) const = 0;
@@ -364,8 +364,8 @@ public:
         enqueueIn(walker, denseVisited, blocks.at(x, y, z, walker.thread), SparseBlocks::local(x, y, z), grid_.index(x, y, z), edge);
     }
 
-    std::size_t advance(TrackState& state, std::size_t cellBudget) const override {
-        return walk<false>(state.blocks, state.denseVisited, state.walker, cellBudget, nullptr);
+    std::size_t advance(SparseBlocks& blocks, std::uint8_t* denseVisited, Walker& walker, std::size_t cellBudget) const override {
+        return walk<false>(blocks, denseVisited, walker, cellBudget, nullptr);
     }
 
     void walkShared(SparseBlocks& blocks, Walker& walker, Exchange& exchange) const override {
@@ -553,9 +553,8 @@ bool edgeInside(const Volume& volume, const GridEdge& e) {
     return true;
 }
 
-// Queues the cells around a seed edge, each entered through that edge, on the
-// walker of its region (walkers[0] for a walk on one thread).
-void queueSeed(const Volume& volume, const GridEdge& seed, const TrackWorker& worker, SparseBlocks& blocks, Walker* walkers) {
+// Queues the cells around a seed edge, each entered through that edge.
+void queueSeed(const Volume& volume, const GridEdge& seed, const TrackWorker& worker, SparseBlocks& blocks, Walker& walker) {
     const Dims& n = volume.dims();
     const int b = (seed.axis + 1) % 3, c = (seed.axis + 2) % 3;
     for (int db = 0; db < 2; ++db) {
@@ -567,7 +566,7 @@ void queueSeed(const Volume& volume, const GridEdge& seed, const TrackWorker& wo
             std::array<int, 3> local{0, 0, 0};
             local[b] = db;
             local[c] = dc;
-            worker.enqueue(blocks, nullptr, walkers[blocks.ownerAt(cell[0], cell[1], cell[2])], cell[0], cell[1], cell[2], cube::edgeAt(local, seed.axis));
+            worker.enqueue(blocks, nullptr, walker, cell[0], cell[1], cell[2], cube::edgeAt(local, seed.axis));
         }
     }
 }
@@ -665,11 +664,11 @@ SurfaceTracker& SurfaceTracker::operator=(SurfaceTracker&&) noexcept = default;
 namespace {
 
 // The finished surface, its mesh taken from the walk's state.
-Surface finishedSurface(TrackState& state, TableKind table) {
+Surface finishedSurface(Walker& walker, TableKind table) {
     Surface surface;
-    surface.mesh = std::move(state.walker.mesh);
-    surface.stats = detail::surfaceStats(surface.mesh, state.walker.measure, table == TableKind::Consistent);
-    surface.stats.cellsVisited = state.walker.cellsVisited;
+    surface.mesh = std::move(walker.mesh);
+    surface.stats = detail::surfaceStats(surface.mesh, walker.measure, table == TableKind::Consistent);
+    surface.stats.cellsVisited = walker.cellsVisited;
     return surface;
 }
 
@@ -683,14 +682,14 @@ void checkSeed(const Volume& volume, double iso, const TrackWorker& worker, cons
 void SurfaceTracker::start(const GridEdge& seed) {
     checkSeed(*impl_->volume, impl_->iso, *impl_->worker, seed);
     impl_->state = TrackState(impl_->volume->dims());
-    queueSeed(*impl_->volume, seed, *impl_->worker, impl_->state.blocks, &impl_->state.walker);
+    queueSeed(*impl_->volume, seed, *impl_->worker, impl_->state.blocks, impl_->state.walker);
 }
 
 SurfaceTracker::Step SurfaceTracker::step(std::size_t cellBudget) {
     TrackState& s = impl_->state;
     const Mesh& mesh = s.walker.mesh;
     Step step{mesh.vertices.size(), 0, mesh.indices.size(), 0, 0};
-    step.cellsVisited = impl_->worker->advance(s, cellBudget);
+    step.cellsVisited = impl_->worker->advance(s.blocks, s.denseVisited, s.walker, cellBudget);
     step.vertexCount = mesh.vertices.size() - step.firstVertex;
     step.indexCount = mesh.indices.size() - step.firstIndex;
     return step;
@@ -720,7 +719,7 @@ SurfaceStats SurfaceTracker::stats() const {
     stats.cellsVisited = walker.cellsVisited;
     return stats;
 }
-Surface SurfaceTracker::takeSurface() { return finishedSurface(impl_->state, impl_->table); }
+Surface SurfaceTracker::takeSurface() { return finishedSurface(impl_->state.walker, impl_->table); }
 
 // ---- whole surfaces -------------------------------------------------------
 
@@ -728,11 +727,14 @@ namespace {
 
 // Walks the surface from the queued seed to the end.
 Surface walkWhole(const TrackWorker& worker, TrackState& state, TableKind table, Clock::time_point start) {
-    while (!state.walker.queue.empty()) worker.advance(state, std::numeric_limits<std::size_t>::max());
-    Surface surface = finishedSurface(state, table);
+    while (!state.walker.queue.empty()) worker.advance(state.blocks, state.denseVisited, state.walker, std::numeric_limits<std::size_t>::max());
+    Surface surface = finishedSurface(state.walker, table);
     surface.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return surface;
 }
+
+// Cell pieces a walk on several threads first walks on one (about a millisecond).
+constexpr std::size_t kCellsAlone = 8192;
 
 // Walks the surface from `seed` on `threads` threads, each walking its own
 // regions, then gathers their parts into one mesh.
@@ -748,7 +750,22 @@ Surface walkTogether(const Volume& volume, const TrackWorker& worker, const Grid
         walkers[std::size_t(t)].idBase = static_cast<std::uint32_t>(std::uint64_t(t) << idShift);
         walkers[std::size_t(t)].indexMask = static_cast<std::uint32_t>((std::uint64_t(1) << idShift) - 1);
     }
-    queueSeed(volume, seed, worker, blocks, walkers.data());
+    // The first cells are walked on this thread alone: a small surface is done
+    // before more threads would pay for starting. What is left is handed to the
+    // walkers of the queued pieces' regions.
+    queueSeed(volume, seed, worker, blocks, walkers[0]);
+    worker.advance(blocks, nullptr, walkers[0], kCellsAlone);
+    if (walkers[0].queue.empty()) {
+        Surface surface = finishedSurface(walkers[0], table);
+        surface.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        return surface;
+    }
+    PieceQueue queued;
+    std::swap(queued, walkers[0].queue);
+    while (!queued.empty()) {
+        const Entry entry = queued.pop();
+        walkers[std::size_t(entry.block->owner)].queue.push(entry);
+    }
     Exchange exchange(threads);
     detail::parallelFor(threads, threads, [&](int t) { worker.walkShared(blocks, walkers[std::size_t(t)], exchange); });
 
@@ -787,7 +804,7 @@ Surface walkTogether(const Volume& volume, const TrackWorker& worker, const Grid
             whole.measure.addTriangle(whole.mesh.vertices.data(), whole.mesh.indices[k], whole.mesh.indices[k + 1], whole.mesh.indices[k + 2]);
         }
     }
-    Surface surface = finishedSurface(state, table);
+    Surface surface = finishedSurface(state.walker, table);
     surface.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return surface;
 }
@@ -800,7 +817,7 @@ Surface trackSurface(const Volume& volume, double iso, const GridEdge& seed, Tab
     checkSeed(volume, iso, *worker, seed);
     if (threads > 1) return walkTogether(volume, *worker, seed, table, threads, start);
     TrackState state(volume.dims());
-    queueSeed(volume, seed, *worker, state.blocks, &state.walker);
+    queueSeed(volume, seed, *worker, state.blocks, state.walker);
     return walkWhole(*worker, state, table, start);
 }
 
