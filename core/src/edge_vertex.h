@@ -134,7 +134,7 @@ public:
         borderGradient(x, y, z, g);
     }
 
-    void interiorGradient(std::size_t i, double g[3]) const {
+    [[gnu::always_inline]] void interiorGradient(std::size_t i, double g[3]) const {
         g[0] = (at(i + 1) - at(i - 1)) * halfInverseSpacing_[0];
         g[1] = (at(i + strideY_) - at(i - strideY_)) * halfInverseSpacing_[1];
         g[2] = (at(i + strideZ_) - at(i - strideZ_)) * halfInverseSpacing_[2];
@@ -160,7 +160,7 @@ public:
 private:
     // The vertex on the edge from sample a = (x, y, z) to sample b along `axis`,
     // given the gradients at both ends: the one place vertex floats are made.
-    void vertexOnEdge(int x, int y, int z, int axis, std::size_t a, std::size_t b, const double ga[3], const double gb[3], Vertex& v) const {
+    [[gnu::always_inline]] void vertexOnEdge(int x, int y, int z, int axis, std::size_t a, std::size_t b, const double ga[3], const double gb[3], Vertex& v) const {
         const double va = at(a), vb = at(b);
         double t = (iso_ - va) / (vb - va);
         if (!(t >= 0.0 && t <= 1.0)) t = 0.5;  // non-finite samples: keep the vertex on the edge
