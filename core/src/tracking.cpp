@@ -733,6 +733,9 @@ Surface walkWhole(const TrackWorker& worker, TrackState& state, TableKind table,
     return surface;
 }
 
+// More threads than this would only add seams; their ids keep 2^26 vertices each.
+constexpr int kMaxTrackThreads = 64;
+
 // Cell pieces a walk on several threads first walks on one (about a millisecond).
 constexpr std::size_t kCellsAlone = 8192;
 
@@ -780,16 +783,28 @@ Surface walkTogether(const Volume& volume, const TrackWorker& worker, const Grid
     mesh.vertexEdges.resize(firstVertex.back());
     mesh.indices.resize(firstIndex.back());
     const std::uint32_t indexMask = walkers[0].indexMask;
-    detail::parallelFor(threads, threads, [&](int t) {
-        const Mesh& part = walkers[std::size_t(t)].mesh;
-        const std::size_t count = t == 0 ? firstIndex[1] : part.indices.size();
-        const std::uint32_t* from = t == 0 ? mesh.indices.data() : part.indices.data();
-        std::uint32_t* to = mesh.indices.data() + firstIndex[std::size_t(t)];
-        for (std::size_t i = 0; i < count; ++i) to[i] = static_cast<std::uint32_t>(firstVertex[from[i] >> idShift] + (from[i] & indexMask));
-        if (t > 0) {
-            std::copy(part.vertices.begin(), part.vertices.end(), mesh.vertices.begin() + std::ptrdiff_t(firstVertex[std::size_t(t)]));
-            std::copy(part.vertexEdges.begin(), part.vertexEdges.end(), mesh.vertexEdges.begin() + std::ptrdiff_t(firstVertex[std::size_t(t)]));
+    auto finalIndex = [&](std::uint32_t id) { return static_cast<std::uint32_t>(firstVertex[id >> idShift] + (id & indexMask)); };
+    // The first walker's ids are final but for the corners it took from other
+    // walkers (its unmeasured triangles); the other walkers' parts are copied,
+    // each in `threads` slices, so that every thread has a share of the copying.
+    const int slices = threads;
+    detail::parallelFor(1 + (threads - 1) * slices, threads, [&](int task) {
+        if (task == 0) {
+            for (const std::size_t first : walkers[0].unmeasured) {
+                for (std::size_t k = first; k < first + 3; ++k) mesh.indices[k] = finalIndex(mesh.indices[k]);
+            }
+            return;
         }
+        const std::size_t t = std::size_t(1 + (task - 1) / slices), slice = std::size_t((task - 1) % slices);
+        const Mesh& part = walkers[t].mesh;
+        const std::size_t vBegin = part.vertices.size() * slice / std::size_t(slices), vEnd = part.vertices.size() * (slice + 1) / std::size_t(slices);
+        const std::size_t iBegin = part.indices.size() * slice / std::size_t(slices), iEnd = part.indices.size() * (slice + 1) / std::size_t(slices);
+        std::copy(part.vertices.begin() + std::ptrdiff_t(vBegin), part.vertices.begin() + std::ptrdiff_t(vEnd),
+                  mesh.vertices.begin() + std::ptrdiff_t(firstVertex[t] + vBegin));
+        std::copy(part.vertexEdges.begin() + std::ptrdiff_t(vBegin), part.vertexEdges.begin() + std::ptrdiff_t(vEnd),
+                  mesh.vertexEdges.begin() + std::ptrdiff_t(firstVertex[t] + vBegin));
+        std::uint32_t* to = mesh.indices.data() + firstIndex[t];
+        for (std::size_t i = iBegin; i < iEnd; ++i) to[i] = finalIndex(part.indices[i]);
     });
 
     TrackState state(volume.dims());
@@ -813,6 +828,7 @@ Surface walkTogether(const Volume& volume, const TrackWorker& worker, const Grid
 
 Surface trackSurface(const Volume& volume, double iso, const GridEdge& seed, TableKind table, int threads) {
     const auto start = Clock::now();
+    threads = std::min(threads, kMaxTrackThreads);
     const auto worker = makeWorker(volume, iso, table);
     checkSeed(volume, iso, *worker, seed);
     if (threads > 1) return walkTogether(volume, *worker, seed, table, threads, start);
