@@ -21,7 +21,6 @@
 #include <cstdint>
 #include <deque>
 #include <limits>
-#include <memory>
 #include <vector>
 
 #include "isotrack/volume.h"

@@ -14,10 +14,17 @@
 // Visited pieces, configurations and vertex ids live in sparse 8x8x8 blocks
 // created as the surface reaches them (sparse_blocks.h), so the cost follows the
 // surface, not the volume. extractAllSurfaces labels the exhaustive pass instead.
+//
+// On several threads, each thread walks the cells of its own 64^3 regions (a
+// checkerboard), with plain loads and stores: a piece continuing into another
+// thread's region is sent to that thread (Exchange), and only vertices on edges
+// between regions, which cells of several threads share, are claimed with a
+// compare-and-swap. The threads' parts are joined into one mesh at the end.
 #include "isotrack/tracking.h"
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -58,17 +65,11 @@ struct Entry {
 class PieceQueue {
 public:
     bool empty() const { return head_ == tail_; }
-    std::size_t size() const { return tail_ - head_; }
     void push(const Entry& entry) {
         if (tail_ - head_ == ring_.size()) grow();
         ring_[tail_++ & (ring_.size() - 1)] = entry;
     }
     Entry pop() { return ring_[head_++ & (ring_.size() - 1)]; }
-    // Moves the `count` newest entries to the end of `out`.
-    void takeNewest(std::size_t count, std::vector<Entry>& out) {
-        for (std::size_t i = tail_ - count; i != tail_; ++i) out.push_back(ring_[i & (ring_.size() - 1)]);
-        tail_ -= count;
-    }
     std::size_t capacity() const { return ring_.size(); }
 
 private:
