@@ -52,6 +52,22 @@ std::size_t connectedComponents(const Mesh& mesh) {
     return roots.size();
 }
 
+// The figures of one surface made two ways: equal, area and volume up to the
+// order of their sums.
+void checkSameFigures(const SurfaceStats& a, const SurfaceStats& b, double epsilon = 1e-9) {
+    CHECK(a.triangles == b.triangles);
+    CHECK(a.vertices == b.vertices);
+    CHECK(a.bytes == b.bytes);
+    CHECK(a.cellsVisited == b.cellsVisited);
+    CHECK(a.closed == b.closed);
+    CHECK(a.touchesBorder == b.touchesBorder);
+    CHECK(a.boundsMin == b.boundsMin);
+    CHECK(a.boundsMax == b.boundsMax);
+    CHECK(a.area == Approx(b.area).epsilon(epsilon));
+    REQUIRE(a.enclosedVolume.has_value() == b.enclosedVolume.has_value());
+    if (a.enclosedVolume) CHECK(*a.enclosedVolume == Approx(*b.enclosedVolume).epsilon(epsilon));
+}
+
 // Every surface of a field together must be the exhaustive mesh, split.
 void requireSurfacesEqualExhaustive(const Volume& volume, double iso, TableKind table, const std::vector<Surface>& surfaces) {
     const Mesh whole = marchingCubes(volume, iso, table);
@@ -84,19 +100,8 @@ void requireAllEqualsExhaustive(const Volume& volume, double iso, TableKind tabl
         requireSurfacesEqualExhaustive(volume, iso, table, labelled);
         REQUIRE(labelled.size() == tracked.size());
         for (std::size_t i = 0; i < tracked.size(); ++i) {
-            const SurfaceStats &a = labelled[i].stats, &b = tracked[i].stats;
             CHECK(triangleSet(labelled[i].mesh, volume.dims()) == triangleSet(tracked[i].mesh, volume.dims()));
-            CHECK(a.triangles == b.triangles);
-            CHECK(a.vertices == b.vertices);
-            CHECK(a.bytes == b.bytes);
-            CHECK(a.cellsVisited == b.cellsVisited);
-            CHECK(a.closed == b.closed);
-            CHECK(a.touchesBorder == b.touchesBorder);
-            CHECK(a.boundsMin == b.boundsMin);
-            CHECK(a.boundsMax == b.boundsMax);
-            CHECK(a.area == Approx(b.area));
-            REQUIRE(a.enclosedVolume.has_value() == b.enclosedVolume.has_value());
-            if (a.enclosedVolume) CHECK(*a.enclosedVolume == Approx(*b.enclosedVolume));
+            checkSameFigures(labelled[i].stats, tracked[i].stats);
         }
     }
 }
@@ -156,19 +161,9 @@ void requireSameSurfaceOnThreads(const Volume& volume, double iso, const GridEdg
         }
         CHECK(edges.size() == many.mesh.vertices.size());  // welded: no edge has two vertices
         CHECK(differing == 0);
-        const SurfaceStats &a = many.stats, &b = one.stats;
-        CHECK(a.triangles == b.triangles);
-        CHECK(a.cellsVisited == b.cellsVisited);
-        CHECK(a.bytes == b.bytes);
-        CHECK(a.closed == b.closed);
-        CHECK(a.touchesBorder == b.touchesBorder);
-        CHECK(a.boundsMin == b.boundsMin);
-        CHECK(a.boundsMax == b.boundsMax);
-        CHECK(a.area == Approx(b.area).epsilon(1e-12));
-        REQUIRE(a.enclosedVolume.has_value() == b.enclosedVolume.has_value());
-        if (a.enclosedVolume) CHECK(*a.enclosedVolume == Approx(*b.enclosedVolume).epsilon(1e-12));
+        checkSameFigures(many.stats, one.stats, 1e-12);
         // Closed by every edge, not only by the border: seams between threads are welded.
-        CHECK(measureSurface(many.mesh, volume, false).closed == b.closed);
+        CHECK(measureSurface(many.mesh, volume, false).closed == one.stats.closed);
     }
 }
 
