@@ -225,7 +225,7 @@ int runExtract(const ExtractOptions& options) {
             {"cells_total", cellsTotal},
             {"seconds", seconds},
             {"seconds_all", result.seconds},
-            {"threads", options.threads},
+            {"threads", options.method == "track" ? std::min(options.threads, kMaxTrackThreads) : options.threads},
             {"mesh_bytes", result.meshBytes},
             {"soup_bytes", soupBytes},
             {"mesh_to_soup", soupBytes ? double(result.meshBytes) / double(soupBytes) : 0.0},

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <exception>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -31,7 +32,11 @@ void parallelFor(int count, int threads, Fn&& fn) {
         }
     };
     std::vector<std::thread> pool;
-    for (int t = 1; t < std::min(threads, count); ++t) pool.emplace_back(work);
+    try {
+        for (int t = 1; t < std::min(threads, count); ++t) pool.emplace_back(work);
+    } catch (const std::system_error&) {
+        // No more threads to be had: the ones started, and this one, do the work.
+    }
     work();
     for (auto& thread : pool) thread.join();
     if (failure) std::rethrow_exception(failure);

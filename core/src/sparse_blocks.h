@@ -60,7 +60,7 @@ public:
     };
 
     // Where one thread's blocks and regions come from; only that thread uses it.
-    class Arena {
+    class alignas(64) Arena {
     public:
         std::size_t byteSize() const { return blocks_.size() * sizeof(Block) + regions_.size() * sizeof(Region); }
 

@@ -26,6 +26,7 @@
 #include <array>
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -261,7 +262,9 @@ public:
     }
 
     // From a thread with nothing left to walk: waits for pieces sent to it
-    // (true) or for every thread to be done (false).
+    // (true) or for every thread to be done (false). It looks for mail a few
+    // times, then sleeps until mail comes or the walk ends.
+
     bool wait(int me, std::vector<Message>& received) {
         {
             const std::lock_guard<std::mutex> lock(mutex_);
@@ -270,24 +273,28 @@ public:
             ++idle_;
             if (idle_ == threads_ && std::all_of(inbox_.begin(), inbox_.end(), [](const auto& box) { return box.empty(); })) {
                 finished_.store(true, std::memory_order_release);
+                woken_.notify_all();
                 return false;
             }
         }
-        for (;;) {
+        for (int look = 0; look < kLooks; ++look) {
             if (finished_.load(std::memory_order_acquire) || stopped_.load(std::memory_order_acquire)) return false;
-            if (mail_[std::size_t(me)].flag.load(std::memory_order_relaxed)) {
-                const std::lock_guard<std::mutex> lock(mutex_);
-                if (takeLocked(me, received)) {
-                    --idle_;
-                    return true;
-                }
-            }
+            if (mail_[std::size_t(me)].flag.load(std::memory_order_relaxed)) break;
             std::this_thread::yield();
         }
+        std::unique_lock<std::mutex> lock(mutex_);
+        woken_.wait(lock, [&] { return finished_.load(std::memory_order_relaxed) || stopped_.load(std::memory_order_relaxed) || !inbox_[std::size_t(me)].empty(); });
+        if (!takeLocked(me, received)) return false;
+        --idle_;
+        return true;
     }
 
     // Abandons the walk (a thread failed): every thread stops at its next poll or wait.
-    void stop() { stopped_.store(true, std::memory_order_release); }
+    void stop() {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        stopped_.store(true, std::memory_order_release);
+        woken_.notify_all();
+    }
 
 private:
     void handOver(int me) {
@@ -297,6 +304,7 @@ private:
             inbox_[std::size_t(to)].insert(inbox_[std::size_t(to)].end(), box.begin(), box.end());
             box.clear();
             mail_[std::size_t(to)].flag.store(true, std::memory_order_relaxed);
+            woken_.notify_all();
         }
     }
 
@@ -314,9 +322,12 @@ private:
         std::vector<std::vector<Message>> to;  // used by its sender only
     };
 
+    static constexpr int kLooks = 64;  // yields before an idle thread sleeps
+
     const int threads_;
     std::vector<Outbox> outbox_;  // per sender
-    std::mutex mutex_;                          // guards inbox_ and idle_
+    std::mutex mutex_;            // guards inbox_ and idle_, and the waits on woken_
+    std::condition_variable woken_;
     std::vector<std::vector<Message>> inbox_;
     int idle_ = 0;
     std::vector<Flag> mail_;  // something may be in the thread's inbox
@@ -734,9 +745,6 @@ Surface walkWhole(const TrackWorker& worker, TrackState& state, TableKind table,
     return surface;
 }
 
-// More threads than this would only add seams; their ids keep 2^26 vertices each.
-constexpr int kMaxTrackThreads = 64;
-
 // Cell pieces a walk on several threads first walks on one (about a millisecond).
 constexpr std::size_t kCellsAlone = 8192;
 
@@ -771,7 +779,31 @@ Surface walkTogether(const Volume& volume, const TrackWorker& worker, const Grid
         walkers[std::size_t(entry.block->owner)].queue.push(entry);
     }
     Exchange exchange(threads);
-    detail::parallelFor(threads, threads, [&](int t) { worker.walkShared(blocks, walkers[std::size_t(t)], exchange); });
+    {
+        // One thread per walker, each needed until the end: if a thread cannot be
+        // started, the walk is abandoned and the failure rethrown.
+        std::exception_ptr failure;
+        std::mutex failureMutex;
+        auto walk = [&](int t) {
+            try {
+                worker.walkShared(blocks, walkers[std::size_t(t)], exchange);
+            } catch (...) {
+                const std::lock_guard<std::mutex> lock(failureMutex);
+                if (!failure) failure = std::current_exception();
+            }
+        };
+        std::vector<std::thread> pool;
+        try {
+            for (int t = 1; t < threads; ++t) pool.emplace_back(walk, t);
+        } catch (...) {
+            exchange.stop();
+            for (std::thread& thread : pool) thread.join();
+            throw;
+        }
+        walk(0);
+        for (std::thread& thread : pool) thread.join();
+        if (failure) std::rethrow_exception(failure);
+    }
 
     // The parts, in thread order, in the first walker's buffers; vertex ids become indices.
     std::vector<std::size_t> firstVertex(std::size_t(threads) + 1, 0), firstIndex(std::size_t(threads) + 1, 0);

@@ -145,7 +145,7 @@ void requireSameSurfaceOnThreads(const Volume& volume, double iso, const GridEdg
         vertexOfEdge[isotrack::testing::edgeKey(one.mesh.vertexEdges[v], volume.dims())] = one.mesh.vertices[v];
     }
     REQUIRE(vertexOfEdge.size() == one.mesh.vertices.size());
-    for (int threads : {2, 3}) {
+    for (int threads : {2, 3, 8}) {
         INFO(threads << " threads");
         const Surface many = trackSurface(volume, iso, seed, TableKind::Consistent, threads);
         REQUIRE(many.mesh.vertices.size() == one.mesh.vertices.size());

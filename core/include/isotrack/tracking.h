@@ -61,6 +61,9 @@ SurfaceStats measureSurface(const Mesh& mesh, const Volume& volume, bool closedU
 // that varies from run to run (and area and volume may differ in their last bits).
 Surface trackSurface(const Volume& volume, double iso, const GridEdge& seed,
                      TableKind table = TableKind::Consistent, int threads = 1);
+// trackSurface's most threads (more would only add seams; the vertex ids of each
+// keep 2^26 vertices).
+constexpr int kMaxTrackThreads = 64;
 
 // Every surface, sorted by triangle count, largest first (ties: the surface with
 // the first grid edge in memory order first). Together they hold exactly the
