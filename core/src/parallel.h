@@ -1,5 +1,5 @@
 #pragma once
-// Running a loop's iterations on a few threads.
+// Running work on a few threads.
 #include <algorithm>
 #include <atomic>
 #include <exception>
@@ -9,6 +9,23 @@
 #include <vector>
 
 namespace isotrack::detail {
+
+// The first exception of several threads, kept to be rethrown on the calling one.
+class FirstFailure {
+public:
+    // From a catch block.
+    void record() {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        if (!failure_) failure_ = std::current_exception();
+    }
+    void rethrowIfAny() const {
+        if (failure_) std::rethrow_exception(failure_);
+    }
+
+private:
+    std::mutex mutex_;
+    std::exception_ptr failure_;
+};
 
 // Runs fn(i) for i in [0, count) on `threads` threads, handing out indices in
 // order. The first exception any iteration throws stops the hand-out and is
@@ -20,15 +37,13 @@ void parallelFor(int count, int threads, Fn&& fn) {
         return;
     }
     std::atomic<int> next{0};
-    std::exception_ptr failure;
-    std::mutex failureMutex;
+    FirstFailure failure;
     auto work = [&] {
         try {
             for (int i = next++; i < count; i = next++) fn(i);
         } catch (...) {
             next = count;
-            const std::lock_guard<std::mutex> lock(failureMutex);
-            if (!failure) failure = std::current_exception();
+            failure.record();
         }
     };
     std::vector<std::thread> pool;
@@ -39,7 +54,35 @@ void parallelFor(int count, int threads, Fn&& fn) {
     }
     work();
     for (auto& thread : pool) thread.join();
-    if (failure) std::rethrow_exception(failure);
+    failure.rethrowIfAny();
+}
+
+// Runs fn(i) for every i in [0, count) at once, each on a thread of its own
+// (0 on the calling thread), for parts that wait on one another. When a part
+// throws, or a thread cannot be started, abandon() lets the running parts stop;
+// the first failure is rethrown once every thread has.
+template <class Fn, class Abandon>
+void runTogether(int count, Fn&& fn, Abandon&& abandon) {
+    FirstFailure failure;
+    auto part = [&](int i) {
+        try {
+            fn(i);
+        } catch (...) {
+            failure.record();
+            abandon();
+        }
+    };
+    std::vector<std::thread> pool;
+    try {
+        for (int i = 1; i < count; ++i) pool.emplace_back(part, i);
+    } catch (...) {
+        abandon();
+        for (auto& thread : pool) thread.join();
+        throw;
+    }
+    part(0);
+    for (auto& thread : pool) thread.join();
+    failure.rethrowIfAny();
 }
 
 }  // namespace isotrack::detail

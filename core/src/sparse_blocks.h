@@ -73,11 +73,9 @@ public:
     };
 
     SparseBlocks(const Dims& dims, int threads = 1)
-        : blocksX_((dims[0] + kSide - 1) >> kShift),
-          blocksY_((dims[1] + kSide - 1) >> kShift),
-          regionsX_((blocksX_ + kSide - 1) >> kShift),
-          regionsY_((blocksY_ + kSide - 1) >> kShift),
-          regions_(std::size_t(regionsX_) * std::size_t(regionsY_) * std::size_t((((dims[2] + kSide - 1) >> kShift) + kSide - 1) >> kShift)),
+        : regionsX_((dims[0] + kRegionMask) >> kRegionShift),
+          regionsY_((dims[1] + kRegionMask) >> kRegionShift),
+          regions_(std::size_t(regionsX_) * std::size_t(regionsY_) * std::size_t((dims[2] + kRegionMask) >> kRegionShift)),
           arenas_(std::size_t(std::max(threads, 1))),
           threads_(std::max(threads, 1)) {
         for (auto& r : regions_) r.store(nullptr, std::memory_order_relaxed);
@@ -103,8 +101,8 @@ public:
     Block* at(int x, int y, int z, int thread = 0) {
         const int bx = x >> kShift, by = y >> kShift, bz = z >> kShift;
         Arena& arena = arenas_[std::size_t(thread)];
-        std::atomic<Region*>& regionSlot =
-            regions_[std::size_t(bx >> kShift) + std::size_t(regionsX_) * (std::size_t(by >> kShift) + std::size_t(regionsY_) * std::size_t(bz >> kShift))];
+        std::atomic<Region*>& regionSlot = regions_[std::size_t(x >> kRegionShift) +
+                                                    std::size_t(regionsX_) * (std::size_t(y >> kRegionShift) + std::size_t(regionsY_) * std::size_t(z >> kRegionShift))];
         Region* region = regionSlot.load(std::memory_order_acquire);
         if (region == nullptr) region = publish(regionSlot, arena.spareRegion_, [&] { return &arena.regions_.emplace_back(); });
         std::atomic<Block*>& blockSlot = region->block[std::size_t(local(bx, by, bz))];
@@ -150,7 +148,7 @@ private:
         return found;
     }
 
-    int blocksX_, blocksY_, regionsX_, regionsY_;
+    int regionsX_, regionsY_;
     std::vector<std::atomic<Region*>> regions_;
     std::vector<Arena> arenas_;
     int threads_;

@@ -264,7 +264,6 @@ public:
     // From a thread with nothing left to walk: waits for pieces sent to it
     // (true) or for every thread to be done (false). It looks for mail a few
     // times, then sleeps until mail comes or the walk ends.
-
     bool wait(int me, std::vector<Message>& received) {
         {
             const std::lock_guard<std::mutex> lock(mutex_);
@@ -382,16 +381,10 @@ public:
 
     void walkShared(SparseBlocks& blocks, Walker& walker, Exchange& exchange) const override {
         std::vector<Exchange::Message> received;
-        try {
-            do {
-                for (const auto& m : received) enqueueIn(walker, nullptr, m.block, m.cell, m.sample, m.edge);
-                received.clear();
-                walk<true>(blocks, nullptr, walker, std::numeric_limits<std::size_t>::max(), &exchange);
-            } while (walker.queue.empty() && exchange.wait(walker.thread, received));
-        } catch (...) {
-            exchange.stop();
-            throw;
-        }
+        do {
+            enqueueReceived(walker, received);
+            walk<true>(blocks, nullptr, walker, std::numeric_limits<std::size_t>::max(), &exchange);
+        } while (walker.queue.empty() && exchange.wait(walker.thread, received));
     }
 
 private:
@@ -415,8 +408,7 @@ private:
             if constexpr (Shared) {
                 if ((visited & 63) == 0) {
                     if (!exchange->poll(w.thread, received)) break;
-                    for (const auto& m : received) enqueueIn(w, nullptr, m.block, m.cell, m.sample, m.edge);
-                    received.clear();
+                    enqueueReceived(w, received);
                 }
             }
             const Entry entry = w.queue.pop();
@@ -489,13 +481,19 @@ private:
         w.queue.push({block, static_cast<std::uint16_t>(cell), c, static_cast<std::uint8_t>(piece)});
     }
 
+    // Queues the pieces other threads sent to this walker, and empties `received`.
+    void enqueueReceived(Walker& w, std::vector<Exchange::Message>& received) const {
+        for (const auto& m : received) enqueueIn(w, nullptr, m.block, m.cell, m.sample, m.edge);
+        received.clear();
+    }
+
     // The vertex slot of a cell's edge when the edge's origin may lie in a block further up.
     std::uint32_t& vertexSlot(SparseBlocks& blocks, Block* block, const int local[3], int edge, int thread) const {
         const auto& o = walk_.edgeOrigin[edge];
         const int p[3] = {local[0] + o[0], local[1] + o[1], local[2] + o[2]};
         const int link = SparseBlocks::kSelf + (p[0] >> kShift) + 3 * (p[1] >> kShift) + 9 * (p[2] >> kShift);
-        Block* owner = blocks.linked(block, link, thread);
-        return owner->vertex[std::size_t(3 * SparseBlocks::local(p[0], p[1], p[2]) + walk_.edgeAxis[edge])];
+        Block* holder = blocks.linked(block, link, thread);
+        return holder->vertex[std::size_t(3 * SparseBlocks::local(p[0], p[1], p[2]) + walk_.edgeAxis[edge])];
     }
 
     // edgeVertex, through its interior form when both ends of the edge have their six neighbours in the volume.
@@ -779,31 +777,7 @@ Surface walkTogether(const Volume& volume, const TrackWorker& worker, const Grid
         walkers[std::size_t(entry.block->owner)].queue.push(entry);
     }
     Exchange exchange(threads);
-    {
-        // One thread per walker, each needed until the end: if a thread cannot be
-        // started, the walk is abandoned and the failure rethrown.
-        std::exception_ptr failure;
-        std::mutex failureMutex;
-        auto walk = [&](int t) {
-            try {
-                worker.walkShared(blocks, walkers[std::size_t(t)], exchange);
-            } catch (...) {
-                const std::lock_guard<std::mutex> lock(failureMutex);
-                if (!failure) failure = std::current_exception();
-            }
-        };
-        std::vector<std::thread> pool;
-        try {
-            for (int t = 1; t < threads; ++t) pool.emplace_back(walk, t);
-        } catch (...) {
-            exchange.stop();
-            for (std::thread& thread : pool) thread.join();
-            throw;
-        }
-        walk(0);
-        for (std::thread& thread : pool) thread.join();
-        if (failure) std::rethrow_exception(failure);
-    }
+    detail::runTogether(threads, [&](int t) { worker.walkShared(blocks, walkers[std::size_t(t)], exchange); }, [&] { exchange.stop(); });
 
     // The parts, in thread order, in the first walker's buffers; vertex ids become indices.
     std::vector<std::size_t> firstVertex(std::size_t(threads) + 1, 0), firstIndex(std::size_t(threads) + 1, 0);
@@ -840,19 +814,20 @@ Surface walkTogether(const Volume& volume, const TrackWorker& worker, const Grid
         for (std::size_t i = iBegin; i < iEnd; ++i) to[i] = finalIndex(part.indices[i]);
     });
 
-    TrackState state(volume.dims());
-    Walker& whole = state.walker;
-    whole.mesh = std::move(mesh);
+    // The first walker takes the others' figures, and measures the triangles
+    // between regions now that every corner is in place.
+    Walker& whole = walkers[0];
     for (std::size_t t = 0; t < walkers.size(); ++t) {
-        whole.measure.merge(walkers[t].measure);
-        whole.cellsVisited += walkers[t].cellsVisited;
-        // Triangles between regions, measured now that every corner is in place.
+        if (t > 0) {
+            whole.measure.merge(walkers[t].measure);
+            whole.cellsVisited += walkers[t].cellsVisited;
+        }
         for (const std::size_t first : walkers[t].unmeasured) {
             const std::size_t k = firstIndex[t] + first;
-            whole.measure.addTriangle(whole.mesh.vertices.data(), whole.mesh.indices[k], whole.mesh.indices[k + 1], whole.mesh.indices[k + 2]);
+            whole.measure.addTriangle(mesh.vertices.data(), mesh.indices[k], mesh.indices[k + 1], mesh.indices[k + 2]);
         }
     }
-    Surface surface = finishedSurface(state.walker, table);
+    Surface surface = finishedSurface(whole, table);
     surface.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return surface;
 }
