@@ -20,6 +20,8 @@
 namespace isotrack {
 namespace {
 
+constexpr std::uint32_t kNoRoot = ~std::uint32_t(0);
+
 // One thread's share of one surface.
 struct Share {
     std::uint32_t vertices = 0, triangles = 0, pieces = 0;
@@ -69,42 +71,68 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         detail::parallelFor(int(parts.size()), threads, [&](int r) { fn(parts[std::size_t(r)], std::size_t(r)); });
     };
 
-    // Surfaces numbered in order of their roots (their first vertices): a root's
-    // number goes to `local` first, then every vertex's to `component`.
-    Buffer<std::uint32_t>& component = labelled.root;
-    Buffer<std::uint32_t> local(mesh.vertices.size());  // each vertex's index in its surface
+    // Surfaces numbered in order of their roots (their first vertices). Each
+    // range ranks its roots, which numbers them once the ranges' counts are
+    // summed; then each vertex gets its surface (`component`) and its index in
+    // its range's share of that surface (`local`), and each range counts its
+    // share of every surface's triangles.
+    const Buffer<std::uint32_t>& root = labelled.root;
+    Buffer<std::uint32_t> rank(mesh.vertices.size());  // written for roots only
     std::vector<std::uint32_t> firstNumber(parts.size() + 1, 0);
     forParts([&](const Range& part, std::size_t r) {
         std::uint32_t roots = 0;
-        for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) roots += component[v] == v;
+        for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
+            if (root[v] == v) rank[v] = roots++;
+        }
         firstNumber[r + 1] = roots;
     });
     std::partial_sum(firstNumber.begin(), firstNumber.end(), firstNumber.begin());
     const std::size_t count = firstNumber.back();
-    forParts([&](const Range& part, std::size_t r) {
-        std::uint32_t number = firstNumber[r];
-        for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
-            if (component[v] == v) local[v] = number++;
-        }
-    });
-    forParts([&](const Range& part, std::size_t) {
-        for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) component[v] = local[component[v]];
-    });
-
-    // Each range's share of each surface, and each vertex's index within its share.
+    // The number of the surface whose root is r, looked for from range `near`
+    // (a vertex's root is in its range or an earlier one; a triangle's first
+    // vertex may be in the next range).
+    auto numberOf = [&](std::uint32_t r, std::size_t near) {
+        while (r < parts[near].vertexBegin) --near;
+        while (r >= parts[near].vertexEnd) ++near;
+        return static_cast<std::uint32_t>(firstNumber[near] + rank[r]);
+    };
+    Buffer<std::uint32_t> component(mesh.vertices.size());
+    Buffer<std::uint32_t> local(mesh.vertices.size());  // each vertex's index in its range's share of its surface
     std::vector<std::vector<Share>> shares(parts.size(), std::vector<Share>(count));
     forParts([&](const Range& part, std::size_t r) {
         std::vector<Share>& share = shares[r];
-        for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) local[v] = share[component[v]].vertices++;
+        // Runs of vertices and triangles on one surface are common: its number
+        // and counter stay in registers for the run.
+        std::uint32_t lastRoot = kNoRoot, k = 0, counter = 0;
+        for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
+            if (root[v] != lastRoot) {
+                if (lastRoot != kNoRoot) share[k].vertices = counter;
+                lastRoot = root[v];
+                k = numberOf(lastRoot, r);
+                counter = share[k].vertices;
+            }
+            component[v] = k;
+            local[v] = counter++;
+        }
+        if (lastRoot != kNoRoot) share[k].vertices = counter;
+        lastRoot = kNoRoot;
+        std::uint32_t triangles = 0, pieces = 0;
         for (std::size_t c = part.chunkBegin; c < part.chunkEnd; ++c) {
             const detail::MarchedChunk& chunk = labelled.chunks[c];
             for (std::size_t t = chunk.triangleBegin; t < chunk.triangleEnd; ++t) {
-                Share& s = share[component[mesh.indices[3 * t]]];
+                const std::uint32_t first = root[mesh.indices[3 * t]];
+                if (first != lastRoot) {
+                    if (lastRoot != kNoRoot) share[k].triangles += triangles, share[k].pieces += pieces;
+                    lastRoot = first;
+                    k = numberOf(first, r);
+                    triangles = pieces = 0;
+                }
                 const std::size_t bit = t - chunk.triangleBegin;
-                ++s.triangles;
-                s.pieces += chunk.pieceStarts[bit / 8] >> (bit % 8) & 1u;
+                ++triangles;
+                pieces += chunk.pieceStarts[bit / 8] >> (bit % 8) & 1u;
             }
         }
+        if (lastRoot != kNoRoot) share[k].triangles += triangles, share[k].pieces += pieces;
     });
     std::vector<Surface> surfaces(count);
     std::size_t largest = 0;
@@ -145,10 +173,19 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         std::size_t to = 3 * part.triangleBegin;
         const std::uint32_t* localIndex = local.data();
         const std::size_t vertexEnd = part.vertexEnd;
+        // Consecutive triangles mostly lie on one surface: measured in registers
+        // until the surface changes.
+        std::uint32_t runSurface = part.triangleBegin < part.triangleEnd ? component[mesh.indices[3 * part.triangleBegin]] : 0;
+        detail::TriangleMeasure run;
         for (std::size_t t = part.triangleBegin; t < part.triangleEnd; ++t) {
             const std::uint32_t* v = &mesh.indices[3 * t];
             const std::uint32_t k = component[v[0]];
-            share[k].measure.addTriangle(mesh.vertices.data(), v[0], v[1], v[2]);
+            if (k != runSurface) {
+                share[runSurface].measure.triangles.merge(run);
+                run = {};
+                runSurface = k;
+            }
+            run.add(mesh.vertices[v[0]].position, mesh.vertices[v[1]].position, mesh.vertices[v[2]].position);
             const std::uint32_t own = base[k], next = nextBase[k];
             // Read before writing: a compacted triangle may land on its own corners.
             const std::uint32_t a = localIndex[v[0]] + (v[0] < vertexEnd ? own : next);
@@ -168,6 +205,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             out[1] = b;
             out[2] = c;
         }
+        if (part.triangleBegin < part.triangleEnd) share[runSurface].measure.triangles.merge(run);
     });
     // Vertices out to their surfaces, measured on the way.
     forParts([&](const Range& part, std::size_t r) {

@@ -49,11 +49,11 @@ struct TriangleMeasure {
     }
 
     void add(const float* a, const float* b, const float* c) {
-        const double u[3] = {double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2]};
-        const double v[3] = {double(c[0]) - a[0], double(c[1]) - a[1], double(c[2]) - a[2]};
-        const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-        doubleArea += std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-        sixfoldVolume += double(a[0]) * n[0] + double(a[1]) * n[1] + double(a[2]) * n[2];
+        const float u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        const float v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        const float n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+        doubleArea += double(std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]));
+        sixfoldVolume += double(a[0] * n[0] + a[1] * n[1] + a[2] * n[2]);
     }
 };
 
