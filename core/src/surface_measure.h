@@ -64,11 +64,15 @@ struct SurfaceMeasure {
     bool touchesBorder = false;
 
     void addVertex(const Vertex& v, const GridEdge& e, const Dims& dims) {
+        addBounds(v);
+        if (!touchesBorder) touchesBorder = edgeOnVolumeBorder(e, dims);
+    }
+    // The bounds only, for a tracker that learns touchesBorder otherwise.
+    void addBounds(const Vertex& v) {
         for (int k = 0; k < 3; ++k) {
             boundsMin[k] = std::min(boundsMin[k], v.position[k]);
             boundsMax[k] = std::max(boundsMax[k], v.position[k]);
         }
-        if (!touchesBorder) touchesBorder = edgeOnVolumeBorder(e, dims);
     }
     void addTriangle(const Vertex* vertices, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
         triangles.add(vertices[a].position, vertices[b].position, vertices[c].position);

@@ -353,7 +353,7 @@ class TypedTrackWorker final : public TrackWorker {
 
 public:
     TypedTrackWorker(const Volume& volume, const T* samples, double iso, TableKind table)
-        : grid_(volume, samples, iso), dims_(volume.dims()), walk_(walkTable(table)) {
+        : grid_(volume, samples, iso), walk_(walkTable(table)) {
         const std::size_t stride[3] = {1, grid_.strideY(), grid_.strideZ()};
         const int last[3] = {grid_.nx() - 2, grid_.ny() - 2, grid_.nz() - 2};
         for (int f = 0; f < cube::kFaceCount; ++f) {
@@ -447,7 +447,12 @@ private:
             const std::size_t sample = grid_.index(at[0], at[1], at[2]);
             for (int k = 0; k < walk.exitCount; ++k) {
                 const int f = walk.exits[std::size_t(k)] >> 4, edge = walk.exits[std::size_t(k)] & 15;
-                if (at[cube::faceAxis(f)] == border_[f]) continue;  // the surface is cut open by the volume's border here
+                if (at[cube::faceAxis(f)] == border_[f]) {
+                    // The surface is cut open by the volume's border here: the
+                    // piece has a vertex on an edge in the border's plane.
+                    w.measure.touchesBorder = true;
+                    continue;
+                }
                 if ((cell & walk_.faceMask[f]) == walk_.faceSide[f]) {
                     Block* next = blocks.linked(block, walk_.link[f], w.thread);
                     if (Shared && next->owner != w.thread) {
@@ -535,12 +540,11 @@ private:
             slot = id;
         }
         *out.vertexEdges.extend(1) = e;
-        w.measure.addVertex(v, e, dims_);
+        w.measure.addBounds(v);  // touchesBorder: see the exits in walk
         return id;
     }
 
     detail::SampleGrid<T> grid_;
-    const Dims dims_;
     const WalkTable& walk_;
     std::array<std::size_t, 6> sampleStep_{};  // to the first corner of the cell across each face
     std::array<int, 6> border_{};              // the cells' coordinate on the volume's border, per face
