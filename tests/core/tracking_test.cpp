@@ -235,6 +235,23 @@ TEST_CASE("the figures the tracker measures as it walks are measureSurface's, ex
     }
 }
 
+TEST_CASE("a tracked surface touches the border exactly when a vertex lies in a border plane", "[core][tracking]") {
+    // The tracker learns it from exits cut by the border; measureSurface from the vertices' edges.
+    const Volume noise = makeField({"noise", 24});
+    for (const TableKind table : {TableKind::Consistent, TableKind::Classic}) {
+        std::size_t touching = 0, inside = 0;
+        for (const Surface& surface : extractAllSurfaces(noise, 0.5, table)) {
+            const Surface tracked = trackSurface(noise, 0.5, surface.mesh.vertexEdges[0], table);
+            const SurfaceStats measured = measureSurface(tracked.mesh, noise, table == TableKind::Consistent);
+            CHECK(tracked.stats.touchesBorder == measured.touchesBorder);
+            CHECK(surface.stats.touchesBorder == measured.touchesBorder);
+            ++(measured.touchesBorder ? touching : inside);
+        }
+        CHECK(touching > 0);
+        CHECK(inside > 0);
+    }
+}
+
 TEST_CASE("continuation pieces partition each configuration's triangles and edges", "[core][tracking][tables]") {
     for (TableKind kind : {TableKind::Consistent, TableKind::Classic}) {
         const auto& table = continuationTable(kind);
