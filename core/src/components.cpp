@@ -71,60 +71,53 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         detail::parallelFor(int(parts.size()), threads, [&](int r) { fn(parts[std::size_t(r)], std::size_t(r)); });
     };
 
-    // Surfaces numbered in order of their roots (their first vertices). Each
-    // range ranks its roots, which numbers them once the ranges' counts are
-    // summed; then each vertex gets its surface (`component`) and its index in
-    // its range's share of that surface (`local`), and each range counts its
-    // share of every surface's triangles.
-    const Buffer<std::uint32_t>& root = labelled.root;
-    Buffer<std::uint32_t> rank(mesh.vertices.size());  // written for roots only
-    std::vector<std::uint32_t> firstNumber(parts.size() + 1, 0);
+    // Surfaces numbered in order of their roots (their first vertices): each
+    // range lists its roots, and the lists one after the other are in order.
+    // Then each vertex's root becomes its surface's number (`component`, in
+    // place) and the vertex gets its index in its range's share of that surface
+    // (`local`); then each range counts its share of every surface's triangles.
+    std::vector<std::vector<std::uint32_t>> rootsOf(parts.size());
     forParts([&](const Range& part, std::size_t r) {
-        std::uint32_t roots = 0;
         for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
-            if (root[v] == v) rank[v] = roots++;
+            if (labelled.root[v] == v) rootsOf[r].push_back(static_cast<std::uint32_t>(v));
         }
-        firstNumber[r + 1] = roots;
     });
-    std::partial_sum(firstNumber.begin(), firstNumber.end(), firstNumber.begin());
-    const std::size_t count = firstNumber.back();
-    // The number of the surface whose root is r, looked for from range `near`
-    // (a vertex's root is in its range or an earlier one; a triangle's first
-    // vertex may be in the next range).
-    auto numberOf = [&](std::uint32_t r, std::size_t near) {
-        while (r < parts[near].vertexBegin) --near;
-        while (r >= parts[near].vertexEnd) ++near;
-        return static_cast<std::uint32_t>(firstNumber[near] + rank[r]);
+    std::vector<std::uint32_t> roots;
+    for (const std::vector<std::uint32_t>& some : rootsOf) roots.insert(roots.end(), some.begin(), some.end());
+    const std::size_t count = roots.size();
+    auto numberOf = [&](std::uint32_t root) {
+        return static_cast<std::uint32_t>(std::lower_bound(roots.begin(), roots.end(), root) - roots.begin());
     };
-    Buffer<std::uint32_t> component(mesh.vertices.size());
-    Buffer<std::uint32_t> local(mesh.vertices.size());  // each vertex's index in its range's share of its surface
+    Buffer<std::uint32_t>& component = labelled.root;
+    Buffer<std::uint32_t> local(mesh.vertices.size());
     std::vector<std::vector<Share>> shares(parts.size(), std::vector<Share>(count));
+    // Runs of vertices and of triangles on one surface are common: the run's
+    // surface and counters stay in registers.
     forParts([&](const Range& part, std::size_t r) {
         std::vector<Share>& share = shares[r];
-        // Runs of vertices and triangles on one surface are common: its number
-        // and counter stay in registers for the run.
         std::uint32_t lastRoot = kNoRoot, k = 0, counter = 0;
         for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
-            if (root[v] != lastRoot) {
+            if (component[v] != lastRoot) {
                 if (lastRoot != kNoRoot) share[k].vertices = counter;
-                lastRoot = root[v];
-                k = numberOf(lastRoot, r);
+                lastRoot = component[v];
+                k = numberOf(lastRoot);
                 counter = share[k].vertices;
             }
             component[v] = k;
             local[v] = counter++;
         }
         if (lastRoot != kNoRoot) share[k].vertices = counter;
-        lastRoot = kNoRoot;
-        std::uint32_t triangles = 0, pieces = 0;
+    });
+    forParts([&](const Range& part, std::size_t r) {
+        std::vector<Share>& share = shares[r];
+        std::uint32_t k = kNoRoot, triangles = 0, pieces = 0;
         for (std::size_t c = part.chunkBegin; c < part.chunkEnd; ++c) {
             const detail::MarchedChunk& chunk = labelled.chunks[c];
             for (std::size_t t = chunk.triangleBegin; t < chunk.triangleEnd; ++t) {
-                const std::uint32_t first = root[mesh.indices[3 * t]];
-                if (first != lastRoot) {
-                    if (lastRoot != kNoRoot) share[k].triangles += triangles, share[k].pieces += pieces;
-                    lastRoot = first;
-                    k = numberOf(first, r);
+                const std::uint32_t surface = component[mesh.indices[3 * t]];
+                if (surface != k) {
+                    if (k != kNoRoot) share[k].triangles += triangles, share[k].pieces += pieces;
+                    k = surface;
                     triangles = pieces = 0;
                 }
                 const std::size_t bit = t - chunk.triangleBegin;
@@ -132,7 +125,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
                 pieces += chunk.pieceStarts[bit / 8] >> (bit % 8) & 1u;
             }
         }
-        if (lastRoot != kNoRoot) share[k].triangles += triangles, share[k].pieces += pieces;
+        if (k != kNoRoot) share[k].triangles += triangles, share[k].pieces += pieces;
     });
     std::vector<Surface> surfaces(count);
     std::size_t largest = 0;
