@@ -2,9 +2,10 @@
 //
 // extractAllSurfaces runs the (parallel) exhaustive pass, which labels the
 // connected surfaces on the way (labelled_march.h) and marks each cell piece's
-// first triangle. The mesh is then split chunk by chunk in parallel: one pass
-// counts each surface's vertices and triangles per chunk, which gives every
-// chunk its ranges in every surface's buffers, and one pass copies. The largest
+// first triangle. The mesh is then split in parallel over ranges of chunks: the
+// surfaces are numbered, each range counts its share of every surface's
+// vertices and triangles, which gives it its place in every surface's buffers,
+// and the triangles, then the vertices, are copied there and measured. The largest
 // surface is not copied but compacted in place, keeping the exhaustive pass's
 // buffers (and their pages, already touched). It yields
 // exactly the surfaces trackAllSurfaces finds by tracking one surface at a time
@@ -20,7 +21,7 @@
 namespace isotrack {
 namespace {
 
-constexpr std::uint32_t kNoRoot = ~std::uint32_t(0);
+constexpr std::uint32_t kNone = ~std::uint32_t(0);  // no root or surface yet
 
 // One thread's share of one surface.
 struct Share {
@@ -95,10 +96,10 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
     // surface and counters stay in registers.
     forParts([&](const Range& part, std::size_t r) {
         std::vector<Share>& share = shares[r];
-        std::uint32_t lastRoot = kNoRoot, k = 0, counter = 0;
+        std::uint32_t lastRoot = kNone, k = 0, counter = 0;
         for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
             if (component[v] != lastRoot) {
-                if (lastRoot != kNoRoot) share[k].vertices = counter;
+                if (lastRoot != kNone) share[k].vertices = counter;
                 lastRoot = component[v];
                 k = numberOf(lastRoot);
                 counter = share[k].vertices;
@@ -106,17 +107,17 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             component[v] = k;
             local[v] = counter++;
         }
-        if (lastRoot != kNoRoot) share[k].vertices = counter;
+        if (lastRoot != kNone) share[k].vertices = counter;
     });
     forParts([&](const Range& part, std::size_t r) {
         std::vector<Share>& share = shares[r];
-        std::uint32_t k = kNoRoot, triangles = 0, pieces = 0;
+        std::uint32_t k = kNone, triangles = 0, pieces = 0;
         for (std::size_t c = part.chunkBegin; c < part.chunkEnd; ++c) {
             const detail::MarchedChunk& chunk = labelled.chunks[c];
             for (std::size_t t = chunk.triangleBegin; t < chunk.triangleEnd; ++t) {
                 const std::uint32_t surface = component[mesh.indices[3 * t]];
                 if (surface != k) {
-                    if (k != kNoRoot) share[k].triangles += triangles, share[k].pieces += pieces;
+                    if (k != kNone) share[k].triangles += triangles, share[k].pieces += pieces;
                     k = surface;
                     triangles = pieces = 0;
                 }
@@ -125,7 +126,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
                 pieces += chunk.pieceStarts[bit / 8] >> (bit % 8) & 1u;
             }
         }
-        if (k != kNoRoot) share[k].triangles += triangles, share[k].pieces += pieces;
+        if (k != kNone) share[k].triangles += triangles, share[k].pieces += pieces;
     });
     std::vector<Surface> surfaces(count);
     std::size_t largest = 0;
@@ -168,13 +169,13 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         const std::size_t vertexEnd = part.vertexEnd;
         // Consecutive triangles mostly lie on one surface: measured in registers
         // until the surface changes.
-        std::uint32_t runSurface = part.triangleBegin < part.triangleEnd ? component[mesh.indices[3 * part.triangleBegin]] : 0;
+        std::uint32_t runSurface = kNone;
         detail::TriangleMeasure run;
         for (std::size_t t = part.triangleBegin; t < part.triangleEnd; ++t) {
             const std::uint32_t* v = &mesh.indices[3 * t];
             const std::uint32_t k = component[v[0]];
             if (k != runSurface) {
-                share[runSurface].measure.triangles.merge(run);
+                if (runSurface != kNone) share[runSurface].measure.triangles.merge(run);
                 run = {};
                 runSurface = k;
             }
@@ -198,7 +199,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             out[1] = b;
             out[2] = c;
         }
-        if (part.triangleBegin < part.triangleEnd) share[runSurface].measure.triangles.merge(run);
+        if (runSurface != kNone) share[runSurface].measure.triangles.merge(run);
     });
     // Vertices out to their surfaces, measured on the way.
     forParts([&](const Range& part, std::size_t r) {
