@@ -168,18 +168,24 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         const std::uint32_t* localIndex = local.data();
         const std::size_t vertexEnd = part.vertexEnd;
         // Consecutive triangles mostly lie on one surface: measured in registers
-        // until the surface changes.
+        // until the surface changes (plain locals: in a struct, the sums went
+        // through memory, a store and a load per triangle).
         std::uint32_t runSurface = kNone;
-        detail::TriangleMeasure run;
+        double runArea = 0.0, runVolume = 0.0;
         for (std::size_t t = part.triangleBegin; t < part.triangleEnd; ++t) {
             const std::uint32_t* v = &mesh.indices[3 * t];
             const std::uint32_t k = component[v[0]];
             if (k != runSurface) {
-                if (runSurface != kNone) share[runSurface].measure.triangles.merge(run);
-                run = {};
+                if (runSurface != kNone) share[runSurface].measure.triangles.merge({runArea, runVolume});
+                runArea = runVolume = 0.0;
                 runSurface = k;
             }
-            run.add(mesh.vertices[v[0]].position, mesh.vertices[v[1]].position, mesh.vertices[v[2]].position);
+            float doubledArea, sixfoldVolume;
+            detail::TriangleMeasure::measure(mesh.vertices[v[0]].position, mesh.vertices[v[1]].position, mesh.vertices[v[2]].position,
+                                             doubledArea, sixfoldVolume);
+            runArea += double(doubledArea);
+            runVolume += double(sixfoldVolume);
+            if (k == largest && !compact) continue;  // a lone surface's triangles stay as they are
             const std::uint32_t own = base[k], next = nextBase[k];
             // Read before writing: a compacted triangle may land on its own corners.
             const std::uint32_t a = localIndex[v[0]] + (v[0] < vertexEnd ? own : next);
@@ -189,17 +195,15 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             if (k != largest) {
                 out = surfaces[k].mesh.indices.data() + cursor[k];
                 cursor[k] += 3;
-            } else if (compact) {
+            } else {
                 out = mesh.indices.data() + to;
                 to += 3;
-            } else {
-                out = mesh.indices.data() + 3 * t;
             }
             out[0] = a;  // one store each: assembling the three elsewhere and copying them stalls
             out[1] = b;
             out[2] = c;
         }
-        if (runSurface != kNone) share[runSurface].measure.triangles.merge(run);
+        if (runSurface != kNone) share[runSurface].measure.triangles.merge({runArea, runVolume});
     });
     // Vertices out to their surfaces, measured on the way.
     forParts([&](const Range& part, std::size_t r) {

@@ -49,11 +49,19 @@ struct TriangleMeasure {
     }
 
     void add(const float* a, const float* b, const float* c) {
+        float area, volume;
+        measure(a, b, c, area, volume);
+        doubleArea += double(area);
+        sixfoldVolume += double(volume);
+    }
+    // One triangle's twice area and six times signed volume, for callers that
+    // keep their sums in registers of their own.
+    static void measure(const float* a, const float* b, const float* c, float& doubledArea, float& sixfoldSignedVolume) {
         const float u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
         const float v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
         const float n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-        doubleArea += double(std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]));
-        sixfoldVolume += double(a[0] * n[0] + a[1] * n[1] + a[2] * n[2]);
+        doubledArea = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        sixfoldSignedVolume = a[0] * n[0] + a[1] * n[1] + a[2] * n[2];
     }
 };
 
