@@ -5,13 +5,18 @@ For each volume: isotrack's exhaustive pass (mc), every surface (all) and one
 surface (track), at 1 and 2 threads, against VTK 9's vtkFlyingEdges3D (with
 normals) at 1 and 2 threads through vtkSMPTools, followed by
 vtkPolyDataConnectivityFilter in all-regions and closest-point modes. Times are
-extraction only (reading excluded), medians of --repeat runs. isotrack runs in
---processes separate processes of --repeat runs each and reports the median of
-their medians: on a virtual machine the same process can run 30% faster or
-slower than the next, by where its memory landed. Prints a table of
-times and ratios (VTK time / isotrack time: above 1 means isotrack is faster).
+extraction only (reading excluded), medians of --repeat runs.
 
-Usage: /usr/bin/python3 bench/compare_vtk.py [--isotrack build/app/isotrack] [--repeat 5] [--processes 3] [--quick]
+The runs come in --rounds rounds, each running everything once (VTK, then each
+isotrack method in a process of its own, at 1 then 2 threads; every other round
+isotrack goes first). Each figure is the median of its rounds' medians. On a
+virtual machine the same work can run 30% faster or slower from one minute to
+the next, and from one process to the next by where its memory landed: rounds
+close together in time keep both sides of a ratio under the same conditions.
+Prints a table of times and ratios (VTK time / isotrack time: above 1 means
+isotrack is faster).
+
+Usage: /usr/bin/python3 bench/compare_vtk.py [--isotrack build/app/isotrack] [--repeat 5] [--rounds 3] [--quick]
 Needs Debian's python3-vtk9 (run it with /usr/bin/python3) and, for the CT rows,
 assets/ct/cranium.nrrd from scripts/get_ct.sh.
 """
@@ -84,17 +89,19 @@ def vtk_times(image, iso, seed, threads, repeat):
             "regions": regions, "one_triangles": one}
 
 
-def isotrack_time(binary, path, iso, method, threads, repeat, seed=None, processes=1):
-    """The report of `isotrack extract --json`; with several processes, the one whose
-    median is the median of theirs."""
+def isotrack_time(binary, path, iso, method, threads, repeat, seed=None):
+    """The report of one `isotrack extract --json` process."""
     cmd = [binary, "extract", "--volume", path, "--iso", repr(iso), "--method", method, "--threads", str(threads),
            "--repeat", str(repeat), "--json"]
     if seed is not None:
         cmd += ["--seed", ",".join(repr(v) for v in seed)]
-    reports = [json.loads(subprocess.run(cmd, check=True, capture_output=True, text=True).stdout)
-               for _ in range(processes)]
-    reports.sort(key=lambda r: r["seconds"])
-    return reports[len(reports) // 2]
+    return json.loads(subprocess.run(cmd, check=True, capture_output=True, text=True).stdout)
+
+
+def median_round(reports, key):
+    """The report whose `key` is the median of the rounds' (the lower middle one for an even count)."""
+    ordered = sorted(reports, key=lambda r: r[key])
+    return ordered[(len(ordered) - 1) // 2]
 
 
 def smallest_surface_seed(binary, path, iso):
@@ -115,7 +122,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--isotrack", default=os.path.join(REPO, "build", "app", "isotrack"))
     parser.add_argument("--repeat", type=int, default=5)
-    parser.add_argument("--processes", type=int, default=3, help="isotrack processes per figure (median of their medians)")
+    parser.add_argument("--rounds", type=int, default=3, help="rounds of every run, VTK and isotrack in turn (median of their medians)")
     parser.add_argument("--quick", action="store_true", help="smaller volumes, for a smoke run")
     args = parser.parse_args()
     data = os.path.join(REPO, "build", "bench-data")
@@ -135,8 +142,8 @@ def main():
     m = 256 if args.quick else 512
     cases.append((f"sphere {m}^3", ensure_field(args.isotrack, f"sphere:{m}", data), 0.0, None))
 
-    print(f"isotrack vs VTK {vtk.vtkVersion.GetVTKVersion()}, medians of {args.repeat} runs (isotrack: median of"
-          f" {args.processes} processes' medians), seconds of extraction only;")
+    print(f"isotrack vs VTK {vtk.vtkVersion.GetVTKVersion()}: medians of {args.rounds} rounds' medians of {args.repeat} runs"
+          f" (isotrack: a process per method and round), extraction only;")
     print("ratio = VTK time / isotrack time (above 1: isotrack faster)\n")
     header = f"{'volume':<16} {'what':<34} {'isotrack ms':>12} {'VTK ms':>10} {'ratio':>7}"
     print(header)
@@ -146,18 +153,33 @@ def main():
         image = read_nrrd(path)
         if seed is None:
             seed = smallest_surface_seed(args.isotrack, path, iso)
+        ours = {1: {"mc": [], "all": [], "track": []}, 2: {"mc": [], "all": [], "track": []}}
+        theirs = {1: [], 2: []}
+        for round_ in range(args.rounds):
+            for threads in (1, 2):
+                def run_isotrack():
+                    for method in ("mc", "all", "track"):
+                        ours[threads][method].append(isotrack_time(args.isotrack, path, iso, method, threads, args.repeat,
+                                                                   seed if method == "track" else None))
+                if round_ % 2:
+                    run_isotrack()
+                theirs[threads].append(vtk_times(image, iso, seed, threads, args.repeat))
+                if not round_ % 2:
+                    run_isotrack()
         for threads in (1, 2):
-            v = vtk_times(image, iso, seed, threads, args.repeat)
-            mc = isotrack_time(args.isotrack, path, iso, "mc", threads, args.repeat, processes=args.processes)
-            al = isotrack_time(args.isotrack, path, iso, "all", threads, args.repeat, processes=args.processes)
-            tr = isotrack_time(args.isotrack, path, iso, "track", threads, args.repeat, seed, processes=args.processes)
+            v = {key: statistics.median(r[key] for r in theirs[threads]) for key in ("fe", "fe_all", "fe_one")}
+            for key in ("triangles", "regions", "one_triangles"):
+                v[key] = theirs[threads][0][key]
+            mc = median_round(ours[threads]["mc"], "seconds")
+            al = median_round(ours[threads]["all"], "seconds")
+            tr = median_round(ours[threads]["track"], "seconds")
             lines = [
                 (f"mc vs FlyingEdges, {threads}T", mc["seconds"], v["fe"]),
                 (f"all vs FE+connectivity, {threads}T", al["seconds"], v["fe_all"]),
                 (f"track vs FE+closest point, {threads}T", tr["seconds"], v["fe_one"]),
             ]
-            for what, ours, theirs in lines:
-                print(f"{name:<16} {what:<34} {ours * 1e3:12.2f} {theirs * 1e3:10.2f} {theirs / ours:7.2f}")
+            for what, mine, vtks in lines:
+                print(f"{name:<16} {what:<34} {mine * 1e3:12.2f} {vtks * 1e3:10.2f} {vtks / mine:7.2f}")
             print(f"{'':<16} {'(all / mc, same threads)':<34} {al['seconds'] / mc['seconds']:12.2f}")
             rows.append({"volume": name, "threads": threads, "mc": mc["seconds"], "all": al["seconds"],
                          "track": tr["seconds"], "fe": v["fe"], "fe_all": v["fe_all"], "fe_one": v["fe_one"],
