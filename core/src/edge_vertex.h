@@ -98,19 +98,14 @@ public:
     // The vertex where the surface crosses the edge from sample (x, y, z) one
     // step along `axis`, written straight into `v` (a mesh's buffer: assembling
     // it elsewhere and copying it stalls on the partial stores).
-    void edgeVertex(int x, int y, int z, int axis, Vertex& v) const {
-        const std::size_t a = index(x, y, z);
-        const std::size_t b = a + (axis == 0 ? 1 : axis == 1 ? strideY_ : strideZ_);
-        double ga[3], gb[3];
-        const int ex = x + (axis == 0), ey = y + (axis == 1), ez = z + (axis == 2);
-        if (x > 0 && y > 0 && z > 0 && ex + 1 < nx_ && ey + 1 < ny_ && ez + 1 < nz_) {
-            interiorGradient(a, ga);
-            interiorGradient(b, gb);
-        } else {
-            gradient(x, y, z, ga);
-            gradient(ex, ey, ez, gb);
+    // (Out of line: inlined, it crowds the hot loops that call it, which make
+    // most of their vertices inside through interiorEdgeVertex.)
+    [[gnu::noinline]] void edgeVertex(int x, int y, int z, int axis, Vertex& v) const {
+        switch (axis) {
+            case 0: edgeVertexAlong<0>(x, y, z, v); return;
+            case 1: edgeVertexAlong<1>(x, y, z, v); return;
+            default: edgeVertexAlong<2>(x, y, z, v); return;
         }
-        vertexOnEdge(x, y, z, axis, a, b, ga, gb, v);
     }
 
     // edgeVertex for an edge along `Axis` from sample `a` = (x, y, z) whose two
@@ -118,11 +113,11 @@ public:
     // and the border. Trackers call it once they know the edge is inside.
     template <int Axis>
     void interiorEdgeVertex(std::size_t a, int x, int y, int z, Vertex& v) const {
-        const std::size_t b = a + (Axis == 0 ? 1 : Axis == 1 ? strideY_ : strideZ_);
+        const std::size_t b = a + stride<Axis>();
         double ga[3], gb[3];
         interiorGradient(a, ga);
         interiorGradient(b, gb);
-        vertexOnEdge(x, y, z, Axis, a, b, ga, gb, v);
+        vertexOnEdge<Axis>(x, y, z, a, b, ga, gb, v);
     }
 
     // Central-difference gradient in world units; one-sided on the border.
@@ -135,9 +130,9 @@ public:
     }
 
     [[gnu::always_inline]] void interiorGradient(std::size_t i, double g[3]) const {
-        g[0] = (at(i + 1) - at(i - 1)) * halfInverseSpacing_[0];
-        g[1] = (at(i + strideY_) - at(i - strideY_)) * halfInverseSpacing_[1];
-        g[2] = (at(i + strideZ_) - at(i - strideZ_)) * halfInverseSpacing_[2];
+        g[0] = difference(i + 1, i - 1) * halfInverseSpacing_[0];
+        g[1] = difference(i + strideY_, i - strideY_) * halfInverseSpacing_[1];
+        g[2] = difference(i + strideZ_, i - strideZ_) * halfInverseSpacing_[2];
     }
 
     void borderGradient(int x, int y, int z, double g[3]) const {
@@ -158,9 +153,43 @@ public:
     }
 
 private:
-    // The vertex on the edge from sample a = (x, y, z) to sample b along `axis`,
+    template <int Axis>
+    std::size_t stride() const {
+        return Axis == 0 ? 1 : Axis == 1 ? strideY_ : strideZ_;
+    }
+
+    // at(hi) - at(lo), exactly: samples of up to 32 bits are subtracted as
+    // integers (their difference, below 2^33, is a double without rounding, as
+    // the difference of the two doubles is), which saves converting both.
+    [[gnu::always_inline]] double difference(std::size_t hi, std::size_t lo) const {
+        if constexpr (std::is_integral_v<T> && sizeof(T) <= 4) {
+            return static_cast<double>(std::int64_t(samples_[hi]) - std::int64_t(samples_[lo]));
+        } else {
+            return at(hi) - at(lo);
+        }
+    }
+
+    template <int Axis>
+    void edgeVertexAlong(int x, int y, int z, Vertex& v) const {
+        const std::size_t a = index(x, y, z);
+        const std::size_t b = a + stride<Axis>();
+        const int ex = x + (Axis == 0), ey = y + (Axis == 1), ez = z + (Axis == 2);
+        double ga[3], gb[3];
+        if (x > 0 && y > 0 && z > 0 && ex + 1 < nx_ && ey + 1 < ny_ && ez + 1 < nz_) {
+            interiorGradient(a, ga);
+            interiorGradient(b, gb);
+        } else {
+            gradient(x, y, z, ga);
+            gradient(ex, ey, ez, gb);
+        }
+        vertexOnEdge<Axis>(x, y, z, a, b, ga, gb, v);
+    }
+
+    // The vertex on the edge from sample a = (x, y, z) to sample b along `Axis`,
     // given the gradients at both ends: the one place vertex floats are made.
-    [[gnu::always_inline]] void vertexOnEdge(int x, int y, int z, int axis, std::size_t a, std::size_t b, const double ga[3], const double gb[3], Vertex& v) const {
+    template <int Axis>
+    [[gnu::always_inline]] void vertexOnEdge(int x, int y, int z, std::size_t a, std::size_t b, const double ga[3], const double gb[3], Vertex& v) const {
+        constexpr int axis = Axis;
         const double va = at(a), vb = at(b);
         double t = (iso_ - va) / (vb - va);
         if (!(t >= 0.0 && t <= 1.0)) t = 0.5;  // non-finite samples: keep the vertex on the edge
