@@ -181,8 +181,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
                 runSurface = k;
             }
             float doubledArea, sixfoldVolume;
-            detail::TriangleMeasure::measure(mesh.vertices[v[0]].position, mesh.vertices[v[1]].position, mesh.vertices[v[2]].position,
-                                             doubledArea, sixfoldVolume);
+            detail::TriangleMeasure::measure(mesh.vertices[v[0]], mesh.vertices[v[1]], mesh.vertices[v[2]], doubledArea, sixfoldVolume);
             runArea += double(doubledArea);
             runVolume += double(sixfoldVolume);
             if (k == largest && !compact) continue;  // a lone surface's triangles stay as they are

@@ -5,6 +5,10 @@
 #include <cstdint>
 #include <limits>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "flat_hash.h"
 #include "isotrack/mesh.h"
 #include "isotrack/tracking.h"
@@ -48,7 +52,7 @@ struct TriangleMeasure {
         sixfoldVolume += other.sixfoldVolume;
     }
 
-    void add(const float* a, const float* b, const float* c) {
+    void add(const Vertex& a, const Vertex& b, const Vertex& c) {
         float area, volume;
         measure(a, b, c, area, volume);
         doubleArea += double(area);
@@ -56,13 +60,35 @@ struct TriangleMeasure {
     }
     // One triangle's twice area and six times signed volume, for callers that
     // keep their sums in registers of their own.
-    static void measure(const float* a, const float* b, const float* c, float& doubledArea, float& sixfoldSignedVolume) {
-        const float u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-        const float v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    static void measure(const Vertex& a, const Vertex& b, const Vertex& c, float& doubledArea, float& sixfoldSignedVolume) {
+#if defined(__SSE2__)
+        // A corner's x, y, z and, unused, its normal's x: the same float
+        // operations in the same order as below, in half the instructions.
+        const __m128 pa = _mm_loadu_ps(a.position), pb = _mm_loadu_ps(b.position), pc = _mm_loadu_ps(c.position);
+        const __m128 u = _mm_sub_ps(pb, pa), v = _mm_sub_ps(pc, pa);
+        const __m128 n = _mm_sub_ps(_mm_mul_ps(yzx(u), zxy(v)), _mm_mul_ps(zxy(u), yzx(v)));
+        doubledArea = std::sqrt(sum3(_mm_mul_ps(n, n)));
+        sixfoldSignedVolume = sum3(_mm_mul_ps(pa, n));
+#else
+        const float* pa = a.position;
+        const float u[3] = {b.position[0] - pa[0], b.position[1] - pa[1], b.position[2] - pa[2]};
+        const float v[3] = {c.position[0] - pa[0], c.position[1] - pa[1], c.position[2] - pa[2]};
         const float n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
         doubledArea = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-        sixfoldSignedVolume = a[0] * n[0] + a[1] * n[1] + a[2] * n[2];
+        sixfoldSignedVolume = pa[0] * n[0] + pa[1] * n[1] + pa[2] * n[2];
+#endif
     }
+
+private:
+#if defined(__SSE2__)
+    static __m128 yzx(__m128 p) { return _mm_shuffle_ps(p, p, _MM_SHUFFLE(3, 0, 2, 1)); }
+    static __m128 zxy(__m128 p) { return _mm_shuffle_ps(p, p, _MM_SHUFFLE(3, 1, 0, 2)); }
+    // (p0 + p1) + p2.
+    static float sum3(__m128 p) {
+        const __m128 p1 = _mm_shuffle_ps(p, p, _MM_SHUFFLE(1, 1, 1, 1));
+        return _mm_cvtss_f32(_mm_add_ss(_mm_add_ss(p, p1), _mm_movehl_ps(p, p)));
+    }
+#endif
 };
 
 // A surface's figures, accumulated vertex by vertex and triangle by triangle.
@@ -83,7 +109,7 @@ struct SurfaceMeasure {
         }
     }
     void addTriangle(const Vertex* vertices, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-        triangles.add(vertices[a].position, vertices[b].position, vertices[c].position);
+        triangles.add(vertices[a], vertices[b], vertices[c]);
     }
     // Adds what another part of the same surface measured.
     void merge(const SurfaceMeasure& other) {
