@@ -747,6 +747,21 @@ Surface walkWhole(const TrackWorker& worker, TrackState& state, TableKind table,
     return surface;
 }
 
+// Sizes `buffer` to `size` and returns null where its capacity allows; otherwise
+// sizes `fresh` instead (its pages possibly huge) and returns it, for the caller
+// to fill with the buffer's contents too.
+template <class T>
+Buffer<T>* sizeWhole(Buffer<T>& buffer, std::size_t size, Buffer<T>& fresh) {
+    if (size <= buffer.capacity()) {
+        buffer.resize(size);
+        return nullptr;
+    }
+    fresh.reserve(size);
+    detail::adviseHugePages(fresh.data(), size * sizeof(T));
+    fresh.resize(size);
+    return &fresh;
+}
+
 // Cell pieces a walk on several threads first walks on one (about a millisecond).
 constexpr std::size_t kCellsAlone = 8192;
 
@@ -789,34 +804,43 @@ Surface walkTogether(const Volume& volume, const TrackWorker& worker, const Grid
         firstVertex[t + 1] = firstVertex[t] + walkers[t].mesh.vertices.size();
         firstIndex[t + 1] = firstIndex[t] + walkers[t].mesh.indices.size();
     }
+    // The whole mesh goes in the first walker's buffers where they have room; a
+    // buffer without is replaced by a new one (its pages possibly huge), which
+    // takes the first walker's part too, copied in parallel with the others'.
     Mesh& mesh = walkers[0].mesh;
-    mesh.vertices.resize(firstVertex.back());
-    mesh.vertexEdges.resize(firstVertex.back());
-    mesh.indices.resize(firstIndex.back());
+    Mesh grown;
+    Buffer<Vertex>* const movedVertices = sizeWhole(mesh.vertices, firstVertex.back(), grown.vertices);
+    Buffer<PackedGridEdge>* const movedEdges = sizeWhole(mesh.vertexEdges, firstVertex.back(), grown.vertexEdges);
+    Buffer<std::uint32_t>* const movedIndices = sizeWhole(mesh.indices, firstIndex.back(), grown.indices);
+    Vertex* const vertices = movedVertices ? movedVertices->data() : mesh.vertices.data();
+    PackedGridEdge* const edges = movedEdges ? movedEdges->data() : mesh.vertexEdges.data();
+    std::uint32_t* const indices = movedIndices ? movedIndices->data() : mesh.indices.data();
     const std::uint32_t indexMask = walkers[0].indexMask;
     auto finalIndex = [&](std::uint32_t id) { return static_cast<std::uint32_t>(firstVertex[id >> idShift] + (id & indexMask)); };
+    // Each part in `threads` slices, so that every thread has a share of the copying.
     // The first walker's ids are final but for the corners it took from other
-    // walkers (its unmeasured triangles); the other walkers' parts are copied,
-    // each in `threads` slices, so that every thread has a share of the copying.
+    // walkers (its unmeasured triangles), set once every part is in place.
     const int slices = threads;
-    detail::parallelFor(1 + (threads - 1) * slices, threads, [&](int task) {
-        if (task == 0) {
-            for (const std::size_t first : walkers[0].unmeasured) {
-                for (std::size_t k = first; k < first + 3; ++k) mesh.indices[k] = finalIndex(mesh.indices[k]);
-            }
-            return;
-        }
-        const std::size_t t = std::size_t(1 + (task - 1) / slices), slice = std::size_t((task - 1) % slices);
+    detail::parallelFor(threads * slices, threads, [&](int task) {
+        const std::size_t t = std::size_t(task / slices), slice = std::size_t(task % slices);
         const Mesh& part = walkers[t].mesh;
-        const std::size_t vBegin = part.vertices.size() * slice / std::size_t(slices), vEnd = part.vertices.size() * (slice + 1) / std::size_t(slices);
-        const std::size_t iBegin = part.indices.size() * slice / std::size_t(slices), iEnd = part.indices.size() * (slice + 1) / std::size_t(slices);
-        std::copy(part.vertices.begin() + std::ptrdiff_t(vBegin), part.vertices.begin() + std::ptrdiff_t(vEnd),
-                  mesh.vertices.begin() + std::ptrdiff_t(firstVertex[t] + vBegin));
-        std::copy(part.vertexEdges.begin() + std::ptrdiff_t(vBegin), part.vertexEdges.begin() + std::ptrdiff_t(vEnd),
-                  mesh.vertexEdges.begin() + std::ptrdiff_t(firstVertex[t] + vBegin));
-        std::uint32_t* to = mesh.indices.data() + firstIndex[t];
-        for (std::size_t i = iBegin; i < iEnd; ++i) to[i] = finalIndex(part.indices[i]);
+        const std::size_t vertexCount = firstVertex[t + 1] - firstVertex[t], indexCount = firstIndex[t + 1] - firstIndex[t];
+        const std::size_t vBegin = vertexCount * slice / std::size_t(slices), vEnd = vertexCount * (slice + 1) / std::size_t(slices);
+        const std::size_t iBegin = indexCount * slice / std::size_t(slices), iEnd = indexCount * (slice + 1) / std::size_t(slices);
+        if (t > 0 || movedVertices) std::copy(part.vertices.data() + vBegin, part.vertices.data() + vEnd, vertices + firstVertex[t] + vBegin);
+        if (t > 0 || movedEdges) std::copy(part.vertexEdges.data() + vBegin, part.vertexEdges.data() + vEnd, edges + firstVertex[t] + vBegin);
+        if (t > 0) {
+            for (std::size_t i = iBegin; i < iEnd; ++i) indices[firstIndex[t] + i] = finalIndex(part.indices[i]);
+        } else if (movedIndices) {
+            std::copy(part.indices.data() + iBegin, part.indices.data() + iEnd, indices + iBegin);
+        }
     });
+    if (movedVertices) mesh.vertices.swap(*movedVertices);
+    if (movedEdges) mesh.vertexEdges.swap(*movedEdges);
+    if (movedIndices) mesh.indices.swap(*movedIndices);
+    for (const std::size_t first : walkers[0].unmeasured) {
+        for (std::size_t k = first; k < first + 3; ++k) mesh.indices[k] = finalIndex(mesh.indices[k]);
+    }
 
     // The first walker takes the others' figures, and measures the triangles
     // between regions now that every corner is in place.
