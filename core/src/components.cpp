@@ -61,6 +61,16 @@ std::vector<Range> ranges(const std::vector<detail::MarchedChunk>& chunks, int t
     return out;
 }
 
+// Adds a run of one surface's vertices, kept in registers by the caller (values,
+// not references: a lambda capturing them would keep them in memory).
+void endRun(detail::SurfaceMeasure& measure, float x0, float y0, float z0, float x1, float y1, float z1, bool border) {
+    detail::SurfaceMeasure run;
+    run.boundsMin[0] = x0, run.boundsMin[1] = y0, run.boundsMin[2] = z0;
+    run.boundsMax[0] = x1, run.boundsMax[1] = y1, run.boundsMax[2] = z1;
+    run.touchesBorder = border;
+    measure.merge(run);
+}
+
 }  // namespace
 
 std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableKind table, int threads) {
@@ -204,24 +214,38 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         }
         if (runSurface != kNone) share[runSurface].measure.triangles.merge({runArea, runVolume});
     });
-    // Vertices out to their surfaces, measured on the way.
+    // Vertices out to their surfaces, measured on the way; a run of one surface's
+    // vertices keeps its bounds and border flag in registers (locals, as above).
     forParts([&](const Range& part, std::size_t r) {
         std::vector<Share>& share = shares[r];
         std::size_t to = part.vertexBegin;
+        std::uint32_t runSurface = kNone;
+        float x0 = 0, y0 = 0, z0 = 0, x1 = 0, y1 = 0, z1 = 0;
+        bool border = false;
         for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
             const std::uint32_t k = component[v];
-            Share& s = share[k];
             const Vertex& vertex = mesh.vertices[v];
-            s.measure.addVertex(vertex, mesh.vertexEdges[v], dims);
+            const PackedGridEdge edge = mesh.vertexEdges[v];
+            const float x = vertex.position[0], y = vertex.position[1], z = vertex.position[2];
+            if (k != runSurface) {
+                if (runSurface != kNone) endRun(share[runSurface].measure, x0, y0, z0, x1, y1, z1, border);
+                runSurface = k;
+                x0 = x1 = x, y0 = y1 = y, z0 = z1 = z;
+                border = share[k].measure.touchesBorder;  // known already: no test per vertex
+            }
+            x0 = std::min(x0, x), y0 = std::min(y0, y), z0 = std::min(z0, z);
+            x1 = std::max(x1, x), y1 = std::max(y1, y), z1 = std::max(z1, z);
+            border = border || detail::edgeOnVolumeBorder(edge, dims);
             if (k != largest) {
-                const std::size_t at = local[v] + s.vertexBase;
+                const std::size_t at = local[v] + share[k].vertexBase;
                 surfaces[k].mesh.vertices[at] = vertex;
-                surfaces[k].mesh.vertexEdges[at] = mesh.vertexEdges[v];
+                surfaces[k].mesh.vertexEdges[at] = edge;
             } else if (compact) {
                 mesh.vertices[to] = vertex;
-                mesh.vertexEdges[to++] = mesh.vertexEdges[v];
+                mesh.vertexEdges[to++] = edge;
             }
         }
+        if (runSurface != kNone) endRun(share[runSurface].measure, x0, y0, z0, x1, y1, z1, border);
     });
     if (compact) {
         for (std::size_t r = 1; r < parts.size(); ++r) {
