@@ -329,9 +329,27 @@ private:
         return triangles;
     }
 
+    // The number of places where two runs of 0/1 flags differ. A word's XOR has
+    // a 1 in each byte that differs; up to 255 words are summed bytewise (no
+    // byte carries), then the bytes are added up: a few instructions per 8 flags,
+    // where counting byte by byte widened every byte to 64 bits.
     static std::size_t differences(const std::uint8_t* a, const std::uint8_t* b, std::size_t n) {
-        std::size_t count = 0;
-        for (std::size_t i = 0; i < n; ++i) count += a[i] != b[i];
+        constexpr std::uint64_t kEvenBytes = 0x00FF00FF00FF00FFull, kShorts = 0x0001000100010001ull;
+        std::size_t count = 0, i = 0;
+        const std::size_t words = n & ~std::size_t(7);
+        while (i < words) {
+            const std::size_t end = std::min(words, i + 8 * 255);
+            std::uint64_t sum = 0;
+            for (; i < end; i += 8) {
+                std::uint64_t x, y;
+                std::memcpy(&x, a + i, 8);
+                std::memcpy(&y, b + i, 8);
+                sum += x ^ y;
+            }
+            const std::uint64_t pairs = (sum & kEvenBytes) + (sum >> 8 & kEvenBytes);  // four 16-bit sums
+            count += std::size_t((pairs * kShorts) >> 48);
+        }
+        for (; i < n; ++i) count += a[i] != b[i];
         return count;
     }
 

@@ -109,6 +109,26 @@ TEST_CASE("each crossed grid edge yields exactly one vertex, on that edge", "[co
     }
 }
 
+TEST_CASE("rows longer than 2040 samples, crossed at every sample, count every crossed edge", "[core][mc]") {
+    // Crossings are counted 8 flags to a word, 255 words at a time: rows of 2100 samples in
+    // which every z-edge between the slices is crossed fill those sums to the brim, twice.
+    const int nx = 2100;
+    Volume volume({nx, 2, 3}, ScalarType::UInt8);
+    for (int z = 0; z < 3; ++z)
+        for (int y = 0; y < 2; ++y)
+            for (int x = 0; x < nx; ++x) {
+                const bool above = (z == 1) != (x == 0);  // one change per row keeps every row's span open
+                volume.setValue(x, y, z, above ? 1.0 : 0.0);
+            }
+    REQUIRE(countCrossedEdges(volume, 0.5) == std::size_t(4 * nx + 6));  // every z-edge, one x-edge per row
+    for (int threads : {1, 2}) {
+        INFO(threads << " threads");
+        const Mesh mesh = marchingCubes(volume, 0.5, TableKind::Consistent, threads);
+        CHECK(mesh.vertices.size() == countCrossedEdges(volume, 0.5));
+        CHECK(isotrack::testing::vertexEdgeSet(mesh, volume.dims()).size() == mesh.vertices.size());
+    }
+}
+
 TEST_CASE("the consistent table is watertight on white noise; the classic one is not", "[core][mc]") {
     const Volume volume = makeField({"noise", 48});
     requireWatertight(marchingCubes(volume, 0.5, TableKind::Consistent), volume, 0.5);
