@@ -401,11 +401,14 @@ private:
             const int triangles = triangleCount_[config];
             const std::size_t at = chunk_.indexBase + chunk_.indexCursor;
             std::uint32_t* out = mesh_.indices.data() + at;
+            // Placeholders for the next chunk's slice come only in a seam slab.
             for (int t = 0; t < triangles; ++t) {
                 const auto& tri = cased.triangles[t];
-                for (int k = 0; k < 3; ++k) {
-                    out[3 * t + k] = ids[tri[k]];
-                    if (ids[tri[k]] & kSeamBit) chunk_.seamIndices.push_back(at + std::size_t(3 * t + k));
+                for (int k = 0; k < 3; ++k) out[3 * t + k] = ids[tri[k]];
+            }
+            if (seamSlab_) {
+                for (int c = 0; c < 3 * triangles; ++c) {
+                    if (out[c] & kSeamBit) chunk_.seamIndices.push_back(at + std::size_t(c));
                 }
             }
             chunk_.indexCursor += 3 * std::size_t(triangles);
