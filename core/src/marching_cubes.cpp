@@ -197,8 +197,12 @@ public:
             restoreSlice(z + 1, top);
             threshold_[top] = static_cast<std::uint32_t>(chunk_.vertexBase + chunk_.vertexCursor);
             verticalThreshold_ = threshold_[top];
-            seamSlab_ = !chunk_.last && z + 1 == chunk_.zEnd;
-            for (int y = 0; y + 1 < ny_; ++y) marchRow(y, z, bottom, top);
+            // Only a seam slab (the last of a chunk but the last) meets the next chunk's slice.
+            if (!chunk_.last && z + 1 == chunk_.zEnd) {
+                for (int y = 0; y + 1 < ny_; ++y) marchRow<true>(y, z, bottom, top);
+            } else {
+                for (int y = 0; y + 1 < ny_; ++y) marchRow<false>(y, z, bottom, top);
+            }
             if (z == chunk_.zBegin) chunk_.firstSliceIds = planar_[bottom];
         }
         if (chunk_.vertexCursor != chunk_.vertexCount || chunk_.indexCursor != 3 * chunk_.triangleCount) {
@@ -382,6 +386,7 @@ private:
         return count;
     }
 
+    template <bool SeamSlab>
     void marchRow(int y, int z, int bottom, int top) {
         int begin, end;
         if (!rowRange(y, bottom, top, begin, end)) return;
@@ -393,7 +398,7 @@ private:
             const std::size_t cell = row + std::size_t(x);
             for (unsigned mask = slots_.crossed[config]; mask != 0; mask &= mask - 1) {
                 const int e = __builtin_ctz(mask);
-                ids[e] = vertexOnEdge(x, y, z, cell, e, bottom, top);
+                ids[e] = vertexOnEdge<SeamSlab>(x, y, z, cell, e, bottom, top);
             }
             const CaseContinuation& cased = table_[config];
             if (markPieces_) markPieceStarts(cased, chunk_.indexCursor / 3);
@@ -406,7 +411,7 @@ private:
                 const auto& tri = cased.triangles[t];
                 for (int k = 0; k < 3; ++k) out[3 * t + k] = ids[tri[k]];
             }
-            if (seamSlab_) {
+            if (SeamSlab) {
                 for (int c = 0; c < 3 * triangles; ++c) {
                     if (out[c] & kSeamBit) chunk_.seamIndices.push_back(at + std::size_t(c));
                 }
@@ -441,6 +446,7 @@ private:
         }
     }
 
+    template <bool SeamSlab>
     std::uint32_t vertexOnEdge(int x, int y, int z, std::size_t cell, int edge, int bottom, int top) {
         const int axis = slots_.axis[edge];
         const std::size_t at = cell + slots_.offset[edge];
@@ -451,7 +457,7 @@ private:
             threshold = verticalThreshold_;
         } else {
             const int s = slots_.dz[edge] ? top : bottom;
-            if (seamSlab_ && slots_.dz[edge]) return kSeamBit | static_cast<std::uint32_t>(std::size_t(axis) * sliceSize_ + at);
+            if (SeamSlab && slots_.dz[edge]) return kSeamBit | static_cast<std::uint32_t>(std::size_t(axis) * sliceSize_ + at);
             slot = &planar_[s][std::size_t(axis) * sliceSize_ + at];
             threshold = threshold_[s];
         }
@@ -482,7 +488,6 @@ private:
     std::array<std::uint8_t, 256> triangleCount_{};
     std::array<std::uint32_t, 2> threshold_{};
     std::uint32_t verticalThreshold_ = 0;
-    bool seamSlab_ = false;
 };
 
 // Gives each chunk its ranges of the final buffers and sizes them once.
