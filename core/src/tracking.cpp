@@ -65,24 +65,44 @@ struct Entry {
 // surface grows, and nothing is ever moved to compact it.
 class PieceQueue {
 public:
-    bool empty() const { return head_ == tail_; }
-    void push(const Entry& entry) {
-        if (tail_ - head_ == ring_.size()) grow();
-        ring_[tail_++ & (ring_.size() - 1)] = entry;
+    PieceQueue() = default;
+    PieceQueue(PieceQueue&& other) noexcept { swap(other); }
+    PieceQueue& operator=(PieceQueue&& other) noexcept {
+        swap(other);
+        return *this;
     }
-    Entry pop() { return ring_[head_++ & (ring_.size() - 1)]; }
-    std::size_t capacity() const { return ring_.size(); }
+    friend void swap(PieceQueue& a, PieceQueue& b) noexcept { a.swap(b); }
+
+    bool empty() const { return head_ == tail_; }
+    // Inlined where it is called: a push per exit is too frequent for a call.
+    [[gnu::always_inline]] void push(const Entry& entry) {
+        if (tail_ - head_ == size_) grow();
+        data_[tail_++ & (size_ - 1)] = entry;
+    }
+    Entry pop() { return data_[head_++ & (size_ - 1)]; }
+    std::size_t capacity() const { return size_; }
 
 private:
-    void grow() {
-        std::vector<Entry> larger(std::max<std::size_t>(2 * ring_.size(), 256));
-        for (std::size_t i = head_; i != tail_; ++i) larger[i - head_] = ring_[i & (ring_.size() - 1)];
+    void swap(PieceQueue& other) noexcept {
+        ring_.swap(other.ring_);
+        std::swap(data_, other.data_);
+        std::swap(size_, other.size_);
+        std::swap(head_, other.head_);
+        std::swap(tail_, other.tail_);
+    }
+    [[gnu::noinline]] void grow() {
+        std::vector<Entry> larger(std::max<std::size_t>(2 * size_, 256));
+        for (std::size_t i = head_; i != tail_; ++i) larger[i - head_] = data_[i & (size_ - 1)];
         tail_ -= head_;
         head_ = 0;
         ring_.swap(larger);
+        data_ = ring_.data();
+        size_ = ring_.size();
     }
 
     std::vector<Entry> ring_;  // a power-of-two size
+    Entry* data_ = nullptr;    // ring_'s, and its size: kept at hand for push and pop
+    std::size_t size_ = 0;
     std::size_t head_ = 0, tail_ = 0;
 };
 
