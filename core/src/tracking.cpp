@@ -424,6 +424,15 @@ private:
         MeshAppender out(w.mesh);
         std::size_t visited = 0;
         std::vector<Exchange::Message> received;
+        // The triangles' measure in locals, added to the walker's at the end (in
+        // the walker, the sums went through memory, a store and a load a triangle).
+        double doubledArea = 0.0, sixfoldVolume = 0.0;
+        auto measure = [&doubledArea, &sixfoldVolume](const Vertex* vertices, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+            float area, volume;
+            detail::TriangleMeasure::measure(vertices[a], vertices[b], vertices[c], area, volume);
+            doubledArea += double(area);
+            sixfoldVolume += double(volume);
+        };
         while (!w.queue.empty() && visited < cellBudget) {
             if constexpr (Shared) {
                 if ((visited & 63) == 0) {
@@ -456,13 +465,13 @@ private:
                 for (int k = 0; k < walk.cornerCount; k += 3) {
                     const std::uint32_t a = indices[k], b = indices[k + 1], c = indices[k + 2];
                     if ((((a ^ w.idBase) | (b ^ w.idBase) | (c ^ w.idBase)) & tagMask) == 0) {
-                        w.measure.addTriangle(w.mesh.vertices.data(), a & w.indexMask, b & w.indexMask, c & w.indexMask);
+                        measure(w.mesh.vertices.data(), a & w.indexMask, b & w.indexMask, c & w.indexMask);
                     } else {
                         w.unmeasured.push_back(out.indices.size() - walk.cornerCount + std::size_t(k));
                     }
                 }
             } else {
-                for (int k = 0; k < walk.cornerCount; k += 3) w.measure.addTriangle(w.mesh.vertices.data(), indices[k], indices[k + 1], indices[k + 2]);
+                for (int k = 0; k < walk.cornerCount; k += 3) measure(w.mesh.vertices.data(), indices[k], indices[k + 1], indices[k + 2]);
             }
             const std::size_t sample = grid_.index(at[0], at[1], at[2]);
             for (int k = 0; k < walk.exitCount; ++k) {
@@ -485,6 +494,7 @@ private:
                 }
             }
         }
+        w.measure.triangles.merge({doubledArea, sixfoldVolume});
         w.cellsVisited += visited;
         return visited;
     }
