@@ -1,10 +1,11 @@
 // Every surface at once: the exhaustive pass, labelled, then split.
 //
 // extractAllSurfaces runs the (parallel) exhaustive pass, which labels the
-// connected surfaces on the way (labelled_march.h) and marks each cell piece's
-// first triangle. The mesh is then split in parallel over ranges of chunks: the
-// surfaces are numbered, each range counts its share of every surface's
-// vertices and triangles, which gives it its place in every surface's buffers,
+// connected surfaces on the way (labelled_march.h) and tallies each cell piece
+// and its triangles at one of its vertices. The mesh is then split in parallel
+// over ranges of chunks: the surfaces are numbered, each range counts its share
+// of every surface's vertices, triangles and cell pieces (one pass over its
+// vertices), which gives it its place in every surface's buffers,
 // and the triangles, then the vertices, are copied there and measured. The largest
 // surface is not copied but compacted in place, keeping the exhaustive pass's
 // buffers (and their pages, already touched). It yields
@@ -85,8 +86,9 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
     // Surfaces numbered in order of their roots (their first vertices): each
     // range lists its roots, and the lists one after the other are in order.
     // Then each vertex's root becomes its surface's number (`component`, in
-    // place) and the vertex gets its index in its range's share of that surface
-    // (`local`); then each range counts its share of every surface's triangles.
+    // place), the vertex gets its index in its range's share of that surface
+    // (`local`), and the share adds up the cell pieces and triangles tallied at
+    // its vertices.
     std::vector<std::vector<std::uint32_t>> rootsOf(parts.size());
     forParts([&](const Range& part, std::size_t r) {
         for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
@@ -106,37 +108,21 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
     // surface and counters stay in registers.
     forParts([&](const Range& part, std::size_t r) {
         std::vector<Share>& share = shares[r];
-        std::uint32_t lastRoot = kNone, k = 0, counter = 0;
+        std::uint32_t lastRoot = kNone, k = 0, counter = 0, triangles = 0, pieces = 0;
         for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
             if (component[v] != lastRoot) {
-                if (lastRoot != kNone) share[k].vertices = counter;
+                if (lastRoot != kNone) share[k].vertices = counter, share[k].triangles = triangles, share[k].pieces = pieces;
                 lastRoot = component[v];
                 k = numberOf(lastRoot);
-                counter = share[k].vertices;
+                counter = share[k].vertices, triangles = share[k].triangles, pieces = share[k].pieces;
             }
             component[v] = k;
             local[v] = counter++;
+            const unsigned tally = labelled.tally[v];
+            triangles += tally & detail::kTalliedTriangles;
+            pieces += tally / detail::kTalliedPiece;
         }
-        if (lastRoot != kNone) share[k].vertices = counter;
-    });
-    forParts([&](const Range& part, std::size_t r) {
-        std::vector<Share>& share = shares[r];
-        std::uint32_t k = kNone, triangles = 0, pieces = 0;
-        for (std::size_t c = part.chunkBegin; c < part.chunkEnd; ++c) {
-            const detail::MarchedChunk& chunk = labelled.chunks[c];
-            for (std::size_t t = chunk.triangleBegin; t < chunk.triangleEnd; ++t) {
-                const std::uint32_t surface = component[mesh.indices[3 * t]];
-                if (surface != k) {
-                    if (k != kNone) share[k].triangles += triangles, share[k].pieces += pieces;
-                    k = surface;
-                    triangles = pieces = 0;
-                }
-                const std::size_t bit = t - chunk.triangleBegin;
-                ++triangles;
-                pieces += chunk.pieceStarts[bit / 8] >> (bit % 8) & 1u;
-            }
-        }
-        if (k != kNone) share[k].triangles += triangles, share[k].pieces += pieces;
+        if (lastRoot != kNone) share[k].vertices = counter, share[k].triangles = triangles, share[k].pieces = pieces;
     });
     std::vector<Surface> surfaces(count);
     std::size_t largest = 0;

@@ -17,13 +17,17 @@ namespace isotrack::detail {
 struct MarchedChunk {
     std::size_t vertexBegin = 0, vertexEnd = 0;
     std::size_t triangleBegin = 0, triangleEnd = 0;
-    std::vector<std::uint8_t> pieceStarts;  // one bit per triangle of the chunk (LSB first), set on each cell piece's first
 };
+
+// A vertex's tally: kTalliedPiece per cell piece counted at it, plus the pieces'
+// triangles (a vertex is in at most 4 cell pieces, each of at most 5 triangles).
+constexpr unsigned kTalliedPiece = 32, kTalliedTriangles = kTalliedPiece - 1;
 
 struct LabelledMesh {
     Mesh mesh;
     std::vector<MarchedChunk> chunks;
-    Buffer<std::uint32_t> root;             // per vertex, the smallest vertex id of its connected surface
+    Buffer<std::uint32_t> root;   // per vertex, the smallest vertex id of its connected surface
+    Buffer<std::uint8_t> tally;   // per vertex, the cell pieces and triangles counted at it (kTalliedPiece)
 };
 
 LabelledMesh marchLabelled(const Volume& volume, double iso, TableKind table, int threads);

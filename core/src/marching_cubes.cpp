@@ -24,8 +24,9 @@
 //
 // Labelled (for extractAllSurfaces), the writing pass also joins the vertices of
 // each cell piece in a union-find over the chunk's own vertex range, while they
-// are in cache; stitch joins across seams, and a last parallel pass gives each
-// vertex its surface's root.
+// are in cache, and tallies the piece and its triangles at its first vertex;
+// stitch joins across seams, and a last parallel pass gives each vertex its
+// surface's root.
 #include "isotrack/marching_cubes.h"
 
 #include <algorithm>
@@ -145,8 +146,8 @@ class ChunkMarcher {
 public:
     // With `parent`, the writing pass labels surfaces in it (one entry per vertex of the mesh).
     ChunkMarcher(const detail::SampleGrid<T>& grid, const std::array<CaseContinuation, 256>& table,
-                 const EdgeSlots& slots, bool markPieces, std::uint32_t* parent, Chunk& chunk, Mesh& mesh)
-        : grid_(grid), table_(table), slots_(slots), markPieces_(markPieces), parent_(parent), chunk_(chunk), mesh_(mesh), nx_(grid.nx()), ny_(grid.ny()),
+                 const EdgeSlots& slots, bool markPieces, std::uint32_t* parent, std::uint8_t* tally, Chunk& chunk, Mesh& mesh)
+        : grid_(grid), table_(table), slots_(slots), markPieces_(markPieces), parent_(parent), tally_(tally), chunk_(chunk), mesh_(mesh), nx_(grid.nx()), ny_(grid.ny()),
           sliceSize_(std::size_t(grid.nx()) * std::size_t(grid.ny())), rowBytes_(std::size_t(grid.nx() + 7) / 8) {
         for (int s = 0; s < 2; ++s) {
             flags_[s].assign(sliceSize_ + 8, 0);  // rows are packed and unpacked 8 flags at a time
@@ -420,7 +421,9 @@ private:
         }
     }
 
-    // Joins the vertices of each piece of the cell, a connected patch of surface.
+    // Joins the vertices of each piece of the cell, a connected patch of surface,
+    // and tallies the piece and its triangles at its first vertex of this chunk
+    // (every piece has one: no piece crosses only edges of the next chunk's slice).
     // Placeholders for the next chunk's slice are joined in stitch, through their triangles.
     void unitePieces(const CaseContinuation& cased, const std::array<std::uint32_t, 12>& ids) {
         for (int p = 0; p < cased.pieceCount; ++p) {
@@ -431,6 +434,7 @@ private:
                 const std::uint32_t r = findRoot(parent_, id);
                 if (root == kNoVertex) {
                     root = r;
+                    tally_[id] = static_cast<std::uint8_t>(tally_[id] + detail::kTalliedPiece + cased.pieces[p].triangleCount);
                 } else if (r != root) {
                     root = linkRoots(parent_, root, r);
                 }
@@ -464,7 +468,7 @@ private:
         if (*slot != kNoVertex && *slot >= threshold) return *slot;
         const std::size_t id = chunk_.vertexBase + chunk_.vertexCursor++;
         *slot = static_cast<std::uint32_t>(id);
-        if (parent_) parent_[id] = *slot;
+        if (parent_) parent_[id] = *slot, tally_[id] = 0;
         const auto& o = cube::edgeOrigin(edge);
         grid_.edgeVertex(x + o[0], y + o[1], z + o[2], axis, mesh_.vertices[id]);
         mesh_.vertexEdges[id] = GridEdge{x + o[0], y + o[1], z + o[2], axis};
@@ -476,6 +480,7 @@ private:
     const EdgeSlots& slots_;
     const bool markPieces_;
     std::uint32_t* const parent_;
+    std::uint8_t* const tally_;
     Chunk& chunk_;
     Mesh& mesh_;
     const int nx_, ny_;
@@ -527,10 +532,11 @@ void stitch(std::vector<Chunk>& chunks, Mesh& mesh, std::uint32_t* parent) {
 }
 
 
-// The exhaustive pass on `threads` threads; labels surfaces in *parent (resized
-// to one entry per vertex) when given, and marks piece starts in each chunk when asked.
+// The exhaustive pass on `threads` threads; labels surfaces in *parent and tallies
+// cell pieces in *tally (both resized to one entry per vertex) when given, and
+// marks piece starts in each chunk when asked.
 std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int threads, Mesh& mesh,
-                         Buffer<std::uint32_t>* parent, bool markPieces) {
+                         Buffer<std::uint32_t>* parent, Buffer<std::uint8_t>* tally, bool markPieces) {
     const Dims& n = volume.dims();
     if (n[0] < 2 || n[1] < 2 || n[2] < 2) return {};
     const int slabs = n[2] - 1;
@@ -550,13 +556,14 @@ std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int 
         const detail::SampleGrid<T> grid(volume, samples, iso);
         const bool mark = markPieces;
         detail::parallelFor(chunkCount, threads, [&](int c) {
-            ChunkMarcher<T>(grid, continuation, slots, mark, nullptr, chunks[std::size_t(c)], mesh).count();
+            ChunkMarcher<T>(grid, continuation, slots, mark, nullptr, nullptr, chunks[std::size_t(c)], mesh).count();
         });
         allocate(chunks, mesh);
-        if (parent) parent->resize(mesh.vertices.size());
+        if (parent) parent->resize(mesh.vertices.size()), tally->resize(mesh.vertices.size());
         std::uint32_t* parents = parent ? parent->data() : nullptr;
+        std::uint8_t* tallies = parent ? tally->data() : nullptr;
         detail::parallelFor(chunkCount, threads, [&](int c) {
-            ChunkMarcher<T>(grid, continuation, slots, mark, parents, chunks[std::size_t(c)], mesh).run();
+            ChunkMarcher<T>(grid, continuation, slots, mark, parents, tallies, chunks[std::size_t(c)], mesh).run();
         });
     });
     stitch(chunks, mesh, parent ? parent->data() : nullptr);
@@ -567,7 +574,7 @@ std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int 
 
 Mesh marchingCubes(const Volume& volume, double iso, TableKind table, int threads, std::vector<std::uint8_t>* pieceStarts) {
     Mesh mesh;
-    const std::vector<Chunk> chunks = march(volume, iso, table, threads, mesh, nullptr, pieceStarts != nullptr);
+    const std::vector<Chunk> chunks = march(volume, iso, table, threads, mesh, nullptr, nullptr, pieceStarts != nullptr);
     if (pieceStarts) {
         // The chunks' bits, one after the other.
         pieceStarts->assign(mesh.indices.size() / 3 / 8 + 1, 0);
@@ -589,10 +596,9 @@ namespace detail {
 LabelledMesh marchLabelled(const Volume& volume, double iso, TableKind table, int threads) {
     LabelledMesh out;
     Buffer<std::uint32_t> parent;
-    std::vector<Chunk> chunks = march(volume, iso, table, threads, out.mesh, &parent, true);
+    std::vector<Chunk> chunks = march(volume, iso, table, threads, out.mesh, &parent, &out.tally, false);
     for (Chunk& chunk : chunks) {
-        out.chunks.push_back({chunk.vertexBase, chunk.vertexBase + chunk.vertexCount, chunk.indexBase / 3,
-                              chunk.indexBase / 3 + chunk.triangleCount, std::move(chunk.pieceStarts)});
+        out.chunks.push_back({chunk.vertexBase, chunk.vertexBase + chunk.vertexCount, chunk.indexBase / 3, chunk.indexBase / 3 + chunk.triangleCount});
     }
     // Every vertex's root, read without compressing paths so that chunks can run at once.
     out.root.resize(parent.size());

@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "isotrack/continuation.h"
 #include "isotrack/cube.h"
 #include "isotrack/tables.h"
 
@@ -283,4 +284,17 @@ TEST_CASE("the classic table differs from VTK's grouping only on complemented am
         CHECK(table.origin(std::uint8_t(c)).complemented);
     }
     CHECK(differing > 0);
+}
+
+TEST_CASE("a cell piece has at most 5 triangles, so the 4 pieces around a vertex have at most 20", "[core][tables]") {
+    // Every surface's pieces and triangles are tallied per vertex in a byte, with
+    // 5 bits for the triangles of the at most 4 pieces (one per cell around its edge).
+    for (const TableKind kind : {TableKind::Consistent, TableKind::Classic}) {
+        int most = 0;
+        for (const CaseContinuation& cased : continuationTable(kind)) {
+            for (int p = 0; p < cased.pieceCount; ++p) most = std::max<int>(most, cased.pieces[std::size_t(p)].triangleCount);
+        }
+        CHECK(most <= 5);
+        CHECK(4 * most < 32);
+    }
 }
