@@ -71,7 +71,6 @@ public:
         swap(other);
         return *this;
     }
-    friend void swap(PieceQueue& a, PieceQueue& b) noexcept { a.swap(b); }
 
     bool empty() const { return head_ == tail_; }
     // Inlined where it is called: a push per exit is too frequent for a call.
