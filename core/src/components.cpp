@@ -164,8 +164,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         const std::uint32_t* localIndex = local.data();
         const std::size_t vertexEnd = part.vertexEnd;
         // Consecutive triangles mostly lie on one surface: measured in registers
-        // until the surface changes (plain locals: in a struct, the sums went
-        // through memory, a store and a load per triangle).
+        // until the surface changes.
         std::uint32_t runSurface = kNone;
         double runArea = 0.0, runVolume = 0.0;
         for (std::size_t t = part.triangleBegin; t < part.triangleEnd; ++t) {
@@ -176,10 +175,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
                 runArea = runVolume = 0.0;
                 runSurface = k;
             }
-            float doubledArea, sixfoldVolume;
-            detail::TriangleMeasure::measure(mesh.vertices[v[0]], mesh.vertices[v[1]], mesh.vertices[v[2]], doubledArea, sixfoldVolume);
-            runArea += double(doubledArea);
-            runVolume += double(sixfoldVolume);
+            detail::TriangleMeasure::addTo(runArea, runVolume, mesh.vertices[v[0]], mesh.vertices[v[1]], mesh.vertices[v[2]]);
             if (k == largest && !compact) continue;  // a lone surface's triangles stay as they are
             const std::uint32_t own = base[k], next = nextBase[k];
             // Read before writing: a compacted triangle may land on its own corners.

@@ -109,7 +109,6 @@ struct Chunk {
     std::size_t vertexCursor = 0, indexCursor = 0;  // written so far, relative to the bases
     std::vector<std::size_t> seamIndices;           // positions in the final indices holding placeholders
     std::vector<std::uint32_t> firstSliceIds;       // x- and y-edge ids of slice zBegin
-    std::vector<std::uint8_t> pieceStarts;          // optional: 1 bit per triangle, set on a piece's first
     // The counting pass's classification, kept for the writing pass so that it
     // does not stream the samples again: per slice zBegin..zEnd, each row's span
     // and, for rows that change, their flags packed 8 to a byte. Slices crossed so
@@ -146,8 +145,8 @@ class ChunkMarcher {
 public:
     // With `parent`, the writing pass labels surfaces in it (one entry per vertex of the mesh).
     ChunkMarcher(const detail::SampleGrid<T>& grid, const std::array<CaseContinuation, 256>& table,
-                 const EdgeSlots& slots, bool markPieces, std::uint32_t* parent, std::uint8_t* tally, Chunk& chunk, Mesh& mesh)
-        : grid_(grid), table_(table), slots_(slots), markPieces_(markPieces), parent_(parent), tally_(tally), chunk_(chunk), mesh_(mesh), nx_(grid.nx()), ny_(grid.ny()),
+                 const EdgeSlots& slots, std::uint32_t* parent, std::uint8_t* tally, Chunk& chunk, Mesh& mesh)
+        : grid_(grid), table_(table), slots_(slots), parent_(parent), tally_(tally), chunk_(chunk), mesh_(mesh), nx_(grid.nx()), ny_(grid.ny()),
           sliceSize_(std::size_t(grid.nx()) * std::size_t(grid.ny())), rowBytes_(std::size_t(grid.nx() + 7) / 8) {
         for (int s = 0; s < 2; ++s) {
             flags_[s].assign(sliceSize_ + 8, 0);  // rows are packed and unpacked 8 flags at a time
@@ -188,7 +187,6 @@ public:
 
     // Writes the chunk into mesh_, whose buffers already have their final size.
     void run() {
-        if (markPieces_) chunk_.pieceStarts.assign(chunk_.triangleCount / 8 + 1, 0);
         for (auto& planar : planar_) planar.assign(2 * sliceSize_, kNoVertex);  // vertex id caches, for writing only
         vertical_.assign(sliceSize_, kNoVertex);
         restoreSlice(chunk_.zBegin, 0);
@@ -402,7 +400,6 @@ private:
                 ids[e] = vertexOnEdge<SeamSlab>(x, y, z, cell, e, bottom, top);
             }
             const CaseContinuation& cased = table_[config];
-            if (markPieces_) markPieceStarts(cased, chunk_.indexCursor / 3);
             if (parent_) unitePieces(cased, ids);
             const int triangles = triangleCount_[config];
             const std::size_t at = chunk_.indexBase + chunk_.indexCursor;
@@ -442,14 +439,6 @@ private:
         }
     }
 
-    void markPieceStarts(const CaseContinuation& cased, std::size_t firstTriangle) {
-        std::vector<std::uint8_t>& bits = chunk_.pieceStarts;
-        for (int p = 0; p < cased.pieceCount; ++p) {
-            const std::size_t t = firstTriangle + cased.pieces[p].firstTriangle;
-            bits[t / 8] = static_cast<std::uint8_t>(bits[t / 8] | 1u << (t % 8));
-        }
-    }
-
     template <bool SeamSlab>
     std::uint32_t vertexOnEdge(int x, int y, int z, std::size_t cell, int edge, int bottom, int top) {
         const int axis = slots_.axis[edge];
@@ -468,7 +457,10 @@ private:
         if (*slot != kNoVertex && *slot >= threshold) return *slot;
         const std::size_t id = chunk_.vertexBase + chunk_.vertexCursor++;
         *slot = static_cast<std::uint32_t>(id);
-        if (parent_) parent_[id] = *slot, tally_[id] = 0;
+        if (parent_) {
+            parent_[id] = *slot;
+            tally_[id] = 0;
+        }
         const auto& o = cube::edgeOrigin(edge);
         grid_.edgeVertex(x + o[0], y + o[1], z + o[2], axis, mesh_.vertices[id]);
         mesh_.vertexEdges[id] = GridEdge{x + o[0], y + o[1], z + o[2], axis};
@@ -478,7 +470,6 @@ private:
     const detail::SampleGrid<T>& grid_;
     const std::array<CaseContinuation, 256>& table_;
     const EdgeSlots& slots_;
-    const bool markPieces_;
     std::uint32_t* const parent_;
     std::uint8_t* const tally_;
     Chunk& chunk_;
@@ -533,10 +524,9 @@ void stitch(std::vector<Chunk>& chunks, Mesh& mesh, std::uint32_t* parent) {
 
 
 // The exhaustive pass on `threads` threads; labels surfaces in *parent and tallies
-// cell pieces in *tally (both resized to one entry per vertex) when given, and
-// marks piece starts in each chunk when asked.
+// cell pieces in *tally (both resized to one entry per vertex) when given.
 std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int threads, Mesh& mesh,
-                         Buffer<std::uint32_t>* parent, Buffer<std::uint8_t>* tally, bool markPieces) {
+                         Buffer<std::uint32_t>* parent, Buffer<std::uint8_t>* tally) {
     const Dims& n = volume.dims();
     if (n[0] < 2 || n[1] < 2 || n[2] < 2) return {};
     const int slabs = n[2] - 1;
@@ -554,16 +544,20 @@ std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int 
     visitSamples(volume, [&](const auto* samples) {
         using T = std::remove_cv_t<std::remove_pointer_t<decltype(samples)>>;
         const detail::SampleGrid<T> grid(volume, samples, iso);
-        const bool mark = markPieces;
         detail::parallelFor(chunkCount, threads, [&](int c) {
-            ChunkMarcher<T>(grid, continuation, slots, mark, nullptr, nullptr, chunks[std::size_t(c)], mesh).count();
+            ChunkMarcher<T>(grid, continuation, slots, nullptr, nullptr, chunks[std::size_t(c)], mesh).count();
         });
         allocate(chunks, mesh);
-        if (parent) parent->resize(mesh.vertices.size()), tally->resize(mesh.vertices.size());
-        std::uint32_t* parents = parent ? parent->data() : nullptr;
-        std::uint8_t* tallies = parent ? tally->data() : nullptr;
+        std::uint32_t* parents = nullptr;
+        std::uint8_t* tallies = nullptr;
+        if (parent) {
+            parent->resize(mesh.vertices.size());
+            tally->resize(mesh.vertices.size());
+            parents = parent->data();
+            tallies = tally->data();
+        }
         detail::parallelFor(chunkCount, threads, [&](int c) {
-            ChunkMarcher<T>(grid, continuation, slots, mark, parents, tallies, chunks[std::size_t(c)], mesh).run();
+            ChunkMarcher<T>(grid, continuation, slots, parents, tallies, chunks[std::size_t(c)], mesh).run();
         });
     });
     stitch(chunks, mesh, parent ? parent->data() : nullptr);
@@ -572,22 +566,9 @@ std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int 
 
 }  // namespace
 
-Mesh marchingCubes(const Volume& volume, double iso, TableKind table, int threads, std::vector<std::uint8_t>* pieceStarts) {
+Mesh marchingCubes(const Volume& volume, double iso, TableKind table, int threads) {
     Mesh mesh;
-    const std::vector<Chunk> chunks = march(volume, iso, table, threads, mesh, nullptr, nullptr, pieceStarts != nullptr);
-    if (pieceStarts) {
-        // The chunks' bits, one after the other.
-        pieceStarts->assign(mesh.indices.size() / 3 / 8 + 1, 0);
-        for (const Chunk& chunk : chunks) {
-            const std::size_t first = chunk.indexBase / 3;
-            for (std::size_t t = 0; t < chunk.triangleCount; ++t) {
-                if (chunk.pieceStarts[t / 8] >> (t % 8) & 1u) {
-                    const std::size_t g = first + t;
-                    (*pieceStarts)[g / 8] = static_cast<std::uint8_t>((*pieceStarts)[g / 8] | 1u << (g % 8));
-                }
-            }
-        }
-    }
+    march(volume, iso, table, threads, mesh, nullptr, nullptr);
     return mesh;
 }
 
@@ -596,7 +577,7 @@ namespace detail {
 LabelledMesh marchLabelled(const Volume& volume, double iso, TableKind table, int threads) {
     LabelledMesh out;
     Buffer<std::uint32_t> parent;
-    std::vector<Chunk> chunks = march(volume, iso, table, threads, out.mesh, &parent, &out.tally, false);
+    std::vector<Chunk> chunks = march(volume, iso, table, threads, out.mesh, &parent, &out.tally);
     for (Chunk& chunk : chunks) {
         out.chunks.push_back({chunk.vertexBase, chunk.vertexBase + chunk.vertexCount, chunk.indexBase / 3, chunk.indexBase / 3 + chunk.triangleCount});
     }

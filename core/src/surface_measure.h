@@ -52,14 +52,18 @@ struct TriangleMeasure {
         sixfoldVolume += other.sixfoldVolume;
     }
 
-    void add(const Vertex& a, const Vertex& b, const Vertex& c) {
+    void add(const Vertex& a, const Vertex& b, const Vertex& c) { addTo(doubleArea, sixfoldVolume, a, b, c); }
+    // add, into sums of the caller's own: a loop over many triangles keeps them
+    // in registers (in a struct, they go through memory, a store and a load a triangle).
+    static void addTo(double& doubledArea, double& sixfoldSignedVolume, const Vertex& a, const Vertex& b, const Vertex& c) {
         float area, volume;
         measure(a, b, c, area, volume);
-        doubleArea += double(area);
-        sixfoldVolume += double(volume);
+        doubledArea += double(area);
+        sixfoldSignedVolume += double(volume);
     }
-    // One triangle's twice area and six times signed volume, for callers that
-    // keep their sums in registers of their own.
+
+private:
+    // One triangle's twice area and six times signed volume.
     static void measure(const Vertex& a, const Vertex& b, const Vertex& c, float& doubledArea, float& sixfoldSignedVolume) {
 #if defined(__SSE2__)
         // A corner's x, y, z and, unused, its normal's x: the same float
@@ -79,7 +83,6 @@ struct TriangleMeasure {
 #endif
     }
 
-private:
 #if defined(__SSE2__)
     static __m128 yzx(__m128 p) { return _mm_shuffle_ps(p, p, _MM_SHUFFLE(3, 0, 2, 1)); }
     static __m128 zxy(__m128 p) { return _mm_shuffle_ps(p, p, _MM_SHUFFLE(3, 1, 0, 2)); }

@@ -423,14 +423,10 @@ private:
         MeshAppender out(w.mesh);
         std::size_t visited = 0;
         std::vector<Exchange::Message> received;
-        // The triangles' measure in locals, added to the walker's at the end (in
-        // the walker, the sums went through memory, a store and a load a triangle).
+        // The triangles' measure in locals, added to the walker's at the end.
         double doubledArea = 0.0, sixfoldVolume = 0.0;
-        auto measure = [&doubledArea, &sixfoldVolume](const Vertex* vertices, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-            float area, volume;
-            detail::TriangleMeasure::measure(vertices[a], vertices[b], vertices[c], area, volume);
-            doubledArea += double(area);
-            sixfoldVolume += double(volume);
+        auto measure = [&](const Vertex* vertices, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+            detail::TriangleMeasure::addTo(doubledArea, sixfoldVolume, vertices[a], vertices[b], vertices[c]);
         };
         while (!w.queue.empty() && visited < cellBudget) {
             if constexpr (Shared) {
