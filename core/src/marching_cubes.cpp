@@ -24,7 +24,8 @@
 //
 // Labelled (for extractAllSurfaces), the writing pass also joins the vertices of
 // each cell piece in a union-find over the chunk's own vertex range, while they
-// are in cache, and tallies the piece and its triangles at its first vertex;
+// are in cache (looking up only the vertices that earlier cells have not joined
+// already, see PieceUnions), and tallies the piece and its triangles at one vertex;
 // stitch joins across seams, and a last parallel pass gives each vertex its
 // surface's root.
 #include "isotrack/marching_cubes.h"
@@ -57,6 +58,79 @@ std::uint32_t findRoot(std::uint32_t* parent, std::uint32_t v) {
 
 std::uint32_t linkRoots(std::uint32_t* parent, std::uint32_t a, std::uint32_t b) {
     return a < b ? (parent[b] = a) : (parent[a] = b);
+}
+
+// Which vertices of a cell piece the labelled march looks up in the union-find.
+// A cell's crossed edges on its low faces (-x, -y, -z) were met by the cells
+// before it. Where such a face is crossed at exactly two edges, the cell across
+// it holds both in one piece (every configuration does; tables_test checks it),
+// so they are joined already and one of them stands for both. The three edges at
+// the cell's high corner are met first by the cell itself: their vertices are
+// new, each its own root. A piece so looks up one vertex per group of its
+// low-face edges instead of every vertex.
+struct PieceUnions {
+    // [config][low faces with a marched cell across them: bit 0 -x, 1 -y, 2 -z][piece]
+    std::array<std::array<std::array<std::uint16_t, kMaxPieces>, 8>, 256> lookups{};
+    unsigned newEdges = 0;  // the edges at the high corner
+};
+
+PieceUnions pieceUnionsFor(TableKind kind) {
+    const auto& table = continuationTable(kind);
+    // Per low face (-x, -y, -z), its edges; and the x- and y-edges of the cell's
+    // upper slice, placeholders in a seam slab, which stand in for a group only when alone.
+    std::array<unsigned, 3> lowFace{};
+    unsigned upperSlice = 0;
+    for (int e = 0; e < cube::kEdgeCount; ++e) {
+        for (int f = 0; f < 3; ++f) lowFace[std::size_t(f)] |= unsigned(cube::edgeOnFace(e, 2 * f)) << e;
+        if (cube::edgeOrigin(e)[2] == 1 && cube::edgeAxis(e) != 2) upperSlice |= 1u << e;
+    }
+    PieceUnions out;
+    out.newEdges = ((1u << cube::kEdgeCount) - 1) & ~(lowFace[0] | lowFace[1] | lowFace[2]);
+    auto onUpperSlice = [&](int e) { return (upperSlice >> e & 1) != 0; };
+    for (int config = 0; config < 256; ++config) {
+        const CaseContinuation& cased = table[std::size_t(config)];
+        unsigned crossed = 0;
+        for (int e = 0; e < cube::kEdgeCount; ++e) crossed |= unsigned(cased.pieceOfEdge[std::size_t(e)] >= 0) << e;
+        for (int across = 0; across < 8; ++across) {
+            for (int p = 0; p < cased.pieceCount; ++p) {
+                const unsigned old = cased.pieces[p].edgeMask & ~out.newEdges;
+                std::array<int, cube::kEdgeCount> group;
+                for (int e = 0; e < cube::kEdgeCount; ++e) group[std::size_t(e)] = e;
+                auto find = [&](int e) {
+                    while (group[std::size_t(e)] != e) e = group[std::size_t(e)];
+                    return e;
+                };
+                for (int f = 0; f < 3; ++f) {
+                    const unsigned onFace = crossed & lowFace[std::size_t(f)];
+                    if (!(across >> f & 1) || __builtin_popcount(onFace) != 2 || (onFace & old) != onFace) continue;
+                    group[std::size_t(find(__builtin_ctz(onFace)))] = find(31 - __builtin_clz(onFace));
+                }
+                // Each group's stand-in: its first edge off the upper slice, else its only edge.
+                std::array<int, cube::kEdgeCount> standIn;
+                standIn.fill(-1);
+                for (int e = 0; e < cube::kEdgeCount; ++e) {
+                    if (!(old >> e & 1)) continue;
+                    int& chosen = standIn[std::size_t(find(e))];
+                    if (chosen < 0 || (onUpperSlice(chosen) && !onUpperSlice(e))) chosen = e;
+                }
+                std::uint16_t lookups = 0;
+                for (int chosen : standIn) {
+                    if (chosen >= 0) lookups = static_cast<std::uint16_t>(lookups | 1u << chosen);
+                }
+                out.lookups[std::size_t(config)][std::size_t(across)][std::size_t(p)] = lookups;
+            }
+        }
+    }
+    return out;
+}
+
+const PieceUnions& pieceUnions(TableKind kind) {
+    if (kind == TableKind::Consistent) {
+        static const PieceUnions consistent = pieceUnionsFor(kind);
+        return consistent;
+    }
+    static const PieceUnions classic = pieceUnionsFor(kind);
+    return classic;
 }
 
 struct RowSpan {
@@ -144,9 +218,9 @@ template <class T>
 class ChunkMarcher {
 public:
     // With `parent`, the writing pass labels surfaces in it (one entry per vertex of the mesh).
-    ChunkMarcher(const detail::SampleGrid<T>& grid, const std::array<CaseContinuation, 256>& table,
-                 const EdgeSlots& slots, std::uint32_t* parent, std::uint8_t* tally, Chunk& chunk, Mesh& mesh)
-        : grid_(grid), table_(table), slots_(slots), parent_(parent), tally_(tally), chunk_(chunk), mesh_(mesh), nx_(grid.nx()), ny_(grid.ny()),
+    ChunkMarcher(const detail::SampleGrid<T>& grid, const std::array<CaseContinuation, 256>& table, const EdgeSlots& slots,
+                 const PieceUnions* unions, std::uint32_t* parent, std::uint8_t* tally, Chunk& chunk, Mesh& mesh)
+        : grid_(grid), table_(table), slots_(slots), unions_(unions), parent_(parent), tally_(tally), chunk_(chunk), mesh_(mesh), nx_(grid.nx()), ny_(grid.ny()),
           sliceSize_(std::size_t(grid.nx()) * std::size_t(grid.ny())), rowBytes_(std::size_t(grid.nx() + 7) / 8) {
         for (int s = 0; s < 2; ++s) {
             flags_[s].assign(sliceSize_ + 8, 0);  // rows are packed and unpacked 8 flags at a time
@@ -400,7 +474,7 @@ private:
                 ids[e] = vertexOnEdge<SeamSlab>(x, y, z, cell, e, bottom, top);
             }
             const CaseContinuation& cased = table_[config];
-            if (parent_) unitePieces(cased, ids);
+            if (parent_) unitePieces(config, cased, ids, unsigned(x > 0) | unsigned(y > 0) << 1 | unsigned(z > chunk_.zBegin) << 2);
             const int triangles = triangleCount_[config];
             const std::size_t at = chunk_.indexBase + chunk_.indexCursor;
             std::uint32_t* out = mesh_.indices.data() + at;
@@ -419,23 +493,38 @@ private:
     }
 
     // Joins the vertices of each piece of the cell, a connected patch of surface,
-    // and tallies the piece and its triangles at its first vertex of this chunk
+    // and tallies the piece and its triangles at one of its vertices of this chunk
     // (every piece has one: no piece crosses only edges of the next chunk's slice).
+    // Only one vertex per group of low-face edges already joined is looked up
+    // (PieceUnions); `across` says which low faces have a cell of this chunk across.
     // Placeholders for the next chunk's slice are joined in stitch, through their triangles.
-    void unitePieces(const CaseContinuation& cased, const std::array<std::uint32_t, 12>& ids) {
+    void unitePieces(unsigned config, const CaseContinuation& cased, const std::array<std::uint32_t, 12>& ids, unsigned across) {
+        const std::array<std::uint16_t, kMaxPieces>& lookups = unions_->lookups[config][across];
         for (int p = 0; p < cased.pieceCount; ++p) {
-            std::uint32_t root = kNoVertex;
-            for (unsigned mask = cased.pieces[p].edgeMask; mask != 0; mask &= mask - 1) {
+            std::uint32_t root = kNoVertex, counted = kNoVertex;
+            for (unsigned mask = lookups[std::size_t(p)]; mask != 0; mask &= mask - 1) {
                 const std::uint32_t id = ids[std::size_t(__builtin_ctz(mask))];
                 if (id & kSeamBit) continue;
                 const std::uint32_t r = findRoot(parent_, id);
                 if (root == kNoVertex) {
                     root = r;
-                    tally_[id] = static_cast<std::uint8_t>(tally_[id] + detail::kTalliedPiece + cased.pieces[p].triangleCount);
+                    counted = id;
                 } else if (r != root) {
                     root = linkRoots(parent_, root, r);
                 }
             }
+            // New vertices are roots of their own.
+            for (unsigned mask = cased.pieces[p].edgeMask & unions_->newEdges; mask != 0; mask &= mask - 1) {
+                const std::uint32_t id = ids[std::size_t(__builtin_ctz(mask))];
+                if (id & kSeamBit) continue;
+                if (root == kNoVertex) {
+                    root = id;
+                    counted = id;
+                } else {
+                    root = linkRoots(parent_, root, id);
+                }
+            }
+            tally_[counted] = static_cast<std::uint8_t>(tally_[counted] + detail::kTalliedPiece + cased.pieces[p].triangleCount);
         }
     }
 
@@ -470,6 +559,7 @@ private:
     const detail::SampleGrid<T>& grid_;
     const std::array<CaseContinuation, 256>& table_;
     const EdgeSlots& slots_;
+    const PieceUnions* const unions_;  // with parent_
     std::uint32_t* const parent_;
     std::uint8_t* const tally_;
     Chunk& chunk_;
@@ -545,19 +635,21 @@ std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int 
         using T = std::remove_cv_t<std::remove_pointer_t<decltype(samples)>>;
         const detail::SampleGrid<T> grid(volume, samples, iso);
         detail::parallelFor(chunkCount, threads, [&](int c) {
-            ChunkMarcher<T>(grid, continuation, slots, nullptr, nullptr, chunks[std::size_t(c)], mesh).count();
+            ChunkMarcher<T>(grid, continuation, slots, nullptr, nullptr, nullptr, chunks[std::size_t(c)], mesh).count();
         });
         allocate(chunks, mesh);
         std::uint32_t* parents = nullptr;
         std::uint8_t* tallies = nullptr;
+        const PieceUnions* unions = nullptr;
         if (parent) {
+            unions = &pieceUnions(table);
             parent->resize(mesh.vertices.size());
             tally->resize(mesh.vertices.size());
             parents = parent->data();
             tallies = tally->data();
         }
         detail::parallelFor(chunkCount, threads, [&](int c) {
-            ChunkMarcher<T>(grid, continuation, slots, parents, tallies, chunks[std::size_t(c)], mesh).run();
+            ChunkMarcher<T>(grid, continuation, slots, unions, parents, tallies, chunks[std::size_t(c)], mesh).run();
         });
     });
     stitch(chunks, mesh, parent ? parent->data() : nullptr);

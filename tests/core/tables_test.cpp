@@ -6,6 +6,7 @@
 #include <string>
 #include <map>
 #include <set>
+#include <vector>
 
 #include "isotrack/continuation.h"
 #include "isotrack/cube.h"
@@ -296,5 +297,27 @@ TEST_CASE("a cell piece has at most 5 triangles, so the 4 pieces around a vertex
         }
         CHECK(most <= 5);
         CHECK(4 * most < 32);
+    }
+}
+
+TEST_CASE("a face crossed at two edges has both in one piece, whatever the rest of the cube", "[core][tables]") {
+    // Every surface's labelling looks up only one of the two vertices on such a
+    // face of a cell: the cell across the face, whatever its configuration, has
+    // joined them already. The ambiguous faces (four crossed edges) are not relied on.
+    for (const TableKind kind : {TableKind::Consistent, TableKind::Classic}) {
+        int faces = 0;
+        for (unsigned c = 0; c < 256; ++c) {
+            const CaseContinuation& cased = continuationTable(kind)[c];
+            for (int face = 0; face < cube::kFaceCount; ++face) {
+                std::vector<int> crossed;
+                for (int e : crossedEdges(c)) {
+                    if (cube::edgeOnFace(e, face)) crossed.push_back(e);
+                }
+                if (crossed.size() != 2) continue;
+                ++faces;
+                CHECK(cased.pieceOfEdge[std::size_t(crossed[0])] == cased.pieceOfEdge[std::size_t(crossed[1])]);
+            }
+        }
+        CHECK(faces > 256);
     }
 }
