@@ -162,21 +162,13 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         }
         std::size_t to = 3 * part.triangleBegin;
         const std::uint32_t* localIndex = local.data();
+        const std::uint32_t* surfaceOf = component.data();
+        const Vertex* vertices = mesh.vertices.data();
         const std::size_t vertexEnd = part.vertexEnd;
-        // Consecutive triangles mostly lie on one surface: measured in registers
-        // until the surface changes.
-        std::uint32_t runSurface = kNone;
-        double runArea = 0.0, runVolume = 0.0;
-        for (std::size_t t = part.triangleBegin; t < part.triangleEnd; ++t) {
+        // Triangle t out to surface k (the run's).
+        auto place = [&](std::size_t t, std::uint32_t k) {
+            if (k == largest && !compact) return;  // a lone surface's triangles stay as they are
             const std::uint32_t* v = &mesh.indices[3 * t];
-            const std::uint32_t k = component[v[0]];
-            if (k != runSurface) {
-                if (runSurface != kNone) share[runSurface].measure.triangles.merge({runArea, runVolume});
-                runArea = runVolume = 0.0;
-                runSurface = k;
-            }
-            detail::TriangleMeasure::addTo(runArea, runVolume, mesh.vertices[v[0]], mesh.vertices[v[1]], mesh.vertices[v[2]]);
-            if (k == largest && !compact) continue;  // a lone surface's triangles stay as they are
             const std::uint32_t own = base[k], next = nextBase[k];
             // Read before writing: a compacted triangle may land on its own corners.
             const std::uint32_t a = localIndex[v[0]] + (v[0] < vertexEnd ? own : next);
@@ -193,6 +185,28 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             out[0] = a;  // one store each: assembling the three elsewhere and copying them stalls
             out[1] = b;
             out[2] = c;
+        };
+        // Consecutive triangles mostly lie on one surface: measured in registers
+        // until the surface changes, four at a time where four in a row do.
+        std::uint32_t runSurface = kNone;
+        double runArea = 0.0, runVolume = 0.0;
+        for (std::size_t t = part.triangleBegin; t < part.triangleEnd;) {
+            const std::uint32_t* v = &mesh.indices[3 * t];
+            const std::uint32_t k = surfaceOf[v[0]];
+            if (k != runSurface) {
+                if (runSurface != kNone) share[runSurface].measure.triangles.merge({runArea, runVolume});
+                runArea = runVolume = 0.0;
+                runSurface = k;
+            }
+            if (t + 4 <= part.triangleEnd && surfaceOf[v[3]] == k && surfaceOf[v[6]] == k && surfaceOf[v[9]] == k) {
+                detail::TriangleMeasure::addFourTo(runArea, runVolume, vertices, v);
+                for (std::size_t i = 0; i < 4; ++i) place(t + i, k);
+                t += 4;
+            } else {
+                detail::TriangleMeasure::addTo(runArea, runVolume, vertices[v[0]], vertices[v[1]], vertices[v[2]]);
+                place(t, k);
+                ++t;
+            }
         }
         if (runSurface != kNone) share[runSurface].measure.triangles.merge({runArea, runVolume});
     });

@@ -62,6 +62,40 @@ struct TriangleMeasure {
         sixfoldSignedVolume += double(volume);
     }
 
+    // addTo for the four triangles at indices[0..11], one after the other, in
+    // one pass of 4-wide arithmetic: per triangle the same float operations in
+    // the same order, so the sums are those of four addTo calls.
+    static void addFourTo(double& doubledArea, double& sixfoldSignedVolume, const Vertex* vertices, const std::uint32_t* indices) {
+#if defined(__SSE2__)
+        // Lane i: triangle i's corner k, as x, y, z rows.
+        __m128 x[3], y[3], z[3];
+        for (int k = 0; k < 3; ++k) {
+            __m128 p0 = _mm_loadu_ps(vertices[indices[k]].position), p1 = _mm_loadu_ps(vertices[indices[3 + k]].position);
+            __m128 p2 = _mm_loadu_ps(vertices[indices[6 + k]].position), p3 = _mm_loadu_ps(vertices[indices[9 + k]].position);
+            _MM_TRANSPOSE4_PS(p0, p1, p2, p3);
+            x[k] = p0, y[k] = p1, z[k] = p2;
+        }
+        const __m128 ux = _mm_sub_ps(x[1], x[0]), uy = _mm_sub_ps(y[1], y[0]), uz = _mm_sub_ps(z[1], z[0]);
+        const __m128 vx = _mm_sub_ps(x[2], x[0]), vy = _mm_sub_ps(y[2], y[0]), vz = _mm_sub_ps(z[2], z[0]);
+        const __m128 nx = _mm_sub_ps(_mm_mul_ps(uy, vz), _mm_mul_ps(uz, vy));
+        const __m128 ny = _mm_sub_ps(_mm_mul_ps(uz, vx), _mm_mul_ps(ux, vz));
+        const __m128 nz = _mm_sub_ps(_mm_mul_ps(ux, vy), _mm_mul_ps(uy, vx));
+        const __m128 squared = _mm_add_ps(_mm_add_ps(_mm_mul_ps(nx, nx), _mm_mul_ps(ny, ny)), _mm_mul_ps(nz, nz));
+        const __m128 volume = _mm_add_ps(_mm_add_ps(_mm_mul_ps(x[0], nx), _mm_mul_ps(y[0], ny)), _mm_mul_ps(z[0], nz));
+        alignas(16) float areas[4], volumes[4];
+        _mm_store_ps(areas, _mm_sqrt_ps(squared));
+        _mm_store_ps(volumes, volume);
+        for (int i = 0; i < 4; ++i) {
+            doubledArea += double(areas[i]);
+            sixfoldSignedVolume += double(volumes[i]);
+        }
+#else
+        for (int i = 0; i < 4; ++i) {
+            addTo(doubledArea, sixfoldSignedVolume, vertices[indices[3 * i]], vertices[indices[3 * i + 1]], vertices[indices[3 * i + 2]]);
+        }
+#endif
+    }
+
 private:
     // One triangle's twice area and six times signed volume.
     static void measure(const Vertex& a, const Vertex& b, const Vertex& c, float& doubledArea, float& sixfoldSignedVolume) {
@@ -71,7 +105,7 @@ private:
         const __m128 pa = _mm_loadu_ps(a.position), pb = _mm_loadu_ps(b.position), pc = _mm_loadu_ps(c.position);
         const __m128 u = _mm_sub_ps(pb, pa), v = _mm_sub_ps(pc, pa);
         const __m128 n = _mm_sub_ps(_mm_mul_ps(yzx(u), zxy(v)), _mm_mul_ps(zxy(u), yzx(v)));
-        doubledArea = std::sqrt(sum3(_mm_mul_ps(n, n)));
+        doubledArea = _mm_cvtss_f32(_mm_sqrt_ss(_mm_set_ss(sum3(_mm_mul_ps(n, n)))));  // std::sqrt would test for errno
         sixfoldSignedVolume = sum3(_mm_mul_ps(pa, n));
 #else
         const float* pa = a.position;
