@@ -160,55 +160,56 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             base[k] = static_cast<std::uint32_t>(share[k].vertexBase);
             if (r + 1 < parts.size()) nextBase[k] = static_cast<std::uint32_t>(shares[r + 1][k].vertexBase);
         }
-        std::size_t to = 3 * part.triangleBegin;
+        std::uint32_t* indices = mesh.indices.data();
         const std::uint32_t* localIndex = local.data();
         const std::uint32_t* surfaceOf = component.data();
         const Vertex* vertices = mesh.vertices.data();
-        const std::size_t vertexEnd = part.vertexEnd;
-        // Triangle t out to surface k (the run's).
-        auto place = [&](std::size_t t, std::uint32_t k) {
-            if (k == largest && !compact) return;  // a lone surface's triangles stay as they are
-            const std::uint32_t* v = &mesh.indices[3 * t];
-            const std::uint32_t own = base[k], next = nextBase[k];
-            // Read before writing: a compacted triangle may land on its own corners.
-            const std::uint32_t a = localIndex[v[0]] + (v[0] < vertexEnd ? own : next);
-            const std::uint32_t b = localIndex[v[1]] + (v[1] < vertexEnd ? own : next);
-            const std::uint32_t c = localIndex[v[2]] + (v[2] < vertexEnd ? own : next);
-            std::uint32_t* out;
-            if (k != largest) {
-                out = surfaces[k].mesh.indices.data() + cursor[k];
-                cursor[k] += 3;
-            } else {
-                out = mesh.indices.data() + to;
-                to += 3;
-            }
-            out[0] = a;  // one store each: assembling the three elsewhere and copying them stalls
-            out[1] = b;
-            out[2] = c;
-        };
-        // Consecutive triangles mostly lie on one surface: measured in registers
-        // until the surface changes, four at a time where four in a row do.
-        std::uint32_t runSurface = kNone;
+        const std::size_t vertexEnd = part.vertexEnd, triangleEnd = part.triangleEnd;
+        std::size_t to = 3 * part.triangleBegin;  // where the largest surface's next triangle goes
+        // Consecutive triangles mostly lie on one surface: such a run keeps its
+        // sums, bases and output in registers, and is measured four triangles at a
+        // time where four in a row are on it.
+        std::uint32_t runSurface = kNone, own = 0, next = 0;
+        std::uint32_t* out = nullptr;  // null for a lone surface, whose triangles stay as they are
         double runArea = 0.0, runVolume = 0.0;
-        for (std::size_t t = part.triangleBegin; t < part.triangleEnd;) {
-            const std::uint32_t* v = &mesh.indices[3 * t];
+        auto endRun = [&] {
+            share[runSurface].measure.triangles.merge({runArea, runVolume});
+            if (runSurface == largest) {
+                if (out) to = std::size_t(out - indices);
+            } else {
+                cursor[runSurface] = std::size_t(out - surfaces[runSurface].mesh.indices.data());
+            }
+        };
+        for (std::size_t t = part.triangleBegin; t < triangleEnd;) {
+            const std::uint32_t* v = indices + 3 * t;
             const std::uint32_t k = surfaceOf[v[0]];
             if (k != runSurface) {
-                if (runSurface != kNone) share[runSurface].measure.triangles.merge({runArea, runVolume});
-                runArea = runVolume = 0.0;
+                if (runSurface != kNone) endRun();
                 runSurface = k;
+                runArea = runVolume = 0.0;
+                own = base[k];
+                next = nextBase[k];
+                if (k != largest) {
+                    out = surfaces[k].mesh.indices.data() + cursor[k];
+                } else {
+                    out = compact ? indices + to : nullptr;
+                }
             }
-            if (t + 4 <= part.triangleEnd && surfaceOf[v[3]] == k && surfaceOf[v[6]] == k && surfaceOf[v[9]] == k) {
+            std::size_t run = 1;
+            if (t + 4 <= triangleEnd && surfaceOf[v[3]] == k && surfaceOf[v[6]] == k && surfaceOf[v[9]] == k) {
                 detail::TriangleMeasure::addFourTo(runArea, runVolume, vertices, v);
-                for (std::size_t i = 0; i < 4; ++i) place(t + i, k);
-                t += 4;
+                run = 4;
             } else {
                 detail::TriangleMeasure::addTo(runArea, runVolume, vertices[v[0]], vertices[v[1]], vertices[v[2]]);
-                place(t, k);
-                ++t;
             }
+            if (out) {
+                // Read before writing: a compacted triangle may land on its own corners.
+                for (std::size_t i = 0; i < 3 * run; ++i) out[i] = localIndex[v[i]] + (v[i] < vertexEnd ? own : next);
+                out += 3 * run;
+            }
+            t += run;
         }
-        if (runSurface != kNone) share[runSurface].measure.triangles.merge({runArea, runVolume});
+        if (runSurface != kNone) endRun();
     });
     // Vertices out to their surfaces, measured on the way; a run of one surface's
     // vertices keeps its bounds and border flag in registers (locals, as above).
