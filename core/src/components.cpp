@@ -13,6 +13,7 @@
 // (the tests hold them equal), with no per-voxel memory.
 #include <algorithm>
 #include <numeric>
+#include <type_traits>
 
 #include "isotrack/tracking.h"
 #include "labelled_march.h"
@@ -150,7 +151,8 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
     const bool compact = count > 0 && surfaces[largest].stats.vertices != mesh.vertices.size();
     // Triangles out to their surfaces, measured on the way, while the vertices are
     // still in place. A range's triangles use the next range's vertices too.
-    forParts([&](const Range& part, std::size_t r) {
+    // One range (one thread) has all of every surface: indices are then the vertices' own.
+    auto splitTriangles = [&](const Range& part, std::size_t r, auto oneRange) {
         std::vector<Share>& share = shares[r];
         std::vector<std::size_t> cursor(count);
         // Per surface, where this range's and the next range's vertices start in it.
@@ -204,13 +206,24 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             }
             if (out) {
                 // Read before writing: a compacted triangle may land on its own corners.
-                for (std::size_t i = 0; i < 3 * run; ++i) out[i] = localIndex[v[i]] + (v[i] < vertexEnd ? own : next);
+                for (std::size_t i = 0; i < 3 * run; ++i) {
+                    if constexpr (decltype(oneRange)::value) {
+                        out[i] = localIndex[v[i]];
+                    } else {
+                        out[i] = localIndex[v[i]] + (v[i] < vertexEnd ? own : next);
+                    }
+                }
                 out += 3 * run;
             }
             t += run;
         }
         if (runSurface != kNone) endRun();
-    });
+    };
+    if (parts.size() == 1) {
+        splitTriangles(parts[0], 0, std::true_type{});
+    } else {
+        forParts([&](const Range& part, std::size_t r) { splitTriangles(part, r, std::false_type{}); });
+    }
     // Vertices out to their surfaces, measured on the way; a run of one surface's
     // vertices keeps its bounds and border flag in registers (locals, as above).
     forParts([&](const Range& part, std::size_t r) {
@@ -245,15 +258,22 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         if (runSurface != kNone) endRun(share[runSurface].measure, x0, y0, z0, x1, y1, z1, border);
     });
     if (compact) {
-        for (std::size_t r = 1; r < parts.size(); ++r) {
-            const Share& share = shares[r][largest];
-            std::copy_n(mesh.vertices.begin() + std::ptrdiff_t(parts[r].vertexBegin), share.vertices,
-                        mesh.vertices.begin() + std::ptrdiff_t(share.vertexBase));
-            std::copy_n(mesh.vertexEdges.begin() + std::ptrdiff_t(parts[r].vertexBegin), share.vertices,
-                        mesh.vertexEdges.begin() + std::ptrdiff_t(share.vertexBase));
-            std::copy_n(mesh.indices.begin() + std::ptrdiff_t(3 * parts[r].triangleBegin), 3 * std::size_t(share.triangles),
-                        mesh.indices.begin() + std::ptrdiff_t(3 * share.triangleBase));
-        }
+        // Range by range (a share may land on the previous one's old place), the
+        // three buffers at once.
+        auto moveShares = [&](auto& buffer, std::size_t perElement, bool byTriangle) {
+            for (std::size_t r = 1; r < parts.size(); ++r) {
+                const Share& share = shares[r][largest];
+                const std::size_t from = byTriangle ? parts[r].triangleBegin : parts[r].vertexBegin;
+                const std::size_t to = byTriangle ? share.triangleBase : share.vertexBase;
+                const std::size_t elements = byTriangle ? share.triangles : share.vertices;
+                std::copy_n(buffer.begin() + std::ptrdiff_t(perElement * from), perElement * elements, buffer.begin() + std::ptrdiff_t(perElement * to));
+            }
+        };
+        detail::parallelFor(3, threads, [&](int buffer) {
+            if (buffer == 0) moveShares(mesh.vertices, 1, false);
+            if (buffer == 1) moveShares(mesh.vertexEdges, 1, false);
+            if (buffer == 2) moveShares(mesh.indices, 3, true);
+        });
         mesh.vertices.resize(surfaces[largest].stats.vertices);
         mesh.vertexEdges.resize(surfaces[largest].stats.vertices);
         mesh.indices.resize(3 * surfaces[largest].stats.triangles);
