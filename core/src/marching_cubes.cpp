@@ -598,13 +598,19 @@ void stitch(std::vector<Chunk>& chunks, Mesh& mesh, std::uint32_t* parent) {
         for (std::size_t at : chunks[c].seamIndices) mesh.indices[at] = next[mesh.indices[at] & ~kSeamBit];
     }
     if (parent) {
+        // Each triangle with a placeholder joins its three corners, once (seam
+        // indices come in order, a triangle's together).
         for (std::size_t c = 0; c + 1 < chunks.size(); ++c) {
+            std::size_t joined = ~std::size_t(0);
             for (std::size_t at : chunks[c].seamIndices) {
-                const std::uint32_t* triangle = &mesh.indices[at - at % 3];
-                const std::uint32_t a = findRoot(parent, mesh.indices[at]);
-                for (int k = 0; k < 3; ++k) {
-                    const std::uint32_t b = findRoot(parent, triangle[k]);
-                    if (a != b) linkRoots(parent, a, b);
+                const std::size_t first = at - at % 3;
+                if (first == joined) continue;
+                joined = first;
+                const std::uint32_t* triangle = &mesh.indices[first];
+                std::uint32_t root = findRoot(parent, triangle[0]);
+                for (int k = 1; k < 3; ++k) {
+                    const std::uint32_t other = findRoot(parent, triangle[k]);
+                    if (other != root) root = linkRoots(parent, root, other);
                 }
             }
         }
