@@ -86,15 +86,14 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
 
     // Surfaces numbered in order of their roots (their first vertices): each
     // range lists its roots, and the lists one after the other are in order.
-    // Then each vertex gets its surface's number (`component`) from its root,
-    // and its index in its range's share of that surface
+    // Then each vertex's root becomes its surface's number (`component`, in
+    // place), the vertex gets its index in its range's share of that surface
     // (`local`), and the share adds up the cell pieces and triangles tallied at
     // its vertices.
-    const std::uint32_t* parent = labelled.parent.data();
     std::vector<std::vector<std::uint32_t>> rootsOf(parts.size());
     forParts([&](const Range& part, std::size_t r) {
         for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
-            if (parent[v] == v) rootsOf[r].push_back(static_cast<std::uint32_t>(v));
+            if (labelled.root[v] == v) rootsOf[r].push_back(static_cast<std::uint32_t>(v));
         }
     });
     std::vector<std::uint32_t> roots;
@@ -103,7 +102,8 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
     auto numberOf = [&](std::uint32_t root) {
         return static_cast<std::uint32_t>(std::lower_bound(roots.begin(), roots.end(), root) - roots.begin());
     };
-    Buffer<std::uint32_t> component(mesh.vertices.size()), local(mesh.vertices.size());
+    Buffer<std::uint32_t>& component = labelled.root;
+    Buffer<std::uint32_t> local(mesh.vertices.size());
     std::vector<std::vector<Share>> shares(parts.size(), std::vector<Share>(count));
     // Runs of vertices and of triangles on one surface are common: the run's
     // surface and counters stay in registers.
@@ -111,12 +111,9 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         std::vector<Share>& share = shares[r];
         std::uint32_t lastRoot = kNone, k = 0, counter = 0, triangles = 0, pieces = 0;
         for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
-            // The root, found without compressing paths: other ranges follow the same parents.
-            std::uint32_t root = parent[v];
-            while (parent[root] != root) root = parent[root];
-            if (root != lastRoot) {
+            if (component[v] != lastRoot) {
                 if (lastRoot != kNone) share[k].vertices = counter, share[k].triangles = triangles, share[k].pieces = pieces;
-                lastRoot = root;
+                lastRoot = component[v];
                 k = numberOf(lastRoot);
                 counter = share[k].vertices, triangles = share[k].triangles, pieces = share[k].pieces;
             }

@@ -26,9 +26,7 @@ constexpr unsigned kTalliedPiece = 32, kTalliedTriangles = kTalliedPiece - 1;
 struct LabelledMesh {
     Mesh mesh;
     std::vector<MarchedChunk> chunks;
-    // Per vertex, a union-find parent: following parents leads to the smallest
-    // vertex id of its connected surface, the only vertex that is its own parent.
-    Buffer<std::uint32_t> parent;
+    Buffer<std::uint32_t> root;   // per vertex, the smallest vertex id of its connected surface
     Buffer<std::uint8_t> tally;   // per vertex, the cell pieces and triangles counted at it (kTalliedPiece)
 };
 

@@ -26,7 +26,8 @@
 // each cell piece in a union-find over the chunk's own vertex range, while they
 // are in cache (looking up only the vertices that earlier cells have not joined
 // already, see PieceUnions), and tallies the piece and its triangles at one vertex;
-// stitch joins across seams.
+// stitch joins across seams, and a last parallel pass gives each vertex its
+// surface's root.
 #include "isotrack/marching_cubes.h"
 
 #include <algorithm>
@@ -673,10 +674,21 @@ namespace detail {
 
 LabelledMesh marchLabelled(const Volume& volume, double iso, TableKind table, int threads) {
     LabelledMesh out;
-    std::vector<Chunk> chunks = march(volume, iso, table, threads, out.mesh, &out.parent, &out.tally);
+    Buffer<std::uint32_t> parent;
+    std::vector<Chunk> chunks = march(volume, iso, table, threads, out.mesh, &parent, &out.tally);
     for (Chunk& chunk : chunks) {
         out.chunks.push_back({chunk.vertexBase, chunk.vertexBase + chunk.vertexCount, chunk.indexBase / 3, chunk.indexBase / 3 + chunk.triangleCount});
     }
+    // Every vertex's root, read without compressing paths so that chunks can run at once.
+    out.root.resize(parent.size());
+    parallelFor(int(out.chunks.size()), threads, [&](int c) {
+        const MarchedChunk& chunk = out.chunks[std::size_t(c)];
+        for (std::size_t v = chunk.vertexBegin; v < chunk.vertexEnd; ++v) {
+            std::uint32_t r = parent[v];
+            while (parent[r] != r) r = parent[r];
+            out.root[v] = r;
+        }
+    });
     return out;
 }
 
