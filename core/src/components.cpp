@@ -65,7 +65,7 @@ std::vector<Range> ranges(const std::vector<detail::MarchedChunk>& chunks, int t
 
 // Adds a run of one surface's vertices, kept in registers by the caller (values,
 // not references: a lambda capturing them would keep them in memory).
-void endRun(detail::SurfaceMeasure& measure, float x0, float y0, float z0, float x1, float y1, float z1, bool border) {
+void addVertexRun(detail::SurfaceMeasure& measure, float x0, float y0, float z0, float x1, float y1, float z1, bool border) {
     detail::SurfaceMeasure run;
     run.boundsMin[0] = x0, run.boundsMin[1] = y0, run.boundsMin[2] = z0;
     run.boundsMax[0] = x1, run.boundsMax[1] = y1, run.boundsMax[2] = z1;
@@ -238,7 +238,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             const PackedGridEdge edge = mesh.vertexEdges[v];
             const float x = vertex.position[0], y = vertex.position[1], z = vertex.position[2];
             if (k != runSurface) {
-                if (runSurface != kNone) endRun(share[runSurface].measure, x0, y0, z0, x1, y1, z1, border);
+                if (runSurface != kNone) addVertexRun(share[runSurface].measure, x0, y0, z0, x1, y1, z1, border);
                 runSurface = k;
                 x0 = x1 = x, y0 = y1 = y, z0 = z1 = z;
                 border = share[k].measure.touchesBorder;  // known already: no test per vertex
@@ -255,24 +255,25 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
                 mesh.vertexEdges[to++] = edge;
             }
         }
-        if (runSurface != kNone) endRun(share[runSurface].measure, x0, y0, z0, x1, y1, z1, border);
+        if (runSurface != kNone) addVertexRun(share[runSurface].measure, x0, y0, z0, x1, y1, z1, border);
     });
     if (compact) {
         // Range by range (a share may land on the previous one's old place), the
         // three buffers at once.
-        auto moveShares = [&](auto& buffer, std::size_t perElement, bool byTriangle) {
+        auto moveShares = [&](auto& buffer, bool byTriangle) {
+            const std::size_t per = byTriangle ? 3 : 1;  // elements per vertex or triangle
             for (std::size_t r = 1; r < parts.size(); ++r) {
                 const Share& share = shares[r][largest];
                 const std::size_t from = byTriangle ? parts[r].triangleBegin : parts[r].vertexBegin;
                 const std::size_t to = byTriangle ? share.triangleBase : share.vertexBase;
-                const std::size_t elements = byTriangle ? share.triangles : share.vertices;
-                std::copy_n(buffer.begin() + std::ptrdiff_t(perElement * from), perElement * elements, buffer.begin() + std::ptrdiff_t(perElement * to));
+                const std::size_t moved = byTriangle ? share.triangles : share.vertices;
+                std::copy_n(buffer.begin() + std::ptrdiff_t(per * from), per * moved, buffer.begin() + std::ptrdiff_t(per * to));
             }
         };
         detail::parallelFor(3, threads, [&](int buffer) {
-            if (buffer == 0) moveShares(mesh.vertices, 1, false);
-            if (buffer == 1) moveShares(mesh.vertexEdges, 1, false);
-            if (buffer == 2) moveShares(mesh.indices, 3, true);
+            if (buffer == 0) moveShares(mesh.vertices, false);
+            if (buffer == 1) moveShares(mesh.vertexEdges, false);
+            if (buffer == 2) moveShares(mesh.indices, true);
         });
         mesh.vertices.resize(surfaces[largest].stats.vertices);
         mesh.vertexEdges.resize(surfaces[largest].stats.vertices);

@@ -66,12 +66,11 @@ std::uint32_t linkRoots(std::uint32_t* parent, std::uint32_t a, std::uint32_t b)
 // it holds both in one piece (every configuration does; tables_test checks it),
 // so they are joined already and one of them stands for both. The three edges at
 // the cell's high corner are met first by the cell itself: their vertices are
-// new, each its own root. A piece so looks up one vertex per group of its
-// low-face edges instead of every vertex.
+// new, each its own root, and are looked up (in one step). A piece so looks up
+// one vertex per group of its low-face edges instead of every vertex.
 struct PieceUnions {
     // [config][low faces with a marched cell across them: bit 0 -x, 1 -y, 2 -z][piece]
     std::array<std::array<std::array<std::uint16_t, kMaxPieces>, 8>, 256> lookups{};
-    unsigned newEdges = 0;  // the edges at the high corner
 };
 
 PieceUnions pieceUnionsFor(TableKind kind) {
@@ -84,8 +83,8 @@ PieceUnions pieceUnionsFor(TableKind kind) {
         for (int f = 0; f < 3; ++f) lowFace[std::size_t(f)] |= unsigned(cube::edgeOnFace(e, 2 * f)) << e;
         if (cube::edgeOrigin(e)[2] == 1 && cube::edgeAxis(e) != 2) upperSlice |= 1u << e;
     }
+    const unsigned newEdges = ((1u << cube::kEdgeCount) - 1) & ~(lowFace[0] | lowFace[1] | lowFace[2]);
     PieceUnions out;
-    out.newEdges = ((1u << cube::kEdgeCount) - 1) & ~(lowFace[0] | lowFace[1] | lowFace[2]);
     auto onUpperSlice = [&](int e) { return (upperSlice >> e & 1) != 0; };
     for (int config = 0; config < 256; ++config) {
         const CaseContinuation& cased = table[std::size_t(config)];
@@ -93,7 +92,7 @@ PieceUnions pieceUnionsFor(TableKind kind) {
         for (int e = 0; e < cube::kEdgeCount; ++e) crossed |= unsigned(cased.pieceOfEdge[std::size_t(e)] >= 0) << e;
         for (int across = 0; across < 8; ++across) {
             for (int p = 0; p < cased.pieceCount; ++p) {
-                const unsigned old = cased.pieces[p].edgeMask & ~out.newEdges;
+                const unsigned old = cased.pieces[p].edgeMask & ~newEdges;
                 std::array<int, cube::kEdgeCount> group;
                 for (int e = 0; e < cube::kEdgeCount; ++e) group[std::size_t(e)] = e;
                 auto find = [&](int e) {
@@ -113,11 +112,11 @@ PieceUnions pieceUnionsFor(TableKind kind) {
                     int& chosen = standIn[std::size_t(find(e))];
                     if (chosen < 0 || (onUpperSlice(chosen) && !onUpperSlice(e))) chosen = e;
                 }
-                std::uint16_t lookups = 0;
+                unsigned lookups = cased.pieces[p].edgeMask & newEdges;
                 for (int chosen : standIn) {
-                    if (chosen >= 0) lookups = static_cast<std::uint16_t>(lookups | 1u << chosen);
+                    if (chosen >= 0) lookups |= 1u << chosen;
                 }
-                out.lookups[std::size_t(config)][std::size_t(across)][std::size_t(p)] = lookups;
+                out.lookups[std::size_t(config)][std::size_t(across)][std::size_t(p)] = static_cast<std::uint16_t>(lookups);
             }
         }
     }
@@ -511,17 +510,6 @@ private:
                     counted = id;
                 } else if (r != root) {
                     root = linkRoots(parent_, root, r);
-                }
-            }
-            // New vertices are roots of their own.
-            for (unsigned mask = cased.pieces[p].edgeMask & unions_->newEdges; mask != 0; mask &= mask - 1) {
-                const std::uint32_t id = ids[std::size_t(__builtin_ctz(mask))];
-                if (id & kSeamBit) continue;
-                if (root == kNoVertex) {
-                    root = id;
-                    counted = id;
-                } else {
-                    root = linkRoots(parent_, root, id);
                 }
             }
             tally_[counted] = static_cast<std::uint8_t>(tally_[counted] + detail::kTalliedPiece + cased.pieces[p].triangleCount);
