@@ -30,6 +30,7 @@ namespace isotrack::detail {
 class SparseBlocks {
 public:
     static constexpr std::uint32_t kNoVertex = std::numeric_limits<std::uint32_t>::max();
+    static constexpr std::uint32_t kNoPending = std::numeric_limits<std::uint32_t>::max();
 
     static constexpr int kShift = 3;
     static constexpr int kSide = 1 << kShift;
@@ -44,6 +45,8 @@ public:
         std::array<std::atomic<Block*>, 27> link;       // each adjacent block; null until looked up
         std::array<int, 3> origin{};                    // grid coordinates of local point (0, 0, 0)
         int owner = 0;                                  // the thread walking the block's cells
+        std::uint32_t pending = kNoPending;             // the tracker's first piece waiting in the block
+        bool queued = false;                            // the block waits its turn in the tracker's queue
         Block(const std::array<int, 3>& at, int thread) : origin(at), owner(thread) {
             vertex.fill(kNoVertex);
             for (auto& l : link) l.store(nullptr, std::memory_order_relaxed);

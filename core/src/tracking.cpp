@@ -51,7 +51,7 @@ using Clock = std::chrono::steady_clock;
 using detail::SparseBlocks;
 using Block = SparseBlocks::Block;
 
-// A cell piece waiting in the queue; it was marked when queued, so each piece is
+// A cell piece waiting to be walked; it was marked when queued, so each piece is
 // queued once.
 struct Entry {
     Block* block;
@@ -60,29 +60,28 @@ struct Entry {
     std::uint8_t piece;
 };
 
-// First in, first out, in a ring that doubles when full. A breadth-first front is
-// a band across the surface, so the ring stays small and in cache while the
-// surface grows, and nothing is ever moved to compact it.
-class PieceQueue {
+// First in, first out, in a ring that doubles when full; nothing is ever moved
+// to compact it.
+template <class T>
+class Ring {
 public:
-    PieceQueue() = default;
-    PieceQueue(PieceQueue&& other) noexcept { swap(other); }
-    PieceQueue& operator=(PieceQueue&& other) noexcept {
+    Ring() = default;
+    Ring(Ring&& other) noexcept { swap(other); }
+    Ring& operator=(Ring&& other) noexcept {
         swap(other);
         return *this;
     }
 
     bool empty() const { return head_ == tail_; }
-    // Inlined where it is called: a push per exit is too frequent for a call.
-    [[gnu::always_inline]] void push(const Entry& entry) {
+    void push(const T& item) {
         if (tail_ - head_ == size_) grow();
-        data_[tail_++ & (size_ - 1)] = entry;
+        data_[tail_++ & (size_ - 1)] = item;
     }
-    Entry pop() { return data_[head_++ & (size_ - 1)]; }
+    T pop() { return data_[head_++ & (size_ - 1)]; }
     std::size_t capacity() const { return size_; }
 
 private:
-    void swap(PieceQueue& other) noexcept {
+    void swap(Ring& other) noexcept {
         ring_.swap(other.ring_);
         std::swap(data_, other.data_);
         std::swap(size_, other.size_);
@@ -90,7 +89,7 @@ private:
         std::swap(tail_, other.tail_);
     }
     [[gnu::noinline]] void grow() {
-        std::vector<Entry> larger(std::max<std::size_t>(2 * size_, 256));
+        std::vector<T> larger(std::max<std::size_t>(2 * size_, 256));
         for (std::size_t i = head_; i != tail_; ++i) larger[i - head_] = data_[i & (size_ - 1)];
         tail_ -= head_;
         head_ = 0;
@@ -99,10 +98,104 @@ private:
         size_ = ring_.size();
     }
 
-    std::vector<Entry> ring_;  // a power-of-two size
-    Entry* data_ = nullptr;    // ring_'s, and its size: kept at hand for push and pop
+    std::vector<T> ring_;  // a power-of-two size
+    T* data_ = nullptr;    // ring_'s, and its size: kept at hand for push and pop
     std::size_t size_ = 0;
     std::size_t head_ = 0, tail_ = 0;
+};
+
+// The pieces waiting to be walked, in one of two orders.
+//  - By block (a whole surface at once): each block with pieces waiting holds a
+//    list of them, and the blocks wait their turn first in, first out. A block's
+//    turn walks its pieces until none is left, the pieces they lead to in the
+//    same block included, so the block's vertex ids, flags and samples are
+//    walked while they are in cache (half the first-level cache misses of
+//    breadth-first on the CT skull); the pieces they lead to in other blocks
+//    wait in those blocks' lists.
+//  - Breadth-first (growth shown as it happens): one ring of pieces, first in,
+//    first out, so the surface grows from the seed as a smooth front.
+class PieceQueue {
+public:
+    explicit PieceQueue(bool byBlock = true) : byBlock_(byBlock) {}
+
+    bool empty() const {
+        if (!byBlock_) return pieces_.empty();
+        return (current_ == nullptr || current_->pending == kNone) && blocks_.empty();
+    }
+
+    // Inlined where it is called: a push per exit is too frequent for a call.
+    [[gnu::always_inline]] void push(const Entry& entry) {
+        if (!byBlock_) {
+            pieces_.push(entry);
+            return;
+        }
+        std::uint32_t n = free_;
+        if (n != kNone) {
+            free_ = nodes_[n].next;
+        } else {
+            n = static_cast<std::uint32_t>(nodes_.size());
+            nodes_.emplace_back();
+        }
+        Block* block = entry.block;
+        nodes_[n] = {entry.cell, entry.config, entry.piece, block->pending};
+        block->pending = n;
+        if (!block->queued) {
+            block->queued = true;
+            blocks_.push(block);
+        }
+    }
+
+    // The next piece; false when none is left.
+    bool pop(Entry& entry) {
+        if (!byBlock_) {
+            if (pieces_.empty()) return false;
+            entry = pieces_.pop();
+            return true;
+        }
+        for (;;) {
+            if (current_ != nullptr) {
+                const std::uint32_t n = current_->pending;
+                if (n != kNone) {
+                    Node& node = nodes_[n];
+                    entry = {current_, node.cell, node.config, node.piece};
+                    current_->pending = node.next;
+                    node.next = free_;
+                    free_ = n;
+                    return true;
+                }
+                current_->queued = false;
+                current_ = nullptr;
+            }
+            if (blocks_.empty()) return false;
+            current_ = blocks_.pop();
+        }
+    }
+
+    // Every piece waiting, taken out of the queue, which is left empty.
+    std::vector<Entry> drain() {
+        std::vector<Entry> entries;
+        for (Entry entry; pop(entry);) entries.push_back(entry);
+        return entries;
+    }
+
+    std::size_t byteSize() const {
+        return nodes_.capacity() * sizeof(Node) + blocks_.capacity() * sizeof(Block*) + pieces_.capacity() * sizeof(Entry);
+    }
+
+private:
+    static constexpr std::uint32_t kNone = SparseBlocks::kNoPending;
+    struct Node {
+        std::uint16_t cell;
+        std::uint8_t config, piece;
+        std::uint32_t next;  // the next piece waiting in the same block
+    };
+
+    std::vector<Node> nodes_;  // waiting pieces and, linked from free_, spare nodes
+    std::uint32_t free_ = kNone;
+    Ring<Block*> blocks_;      // blocks with pieces waiting, but for current_
+    Block* current_ = nullptr; // the block being walked
+    bool byBlock_;
+    Ring<Entry> pieces_;       // breadth-first
 };
 
 // Writes at the end of a mesh buffer through a pointer: the buffer is sized ahead
@@ -240,7 +333,7 @@ struct alignas(128) Walker {
 
 // A surface walked by one thread, whatever the sample type.
 struct TrackState {
-    explicit TrackState(const Dims& dims) : blocks(dims) {}
+    explicit TrackState(const Dims& dims, bool byBlock = true) : blocks(dims) { walker.queue = PieceQueue(byBlock); }
     SparseBlocks blocks;
     std::uint8_t* denseVisited = nullptr;  // one bit per piece per cell, for trackAllSurfaces
     Walker walker;
@@ -428,14 +521,15 @@ private:
         auto measure = [&](const Vertex* vertices, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
             detail::TriangleMeasure::addTo(doubledArea, sixfoldVolume, vertices[a], vertices[b], vertices[c]);
         };
-        while (!w.queue.empty() && visited < cellBudget) {
+        while (visited < cellBudget) {
             if constexpr (Shared) {
                 if ((visited & 63) == 0) {
                     if (!exchange->poll(w.thread, received)) break;
                     enqueueReceived(w, received);
                 }
             }
-            const Entry entry = w.queue.pop();
+            Entry entry;
+            if (!w.queue.pop(entry)) break;
             ++visited;
             const WalkTable::Walk& walk = walk_.walks[entry.config][entry.piece];
             Block* block = entry.block;
@@ -695,7 +789,7 @@ struct SurfaceTracker::Impl {
 };
 
 SurfaceTracker::SurfaceTracker(const Volume& volume, double iso, TableKind table)
-    : impl_(std::make_unique<Impl>(Impl{&volume, iso, table, makeWorker(volume, iso, table), TrackState(volume.dims())})) {}
+    : impl_(std::make_unique<Impl>(Impl{&volume, iso, table, makeWorker(volume, iso, table), TrackState(volume.dims(), false)})) {}
 SurfaceTracker::~SurfaceTracker() = default;
 SurfaceTracker::SurfaceTracker(SurfaceTracker&&) noexcept = default;
 SurfaceTracker& SurfaceTracker::operator=(SurfaceTracker&&) noexcept = default;
@@ -720,7 +814,7 @@ void checkSeed(const Volume& volume, double iso, const TrackWorker& worker, cons
 
 void SurfaceTracker::start(const GridEdge& seed) {
     checkSeed(*impl_->volume, impl_->iso, *impl_->worker, seed);
-    impl_->state = TrackState(impl_->volume->dims());
+    impl_->state = TrackState(impl_->volume->dims(), false);
     queueSeed(*impl_->volume, seed, *impl_->worker, impl_->state.blocks, impl_->state.walker);
 }
 
@@ -750,7 +844,7 @@ bool SurfaceTracker::done() const { return impl_->state.walker.queue.empty(); }
 const Mesh& SurfaceTracker::mesh() const { return impl_->state.walker.mesh; }
 std::size_t SurfaceTracker::cellsVisited() const { return impl_->state.walker.cellsVisited; }
 std::size_t SurfaceTracker::workingBytes() const {
-    return impl_->state.blocks.byteSize() + impl_->state.walker.queue.capacity() * sizeof(Entry);
+    return impl_->state.blocks.byteSize() + impl_->state.walker.queue.byteSize();
 }
 SurfaceStats SurfaceTracker::stats() const {
     const Walker& walker = impl_->state.walker;
@@ -814,12 +908,7 @@ Surface walkTogether(const Volume& volume, const TrackWorker& worker, const Grid
         surface.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
         return surface;
     }
-    PieceQueue queued;
-    std::swap(queued, walkers[0].queue);
-    while (!queued.empty()) {
-        const Entry entry = queued.pop();
-        walkers[std::size_t(entry.block->owner)].queue.push(entry);
-    }
+    for (const Entry& entry : walkers[0].queue.drain()) walkers[std::size_t(entry.block->owner)].queue.push(entry);
     Exchange exchange(threads);
     detail::runTogether(threads, [&](int t) { worker.walkShared(blocks, walkers[std::size_t(t)], exchange); }, [&] { exchange.stop(); });
 

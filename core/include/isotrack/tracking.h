@@ -56,7 +56,8 @@ SurfaceStats measureSurface(const Mesh& mesh, const Volume& volume, bool closedU
 // outside the volume or not crossed at `iso`.
 //
 // On one thread the vertices and triangles come in the order the walk reaches
-// them, breadth-first from the seed. With `threads` > 1 (up to 64) the threads
+// them: block by block (8x8x8 cells) from the seed, each block's pieces together
+// while its data is in cache. With `threads` > 1 (up to 64) the threads
 // walk the surface together: the same triangles and vertices, but in an order
 // that varies from run to run (and area and volume may differ in their last bits).
 Surface trackSurface(const Volume& volume, double iso, const GridEdge& seed,
