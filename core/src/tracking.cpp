@@ -32,6 +32,7 @@
 #include <limits>
 #include <mutex>
 #include <string>
+#include <stdexcept>
 #include <thread>
 
 #include "edge_vertex.h"
@@ -261,7 +262,9 @@ struct WalkTable {
         std::array<std::uint8_t, 24> exits{};  // face << 4 | entry edge
     };
     std::array<std::array<Walk, kMaxPieces>, 256> walks{};
-    static constexpr int kShortCorners = 12;  // four triangles
+    // The corners every piece's triangles fit in (five triangles, the most a
+    // piece of either table has): the walk copies this many, a fixed count.
+    static constexpr int kPieceCorners = 15;
     std::array<std::array<std::int8_t, 12>, 256> pieceOfEdge{};
     std::array<int, 6> link{}, cellStep{}, faceMask{}, faceSide{};
     std::array<std::array<int, 3>, 12> edgeOrigin{};
@@ -289,9 +292,9 @@ struct WalkTable {
                 for (int t = piece.firstTriangle; t < piece.firstTriangle + piece.triangleCount; ++t) {
                     for (std::int8_t edge : table[c].triangles[t]) walk.corners[walk.cornerCount++] = static_cast<std::uint8_t>(edge);
                 }
-                // Short pieces are copied kShortCorners corners at a time (see walk):
-                // the spare corners repeat the first, a vertex the piece has.
-                for (int k = walk.cornerCount; k < kShortCorners; ++k) walk.corners[std::size_t(k)] = walk.corners[0];
+                if (walk.cornerCount > kPieceCorners) throw std::logic_error("continuation table: a piece of more than five triangles");
+                // The spare corners repeat the first, a vertex the piece has (see walk).
+                for (int k = walk.cornerCount; k < kPieceCorners; ++k) walk.corners[std::size_t(k)] = walk.corners[0];
                 for (int f = 0; f < cube::kFaceCount; ++f) {
                     for (std::int8_t exit : piece.exits[f]) {
                         if (exit < 0) break;
@@ -556,18 +559,12 @@ private:
                 if (id == SparseBlocks::kNoVertex) id = newVertex<Shared>(w, out, slot, at, edge);
                 vertexOf[edge] = id;
             }
-            // A piece of up to four triangles (nearly all) copies a fixed count of
-            // corners and gives back the spare ones: no loop whose length changes
-            // from piece to piece, and so no mispredicted branch at its end.
-            std::uint32_t* indices;
-            if (walk.cornerCount <= WalkTable::kShortCorners) {
-                indices = out.indices.extend(WalkTable::kShortCorners);
-                for (int k = 0; k < WalkTable::kShortCorners; ++k) indices[k] = vertexOf[walk.corners[std::size_t(k)]];
-                out.indices.retract(std::size_t(WalkTable::kShortCorners - walk.cornerCount));
-            } else {
-                indices = out.indices.extend(walk.cornerCount);
-                for (int k = 0; k < walk.cornerCount; ++k) indices[k] = vertexOf[walk.corners[std::size_t(k)]];
-            }
+            // Every piece copies the same count of corners and gives back the spare
+            // ones: no loop whose length changes from piece to piece, and so no
+            // mispredicted branch at its end.
+            std::uint32_t* indices = out.indices.extend(WalkTable::kPieceCorners);
+            for (int k = 0; k < WalkTable::kPieceCorners; ++k) indices[k] = vertexOf[walk.corners[std::size_t(k)]];
+            out.indices.retract(std::size_t(WalkTable::kPieceCorners - walk.cornerCount));
             if constexpr (Shared) {
                 const std::uint32_t tagMask = ~w.indexMask;
                 for (int k = 0; k < walk.cornerCount; k += 3) {
