@@ -15,6 +15,7 @@
 #include <numeric>
 #include <type_traits>
 
+#include "huge_pages.h"
 #include "isotrack/tracking.h"
 #include "labelled_march.h"
 #include "parallel.h"
@@ -103,7 +104,8 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         return static_cast<std::uint32_t>(std::lower_bound(roots.begin(), roots.end(), root) - roots.begin());
     };
     Buffer<std::uint32_t>& component = labelled.root;
-    Buffer<std::uint32_t> local(mesh.vertices.size());
+    Buffer<std::uint32_t> local;
+    detail::resizeOnHugePages(local, mesh.vertices.size());
     std::vector<std::vector<Share>> shares(parts.size(), std::vector<Share>(count));
     // Runs of vertices and of triangles on one surface are common: the run's
     // surface and counters stay in registers.
@@ -141,9 +143,9 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
     }
     for (std::size_t k = 0; k < count; ++k) {
         if (k == largest) continue;  // it keeps the mesh's buffers
-        surfaces[k].mesh.vertices.resize(surfaces[k].stats.vertices);
-        surfaces[k].mesh.vertexEdges.resize(surfaces[k].stats.vertices);
-        surfaces[k].mesh.indices.resize(3 * surfaces[k].stats.triangles);
+        detail::resizeOnHugePages(surfaces[k].mesh.vertices, surfaces[k].stats.vertices);
+        detail::resizeOnHugePages(surfaces[k].mesh.vertexEdges, surfaces[k].stats.vertices);
+        detail::resizeOnHugePages(surfaces[k].mesh.indices, 3 * surfaces[k].stats.triangles);
     }
     // The largest surface is compacted in the mesh's own buffers: each range's
     // share moves to the start of the range (every element moves down, within the

@@ -1,7 +1,11 @@
 #pragma once
-// Large buffers written once from start to end (a tracked surface's mesh, its
-// sparse blocks) spend much of their time in page faults when the kernel backs
-// them with 4 KiB pages. Where the kernel offers transparent huge pages on
+// Large buffers written once from start to end (a tracked surface's mesh, the
+// exhaustive pass's mesh and labels) spend much of their time in page faults
+// when the kernel backs them with 4 KiB pages, and a volume streamed by the
+// exhaustive pass (64 MB for a 256^3 float volume) misses the TLB every 4 KiB;
+// on 2 MiB pages the blobs field marched 7% faster on one thread and 14% on two
+// (`isotrack extract --volume blobs_256.nrrd --iso 0.25 --method mc`, 40 runs
+// each, processes alternated). Where the kernel offers transparent huge pages on
 // request, ask for them on the 2 MiB-aligned part of such a buffer before it is
 // first touched. Elsewhere this does nothing.
 #include <cstddef>
@@ -24,6 +28,14 @@ inline void adviseHugePages(void* data, std::size_t bytes) {
     (void)data;
     (void)bytes;
 #endif
+}
+
+// Sizes a buffer whose new elements are left uninitialised (Buffer), then asks
+// for huge pages on it before anything touches them.
+template <class B>
+void resizeOnHugePages(B& buffer, std::size_t size) {
+    buffer.resize(size);
+    adviseHugePages(buffer.data(), size * sizeof(typename B::value_type));
 }
 
 }  // namespace isotrack::detail

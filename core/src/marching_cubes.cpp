@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "edge_vertex.h"
+#include "huge_pages.h"
 #include "isotrack/continuation.h"
 #include "isotrack/cube.h"
 #include "labelled_march.h"
@@ -574,9 +575,9 @@ void allocate(std::vector<Chunk>& chunks, Mesh& mesh) {
         triangles += chunk.triangleCount;
     }
     if (vertices >= kSeamBit) throw std::length_error("marching cubes: more than 2^31 vertices");
-    mesh.vertices.resize(vertices);
-    mesh.vertexEdges.resize(vertices);
-    mesh.indices.resize(3 * triangles);
+    detail::resizeOnHugePages(mesh.vertices, vertices);
+    detail::resizeOnHugePages(mesh.vertexEdges, vertices);
+    detail::resizeOnHugePages(mesh.indices, 3 * triangles);
 }
 
 // Resolves the placeholders each chunk left for the next chunk's first slice,
@@ -637,8 +638,8 @@ std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int 
         const PieceUnions* unions = nullptr;
         if (parent) {
             unions = &pieceUnions(table);
-            parent->resize(mesh.vertices.size());
-            tally->resize(mesh.vertices.size());
+            detail::resizeOnHugePages(*parent, mesh.vertices.size());
+            detail::resizeOnHugePages(*tally, mesh.vertices.size());
             parents = parent->data();
             tallies = tally->data();
         }
@@ -668,7 +669,7 @@ LabelledMesh marchLabelled(const Volume& volume, double iso, TableKind table, in
         out.chunks.push_back({chunk.vertexBase, chunk.vertexBase + chunk.vertexCount, chunk.indexBase / 3, chunk.indexBase / 3 + chunk.triangleCount});
     }
     // Every vertex's root, read without compressing paths so that chunks can run at once.
-    out.root.resize(parent.size());
+    resizeOnHugePages(out.root, parent.size());
     parallelFor(int(out.chunks.size()), threads, [&](int c) {
         const MarchedChunk& chunk = out.chunks[std::size_t(c)];
         for (std::size_t v = chunk.vertexBegin; v < chunk.vertexEnd; ++v) {

@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 
+#include "huge_pages.h"
 #include "isotrack/errors.h"
 
 namespace isotrack {
@@ -51,7 +52,11 @@ Volume::Volume(Dims dims, ScalarType type, Vec3d spacing, Vec3d origin)
     if (nx > maxSamples || ny > maxSamples / nx || nz > maxSamples / (nx * ny))
         throw InputError("volume: " + dimsText + " " + scalarTypeName(type) + " samples exceed the " +
                          std::to_string(kMaxVolumeBytes >> 30) + " GiB limit");
-    bytes_.assign(std::size_t(nx * ny * nz) * scalarTypeSize(type), std::byte{0});
+    // Samples on huge pages where the kernel offers them (huge_pages.h).
+    const std::size_t bytes = std::size_t(nx * ny * nz) * scalarTypeSize(type);
+    bytes_.reserve(bytes);
+    detail::adviseHugePages(bytes_.data(), bytes);
+    bytes_.assign(bytes, std::byte{0});
 }
 
 namespace {
