@@ -30,12 +30,13 @@ inline void adviseHugePages(void* data, std::size_t bytes) {
 #endif
 }
 
-// Sizes a buffer whose new elements are left uninitialised (Buffer), then asks
-// for huge pages on it before anything touches them.
-template <class B>
-void resizeOnHugePages(B& buffer, std::size_t size) {
+// Sizes a vector, asking for huge pages on its memory before the resize touches
+// it (a Buffer's new elements are left uninitialised, so only their writers do).
+template <class V>
+void resizeOnHugePages(V& buffer, std::size_t size) {
+    buffer.reserve(size);
+    adviseHugePages(buffer.data(), size * sizeof(typename V::value_type));
     buffer.resize(size);
-    adviseHugePages(buffer.data(), size * sizeof(typename B::value_type));
 }
 
 }  // namespace isotrack::detail

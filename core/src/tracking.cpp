@@ -891,9 +891,7 @@ Buffer<T>* sizeWhole(Buffer<T>& buffer, std::size_t size, Buffer<T>& fresh) {
         buffer.resize(size);
         return nullptr;
     }
-    fresh.reserve(size);
-    detail::adviseHugePages(fresh.data(), size * sizeof(T));
-    fresh.resize(size);
+    detail::resizeOnHugePages(fresh, size);
     return &fresh;
 }
 

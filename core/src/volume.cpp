@@ -52,11 +52,8 @@ Volume::Volume(Dims dims, ScalarType type, Vec3d spacing, Vec3d origin)
     if (nx > maxSamples || ny > maxSamples / nx || nz > maxSamples / (nx * ny))
         throw InputError("volume: " + dimsText + " " + scalarTypeName(type) + " samples exceed the " +
                          std::to_string(kMaxVolumeBytes >> 30) + " GiB limit");
-    // Samples on huge pages where the kernel offers them (huge_pages.h).
-    const std::size_t bytes = std::size_t(nx * ny * nz) * scalarTypeSize(type);
-    bytes_.reserve(bytes);
-    detail::adviseHugePages(bytes_.data(), bytes);
-    bytes_.assign(bytes, std::byte{0});
+    // Zeroed samples, on huge pages where the kernel offers them (huge_pages.h).
+    detail::resizeOnHugePages(bytes_, std::size_t(nx * ny * nz) * scalarTypeSize(type));
 }
 
 namespace {
