@@ -526,13 +526,9 @@ private:
     template <bool Shared>
     std::size_t walk(SparseBlocks& blocks, std::uint8_t* denseVisited, Walker& w, std::size_t cellBudget, Exchange* exchange) const {
         MeshAppender out(w.mesh);
+        const std::size_t firstIndex = out.indices.size(), firstVertex = out.vertices.size();
         std::size_t visited = 0;
         std::vector<Exchange::Message> received;
-        // The triangles' measure in locals, added to the walker's at the end.
-        double doubledArea = 0.0, sixfoldVolume = 0.0;
-        auto measure = [&](const Vertex* vertices, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-            detail::TriangleMeasure::addTo(doubledArea, sixfoldVolume, vertices[a], vertices[b], vertices[c]);
-        };
         while (visited < cellBudget) {
             if constexpr (Shared) {
                 if ((visited & 63) == 0) {
@@ -565,19 +561,6 @@ private:
             std::uint32_t* indices = out.indices.extend(WalkTable::kPieceCorners);
             for (int k = 0; k < WalkTable::kPieceCorners; ++k) indices[k] = vertexOf[walk.corners[std::size_t(k)]];
             out.indices.retract(std::size_t(WalkTable::kPieceCorners - walk.cornerCount));
-            if constexpr (Shared) {
-                const std::uint32_t tagMask = ~w.indexMask;
-                for (int k = 0; k < walk.cornerCount; k += 3) {
-                    const std::uint32_t a = indices[k], b = indices[k + 1], c = indices[k + 2];
-                    if ((((a ^ w.idBase) | (b ^ w.idBase) | (c ^ w.idBase)) & tagMask) == 0) {
-                        measure(w.mesh.vertices.data(), a & w.indexMask, b & w.indexMask, c & w.indexMask);
-                    } else {
-                        w.unmeasured.push_back(out.indices.size() - walk.cornerCount + std::size_t(k));
-                    }
-                }
-            } else {
-                for (int k = 0; k < walk.cornerCount; k += 3) measure(w.mesh.vertices.data(), indices[k], indices[k + 1], indices[k + 2]);
-            }
             const std::size_t sample = grid_.index(at[0], at[1], at[2]);
             for (int k = 0; k < walk.exitCount; ++k) {
                 const int f = walk.exits[std::size_t(k)] >> 4, edge = walk.exits[std::size_t(k)] & 15;
@@ -599,9 +582,44 @@ private:
                 }
             }
         }
-        w.measure.triangles.merge({doubledArea, sixfoldVolume});
+        measureAppended<Shared>(w, out, firstIndex, firstVertex);
         w.cellsVisited += visited;
         return visited;
+    }
+
+    // Adds to the walker's measure the triangles and vertices a walk appended
+    // from `firstIndex` and `firstVertex`, once it is over: four triangles at a
+    // time in vector registers, in the order they were made (so the sums are
+    // those of measuring each as it was made), and the bounds in locals. Shared,
+    // a triangle with another thread's corners is measured once the walk is over.
+    template <bool Shared>
+    static void measureAppended(Walker& w, const MeshAppender& out, std::size_t firstIndex, std::size_t firstVertex) {
+        const Vertex* vertices = w.mesh.vertices.data();
+        const std::uint32_t* indices = w.mesh.indices.data();
+        const std::size_t end = out.indices.size();
+        double doubledArea = 0.0, sixfoldVolume = 0.0;
+        std::size_t k = firstIndex;
+        if constexpr (Shared) {
+            const std::uint32_t tagMask = ~w.indexMask;
+            for (; k < end; k += 3) {
+                const std::uint32_t a = indices[k], b = indices[k + 1], c = indices[k + 2];
+                if ((((a ^ w.idBase) | (b ^ w.idBase) | (c ^ w.idBase)) & tagMask) == 0) {
+                    detail::TriangleMeasure::addTo(doubledArea, sixfoldVolume, vertices[a & w.indexMask], vertices[b & w.indexMask], vertices[c & w.indexMask]);
+                } else {
+                    w.unmeasured.push_back(k);
+                }
+            }
+        } else {
+            for (; k + 12 <= end; k += 12) detail::TriangleMeasure::addFourTo(doubledArea, sixfoldVolume, vertices, indices + k);
+            for (; k < end; k += 3) detail::TriangleMeasure::addTo(doubledArea, sixfoldVolume, vertices[indices[k]], vertices[indices[k + 1]], vertices[indices[k + 2]]);
+        }
+        w.measure.triangles.merge({doubledArea, sixfoldVolume});
+        float lo[3], hi[3];
+        for (int a = 0; a < 3; ++a) lo[a] = w.measure.boundsMin[a], hi[a] = w.measure.boundsMax[a];
+        for (std::size_t v = firstVertex; v < out.vertices.size(); ++v) {
+            for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], vertices[v].position[a]), hi[a] = std::max(hi[a], vertices[v].position[a]);
+        }
+        for (int a = 0; a < 3; ++a) w.measure.boundsMin[a] = lo[a], w.measure.boundsMax[a] = hi[a];
     }
 
     // The configuration of the cell whose first corner is `sample`.
@@ -674,8 +692,7 @@ private:
         } else {
             slot = id;
         }
-        *out.vertexEdges.extend(1) = e;
-        w.measure.addBounds(v);  // touchesBorder: see the exits in walk
+        *out.vertexEdges.extend(1) = e;  // bounds: measureAppended; touchesBorder: the exits in walk
         return id;
     }
 
