@@ -145,6 +145,25 @@ struct SurfaceMeasure {
             boundsMax[k] = std::max(boundsMax[k], v.position[k]);
         }
     }
+    // addBounds for `count` vertices, in vector registers.
+    void addBounds(const Vertex* vertices, std::size_t count) {
+#if defined(__SSE2__)
+        // A vertex's x, y, z and, ignored, its normal's x. minps(p, lo) is
+        // std::min(lo, p) exactly (lo unless p < lo), and maxps likewise.
+        __m128 lo = _mm_setr_ps(boundsMin[0], boundsMin[1], boundsMin[2], 0.0f), hi = _mm_setr_ps(boundsMax[0], boundsMax[1], boundsMax[2], 0.0f);
+        for (std::size_t v = 0; v < count; ++v) {
+            const __m128 p = _mm_loadu_ps(vertices[v].position);
+            lo = _mm_min_ps(p, lo);
+            hi = _mm_max_ps(p, hi);
+        }
+        alignas(16) float l[4], h[4];
+        _mm_store_ps(l, lo);
+        _mm_store_ps(h, hi);
+        for (int k = 0; k < 3; ++k) boundsMin[k] = l[k], boundsMax[k] = h[k];
+#else
+        for (std::size_t v = 0; v < count; ++v) addBounds(vertices[v]);
+#endif
+    }
     void addTriangle(const Vertex* vertices, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
         triangles.add(vertices[a], vertices[b], vertices[c]);
     }

@@ -614,12 +614,7 @@ private:
             for (; k < end; k += 3) detail::TriangleMeasure::addTo(doubledArea, sixfoldVolume, vertices[indices[k]], vertices[indices[k + 1]], vertices[indices[k + 2]]);
         }
         w.measure.triangles.merge({doubledArea, sixfoldVolume});
-        float lo[3], hi[3];
-        for (int a = 0; a < 3; ++a) lo[a] = w.measure.boundsMin[a], hi[a] = w.measure.boundsMax[a];
-        for (std::size_t v = firstVertex; v < out.vertices.size(); ++v) {
-            for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], vertices[v].position[a]), hi[a] = std::max(hi[a], vertices[v].position[a]);
-        }
-        for (int a = 0; a < 3; ++a) w.measure.boundsMin[a] = lo[a], w.measure.boundsMax[a] = hi[a];
+        w.measure.addBounds(vertices + firstVertex, out.vertices.size() - firstVertex);
     }
 
     // The configuration of the cell whose first corner is `sample`.

@@ -371,6 +371,40 @@ TEST_CASE("every surface together is the exhaustive mesh, triangle for triangle"
     SECTION("gyroid") { requireAllEqualsExhaustive(makeField({"gyroid", 48}), 0.0, TableKind::Consistent); }
 }
 
+TEST_CASE("every surface together is the exhaustive mesh for every sample type, across its whole range", "[core][tracking]") {
+    // The tracker classifies cell by cell (two or four samples to a vector lane
+    // for some types), the exhaustive pass row by row: both must agree on every
+    // cell, at isovalues near either end of the type's range and in its middle.
+    const Volume noise = makeField({"noise", 24});
+    const std::array<int, 3> n = noise.dims();
+    struct Case {
+        ScalarType type;
+        double low, high;  // the samples span [low, high]
+    };
+    const Case cases[] = {{ScalarType::UInt8, 0, 255},           {ScalarType::Int8, -128, 127},
+                          {ScalarType::UInt16, 0, 65535},        {ScalarType::Int16, -32768, 32767},
+                          {ScalarType::UInt32, 0, 4294967295.0}, {ScalarType::Int32, -2147483648.0, 2147483647.0},
+                          {ScalarType::Float32, -1e6, 1e6},      {ScalarType::Float64, -1e6, 1e6}};
+    for (const Case& c : cases) {
+        Volume volume(n, c.type);
+        const bool real = c.type == ScalarType::Float32 || c.type == ScalarType::Float64;
+        for (int z = 0; z < n[2]; ++z) {
+            for (int y = 0; y < n[1]; ++y) {
+                for (int x = 0; x < n[0]; ++x) {
+                    const double v = std::round(c.low + (c.high - c.low) * noise.value(x, y, z));
+                    // A few NaN samples in the real types: below every isovalue.
+                    volume.setValue(x, y, z, real && (x * 7 + y * 3 + z) % 61 == 0 ? std::nan("") : v);
+                }
+            }
+        }
+        for (const double fraction : {0.02, 0.5, 0.98}) {
+            const double iso = c.low + fraction * (c.high - c.low) + 0.5;
+            INFO("type " << int(c.type) << ", iso " << iso);
+            requireAllEqualsExhaustive(volume, iso, TableKind::Consistent);
+        }
+    }
+}
+
 TEST_CASE("nested shells are three closed surfaces, one inside another", "[core][tracking]") {
     const auto surfaces = extractAllSurfaces(makeField({"shells", 64}), 0.0);
     REQUIRE(surfaces.size() == 3);
