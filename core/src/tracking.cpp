@@ -270,6 +270,7 @@ struct WalkTable {
     std::array<std::array<int, 3>, 12> edgeOrigin{};
     std::array<int, 12> edgeAxis{};
     std::array<int, 12> edgeLocal{};  // offset of the edge's origin in a sparse block's local index
+    std::array<int, 12> edgeSlot{};   // offset of the edge's vertex id from its cell's first corner's ids in a block
 
     explicit WalkTable(TableKind kind) {
         using detail::SparseBlocks;
@@ -307,6 +308,7 @@ struct WalkTable {
             edgeOrigin[e] = cube::edgeOrigin(e);
             edgeAxis[e] = cube::edgeAxis(e);
             edgeLocal[e] = detail::SparseBlocks::local(edgeOrigin[e][0], edgeOrigin[e][1], edgeOrigin[e][2]);
+            edgeSlot[e] = 3 * edgeLocal[e] + edgeAxis[e];
         }
     }
 };
@@ -485,6 +487,10 @@ public:
             sampleStep_[f] = cube::faceSide(f) ? stride[axis] : 0 - stride[axis];
             border_[f] = cube::faceSide(f) ? last[axis] : 0;
         }
+        const int size[3] = {grid_.nx(), grid_.ny(), grid_.nz()};
+        for (int a = 0; a < 3; ++a) {
+            for (int k = 0; k < 3; ++k) interiorSpan_[std::size_t(a)][std::size_t(k)] = unsigned(std::max(0, size[k] - 2 - (a == k)));
+        }
     }
 
     std::uint8_t config(int x, int y, int z) const override { return configAt(grid_.index(x, y, z)); }
@@ -547,9 +553,10 @@ private:
             // The cell's block holds its corners too unless it sits on the block's upper faces.
             const bool cornersInBlock = local[0] < kLast && local[1] < kLast && local[2] < kLast;
             std::array<std::uint32_t, 12> vertexOf;
+            std::uint32_t* const cellSlots = block->vertex.data() + 3 * cell;  // the ids at the cell's first corner
             for (unsigned mask = walk.edgeMask; mask != 0; mask &= mask - 1) {
                 const int edge = __builtin_ctz(mask);
-                std::uint32_t& slot = cornersInBlock ? block->vertex[std::size_t(3 * (cell + walk_.edgeLocal[edge]) + walk_.edgeAxis[edge])]
+                std::uint32_t& slot = cornersInBlock ? cellSlots[walk_.edgeSlot[edge]]
                                                      : vertexSlot(blocks, block, local, edge, w.thread);
                 std::uint32_t id = Shared ? __atomic_load_n(&slot, __ATOMIC_RELAXED) : slot;
                 if (id == SparseBlocks::kNoVertex) id = newVertex<Shared>(w, out, slot, at, edge);
@@ -652,8 +659,8 @@ private:
     // edgeVertex, through its interior form when both ends of the edge have their six neighbours in the volume.
     template <int Axis>
     void vertexAlong(int x, int y, int z, Vertex& v) const {
-        const int far[3] = {x + (Axis == 0) + 1, y + (Axis == 1) + 1, z + (Axis == 2) + 1};
-        if (x > 0 && y > 0 && z > 0 && far[0] < grid_.nx() && far[1] < grid_.ny() && far[2] < grid_.nz()) {
+        const auto& span = interiorSpan_[Axis];
+        if (unsigned(x - 1) < span[0] && unsigned(y - 1) < span[1] && unsigned(z - 1) < span[2]) {
             grid_.template interiorEdgeVertex<Axis>(grid_.index(x, y, z), x, y, z, v);
         } else {
             grid_.edgeVertex(x, y, z, Axis, v);
@@ -695,6 +702,10 @@ private:
     const WalkTable& walk_;
     std::array<std::size_t, 6> sampleStep_{};  // to the first corner of the cell across each face
     std::array<int, 6> border_{};              // the cells' coordinate on the volume's border, per face
+    // Per edge axis and coordinate, the count of origins p with 0 < p and p + 1
+    // (p + 2 along the edge) < the volume's size: an edge whose ends both have
+    // their six neighbours has unsigned(p - 1) < that count on every axis.
+    std::array<std::array<unsigned, 3>, 3> interiorSpan_{};
 };
 
 std::unique_ptr<TrackWorker> makeWorker(const Volume& volume, double iso, TableKind table) {
