@@ -102,7 +102,8 @@ public:
             const __m128i above = _mm_cmpgt_epi16(v, below);
             return static_cast<std::uint8_t>(_mm_movemask_epi8(_mm_packs_epi16(above, above)));
         } else if constexpr (std::is_same_v<T, float>) {
-            auto row = [](const T* at) { return _mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(at))); };
+            // Two floats in the low half (an unaligned 64-bit load).
+            auto row = [](const T* at) { return _mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(at))); };
             const __m128 lower = _mm_movelh_ps(row(s), row(s + sy)), upper = _mm_movelh_ps(row(s + sz), row(s + sy + sz));
             const __m128 threshold = _mm_set1_ps(t);
             // x, x + 1, then x + 1, x at y + 1; NaN compares false, as below.
