@@ -2,6 +2,7 @@
 // Vertex placement shared by every extractor, so that an edge crossed by the
 // surface yields the same vertex whichever algorithm visits it.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -61,6 +62,10 @@ public:
           iso_(iso),
           threshold_(iso) {
         for (int k = 0; k < 3; ++k) halfInverseSpacing_[k] = 0.5 / spacing_[k];
+        const int size[3] = {nx_, ny_, nz_};
+        for (int a = 0; a < 3; ++a) {
+            for (int k = 0; k < 3; ++k) interiorSpan_[std::size_t(a)][std::size_t(k)] = unsigned(std::max(0, size[k] - 2 - (a == k)));
+        }
     }
 
     int nx() const { return nx_; }
@@ -142,6 +147,14 @@ public:
         }
     }
 
+    // Whether both ends of the edge from (x, y, z) along `Axis` have their six
+    // neighbours in the volume: one unsigned compare per axis.
+    template <int Axis>
+    bool edgeInterior(int x, int y, int z) const {
+        const auto& span = interiorSpan_[Axis];
+        return unsigned(x - 1) < span[0] && unsigned(y - 1) < span[1] && unsigned(z - 1) < span[2];
+    }
+
     // edgeVertex for an edge along `Axis` from sample `a` = (x, y, z) whose two
     // ends have all six neighbours in the volume, without the tests on the axis
     // and the border. Trackers call it once they know the edge is inside.
@@ -209,7 +222,7 @@ private:
         const std::size_t b = a + stride<Axis>();
         const int ex = x + (Axis == 0), ey = y + (Axis == 1), ez = z + (Axis == 2);
         double ga[3], gb[3];
-        if (x > 0 && y > 0 && z > 0 && ex + 1 < nx_ && ey + 1 < ny_ && ez + 1 < nz_) {
+        if (edgeInterior<Axis>(x, y, z)) {
             interiorGradient(a, ga);
             interiorGradient(b, gb);
         } else {
@@ -250,6 +263,9 @@ private:
     double halfInverseSpacing_[3];
     double iso_;
     NativeThreshold<T> threshold_;
+    // Per edge axis and coordinate, the count of origins p with 0 < p and p + 1
+    // (p + 2 along the edge) < the volume's size (edgeInterior).
+    std::array<std::array<unsigned, 3>, 3> interiorSpan_{};
 };
 
 }  // namespace isotrack::detail

@@ -487,10 +487,6 @@ public:
             sampleStep_[f] = cube::faceSide(f) ? stride[axis] : 0 - stride[axis];
             border_[f] = cube::faceSide(f) ? last[axis] : 0;
         }
-        const int size[3] = {grid_.nx(), grid_.ny(), grid_.nz()};
-        for (int a = 0; a < 3; ++a) {
-            for (int k = 0; k < 3; ++k) interiorSpan_[std::size_t(a)][std::size_t(k)] = unsigned(std::max(0, size[k] - 2 - (a == k)));
-        }
     }
 
     std::uint8_t config(int x, int y, int z) const override { return configAt(grid_.index(x, y, z)); }
@@ -597,7 +593,7 @@ private:
     // Adds to the walker's measure the triangles and vertices a walk appended
     // from `firstIndex` and `firstVertex`, once it is over: four triangles at a
     // time in vector registers, in the order they were made (so the sums are
-    // those of measuring each as it was made), and the bounds in locals. Shared,
+    // those of measuring each as it was made), and the bounds likewise. Shared,
     // a triangle with another thread's corners is measured once the walk is over.
     template <bool Shared>
     static void measureAppended(Walker& w, const MeshAppender& out, std::size_t firstIndex, std::size_t firstVertex) {
@@ -659,8 +655,7 @@ private:
     // edgeVertex, through its interior form when both ends of the edge have their six neighbours in the volume.
     template <int Axis>
     void vertexAlong(int x, int y, int z, Vertex& v) const {
-        const auto& span = interiorSpan_[Axis];
-        if (unsigned(x - 1) < span[0] && unsigned(y - 1) < span[1] && unsigned(z - 1) < span[2]) {
+        if (grid_.template edgeInterior<Axis>(x, y, z)) {
             grid_.template interiorEdgeVertex<Axis>(grid_.index(x, y, z), x, y, z, v);
         } else {
             grid_.edgeVertex(x, y, z, Axis, v);
@@ -702,10 +697,6 @@ private:
     const WalkTable& walk_;
     std::array<std::size_t, 6> sampleStep_{};  // to the first corner of the cell across each face
     std::array<int, 6> border_{};              // the cells' coordinate on the volume's border, per face
-    // Per edge axis and coordinate, the count of origins p with 0 < p and p + 1
-    // (p + 2 along the edge) < the volume's size: an edge whose ends both have
-    // their six neighbours has unsigned(p - 1) < that count on every axis.
-    std::array<std::array<unsigned, 3>, 3> interiorSpan_{};
 };
 
 std::unique_ptr<TrackWorker> makeWorker(const Volume& volume, double iso, TableKind table) {
