@@ -87,14 +87,15 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
 
     // Surfaces numbered in order of their roots (their first vertices): each
     // range lists its roots, and the lists one after the other are in order.
-    // Then each vertex's root becomes its surface's number (`component`, in
-    // place), the vertex gets its index in its range's share of that surface
-    // (`local`), and the share adds up the cell pieces and triangles tallied at
-    // its vertices.
+    // Then each vertex's walk to its root gives its surface's number
+    // (`component`), the vertex gets its index in its range's share of that
+    // surface (`local`), and the share adds up the cell pieces and triangles
+    // tallied at its vertices. The walks only read the forest, so ranges run at once.
+    const std::uint32_t* parent = labelled.parent.data();
     std::vector<std::vector<std::uint32_t>> rootsOf(parts.size());
     forParts([&](const Range& part, std::size_t r) {
         for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
-            if (labelled.root[v] == v) rootsOf[r].push_back(static_cast<std::uint32_t>(v));
+            if (parent[v] == v) rootsOf[r].push_back(static_cast<std::uint32_t>(v));
         }
     });
     std::vector<std::uint32_t> roots;
@@ -103,8 +104,8 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
     auto numberOf = [&](std::uint32_t root) {
         return static_cast<std::uint32_t>(std::lower_bound(roots.begin(), roots.end(), root) - roots.begin());
     };
-    Buffer<std::uint32_t>& component = labelled.root;
-    Buffer<std::uint32_t> local;
+    Buffer<std::uint32_t> component, local;
+    detail::resizeOnHugePages(component, mesh.vertices.size());
     detail::resizeOnHugePages(local, mesh.vertices.size());
     std::vector<std::vector<Share>> shares(parts.size(), std::vector<Share>(count));
     // Runs of vertices and of triangles on one surface are common: the run's
@@ -113,9 +114,11 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         std::vector<Share>& share = shares[r];
         std::uint32_t lastRoot = kNone, k = 0, counter = 0, triangles = 0, pieces = 0;
         for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
-            if (component[v] != lastRoot) {
+            std::uint32_t root = parent[v];
+            while (parent[root] != root) root = parent[root];
+            if (root != lastRoot) {
                 if (lastRoot != kNone) share[k].vertices = counter, share[k].triangles = triangles, share[k].pieces = pieces;
-                lastRoot = component[v];
+                lastRoot = root;
                 k = numberOf(lastRoot);
                 counter = share[k].vertices, triangles = share[k].triangles, pieces = share[k].pieces;
             }
@@ -127,6 +130,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         }
         if (lastRoot != kNone) share[k].vertices = counter, share[k].triangles = triangles, share[k].pieces = pieces;
     });
+    Buffer<std::uint32_t>().swap(labelled.parent);
     std::vector<Surface> surfaces(count);
     std::size_t largest = 0;
     for (std::size_t k = 0; k < count; ++k) {

@@ -26,7 +26,10 @@ constexpr unsigned kTalliedPiece = 32, kTalliedTriangles = kTalliedPiece - 1;
 struct LabelledMesh {
     Mesh mesh;
     std::vector<MarchedChunk> chunks;
-    Buffer<std::uint32_t> root;   // per vertex, the smallest vertex id of its connected surface
+    // Per vertex, its parent in a union-find forest of the connected surfaces: a
+    // surface's root is its smallest vertex id, its own parent; parents are never
+    // above their children, so a vertex's root is the end of a descending walk.
+    Buffer<std::uint32_t> parent;
     Buffer<std::uint8_t> tally;   // per vertex, the cell pieces and triangles counted at it (kTalliedPiece)
 };
 

@@ -26,8 +26,8 @@
 // each cell piece in a union-find over the chunk's own vertex range, while they
 // are in cache (looking up only the vertices that earlier cells have not joined
 // already, see PieceUnions), and tallies the piece and its triangles at one vertex;
-// stitch joins across seams, and a last parallel pass gives each vertex its
-// surface's root.
+// stitch joins across seams. The forest is handed on as it is: extractAllSurfaces
+// walks each vertex to its root while it numbers the surfaces.
 #include "isotrack/marching_cubes.h"
 
 #include <algorithm>
@@ -663,21 +663,10 @@ namespace detail {
 
 LabelledMesh marchLabelled(const Volume& volume, double iso, TableKind table, int threads) {
     LabelledMesh out;
-    Buffer<std::uint32_t> parent;
-    std::vector<Chunk> chunks = march(volume, iso, table, threads, out.mesh, &parent, &out.tally);
+    std::vector<Chunk> chunks = march(volume, iso, table, threads, out.mesh, &out.parent, &out.tally);
     for (Chunk& chunk : chunks) {
         out.chunks.push_back({chunk.vertexBase, chunk.vertexBase + chunk.vertexCount, chunk.indexBase / 3, chunk.indexBase / 3 + chunk.triangleCount});
     }
-    // Every vertex's root, read without compressing paths so that chunks can run at once.
-    resizeOnHugePages(out.root, parent.size());
-    parallelFor(int(out.chunks.size()), threads, [&](int c) {
-        const MarchedChunk& chunk = out.chunks[std::size_t(c)];
-        for (std::size_t v = chunk.vertexBegin; v < chunk.vertexEnd; ++v) {
-            std::uint32_t r = parent[v];
-            while (parent[r] != r) r = parent[r];
-            out.root[v] = r;
-        }
-    });
     return out;
 }
 
