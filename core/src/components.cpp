@@ -212,12 +212,19 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             }
             if (out) {
                 // Read before writing: a compacted triangle may land on its own corners.
-                for (std::size_t i = 0; i < 3 * run; ++i) {
-                    if constexpr (decltype(oneRange)::value) {
-                        out[i] = localIndex[v[i]];
-                    } else {
-                        out[i] = localIndex[v[i]] + (v[i] < vertexEnd ? own : next);
+                auto remap = [&](auto corners) {
+                    for (std::size_t i = 0; i < decltype(corners)::value; ++i) {
+                        if constexpr (decltype(oneRange)::value) {
+                            out[i] = localIndex[v[i]];
+                        } else {
+                            out[i] = localIndex[v[i]] + (v[i] < vertexEnd ? own : next);
+                        }
                     }
+                };
+                if (run == 4) {
+                    remap(std::integral_constant<std::size_t, 12>{});
+                } else {
+                    remap(std::integral_constant<std::size_t, 3>{});
                 }
                 out += 3 * run;
             }
