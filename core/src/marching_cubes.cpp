@@ -144,6 +144,7 @@ struct EdgeSlots {
     std::array<std::uint8_t, 256> configOfColumns{};
     std::array<int, 12> axis{};
     std::array<int, 12> dz{};
+    std::array<std::array<int, 3>, 12> origin{};  // the edge's first corner, from the cell's
     std::array<std::size_t, 12> offset{};  // within a slice, from the cell's origin sample
     std::array<std::uint16_t, 256> crossed{};
 };
@@ -152,6 +153,7 @@ EdgeSlots edgeSlots(int nx) {
     EdgeSlots s;
     for (int e = 0; e < cube::kEdgeCount; ++e) {
         const auto& o = cube::edgeOrigin(e);
+        s.origin[e] = o;
         s.axis[e] = cube::edgeAxis(e);
         s.dz[e] = o[2];
         s.offset[e] = std::size_t(o[0]) + std::size_t(nx) * std::size_t(o[1]);
@@ -539,7 +541,7 @@ private:
             parent_[id] = *slot;
             tally_[id] = 0;
         }
-        const auto& o = cube::edgeOrigin(edge);
+        const auto& o = slots_.origin[edge];
         grid_.edgeVertex(x + o[0], y + o[1], z + o[2], axis, mesh_.vertices[id]);
         mesh_.vertexEdges[id] = GridEdge{x + o[0], y + o[1], z + o[2], axis};
         return *slot;
