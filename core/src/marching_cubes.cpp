@@ -19,7 +19,7 @@
 //     least the vertex count at which its slice entered the slab window.
 // The x- and y-edges on the slice between two chunks belong to the upper chunk;
 // the lower chunk writes placeholders for them, resolved from the upper chunk's
-// first slice once both are done (stitch). Temporaries are a few slices of flags
+// first slice by whichever of the two is written last, on its thread. Temporaries are a few slices of flags
 // and ids per chunk, never per voxel of the volume.
 //
 // Labelled (for extractAllSurfaces), the writing pass also joins the vertices of
@@ -31,6 +31,7 @@
 #include "isotrack/marching_cubes.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -221,8 +222,8 @@ class ChunkMarcher {
 public:
     // With `parent`, the writing pass labels surfaces in it (one entry per vertex of the mesh).
     ChunkMarcher(const detail::SampleGrid<T>& grid, const std::array<CaseContinuation, 256>& table, const EdgeSlots& slots,
-                 const PieceUnions* unions, std::uint32_t* parent, std::uint8_t* tally, Chunk& chunk, Mesh& mesh)
-        : grid_(grid), table_(table), slots_(slots), unions_(unions), parent_(parent), tally_(tally), chunk_(chunk), mesh_(mesh), nx_(grid.nx()), ny_(grid.ny()),
+                 const PieceUnions* unions, std::uint32_t* parent, std::uint8_t* tally, Mesh& mesh)
+        : grid_(grid), table_(table), slots_(slots), unions_(unions), parent_(parent), tally_(tally), mesh_(mesh), nx_(grid.nx()), ny_(grid.ny()),
           sliceSize_(std::size_t(grid.nx()) * std::size_t(grid.ny())), rowBytes_(std::size_t(grid.nx() + 7) / 8) {
         for (int s = 0; s < 2; ++s) {
             flags_[s].assign(sliceSize_ + 8, 0);  // rows are packed and unpacked 8 flags at a time
@@ -238,54 +239,61 @@ public:
     // Counts the chunk's vertices (the crossed edges it owns: every crossed edge is
     // used by a cell) and triangles, so its buffers are allocated once, at their
     // final size, instead of growing by copies.
-    void count() {
+    void count(Chunk& chunk) {
+        chunk_ = &chunk;
         std::size_t vertices = 0, triangles = 0;
-        const std::size_t slices = std::size_t(chunk_.zEnd - chunk_.zBegin + 1);
-        chunk_.kept.assign(slices, 0);
-        chunk_.spans.resize(slices * std::size_t(ny_));
-        chunk_.flagBits.resize(slices * std::size_t(ny_) * rowBytes_);
-        classifySlice(chunk_.zBegin, 0);
+        const std::size_t slices = std::size_t(chunk_->zEnd - chunk_->zBegin + 1);
+        chunk_->kept.assign(slices, 0);
+        chunk_->spans.resize(slices * std::size_t(ny_));
+        chunk_->flagBits.resize(slices * std::size_t(ny_) * rowBytes_);
+        classifySlice(chunk_->zBegin, 0);
         const std::size_t first = planarCrossings(0);
-        keepSlice(chunk_.zBegin, 0, first);
+        keepSlice(chunk_->zBegin, 0, first);
         vertices += first;
-        for (int z = chunk_.zBegin; z < chunk_.zEnd; ++z) {
-            const int bottom = (z - chunk_.zBegin) & 1, top = bottom ^ 1;
+        for (int z = chunk_->zBegin; z < chunk_->zEnd; ++z) {
+            const int bottom = (z - chunk_->zBegin) & 1, top = bottom ^ 1;
             classifySlice(z + 1, top);
             const std::size_t crossings = planarCrossings(top);
             keepSlice(z + 1, top, crossings);
-            if (z + 1 < chunk_.zEnd || chunk_.last) vertices += crossings;
+            if (z + 1 < chunk_->zEnd || chunk_->last) vertices += crossings;
             vertices += verticalCrossings(bottom, top);
             for (int y = 0; y + 1 < ny_; ++y) triangles += rowTriangles(y, bottom, top);
         }
-        chunk_.vertexCount = vertices;
-        chunk_.triangleCount = triangles;
+        chunk_->vertexCount = vertices;
+        chunk_->triangleCount = triangles;
     }
 
     // Writes the chunk into mesh_, whose buffers already have their final size.
-    void run() {
-        for (auto& planar : planar_) planar.assign(2 * sliceSize_, kNoVertex);  // vertex id caches, for writing only
-        vertical_.assign(sliceSize_, kNoVertex);
-        restoreSlice(chunk_.zBegin, 0);
-        threshold_[0] = 0;
-        for (int z = chunk_.zBegin; z < chunk_.zEnd; ++z) {
-            const int bottom = (z - chunk_.zBegin) & 1, top = bottom ^ 1;
+    // A marcher writes its chunks in order (parallelFor hands them out so): the
+    // ids its caches hold from earlier chunks are below this one's first, so
+    // invalid here, and the caches need no clearing between chunks.
+    void run(Chunk& chunk) {
+        chunk_ = &chunk;
+        if (vertical_.empty()) {
+            for (auto& planar : planar_) planar.assign(2 * sliceSize_, kNoVertex);  // vertex id caches, for writing only
+            vertical_.assign(sliceSize_, kNoVertex);
+        }
+        restoreSlice(chunk_->zBegin, 0);
+        threshold_[0] = static_cast<std::uint32_t>(chunk_->vertexBase);
+        for (int z = chunk_->zBegin; z < chunk_->zEnd; ++z) {
+            const int bottom = (z - chunk_->zBegin) & 1, top = bottom ^ 1;
             restoreSlice(z + 1, top);
-            threshold_[top] = static_cast<std::uint32_t>(chunk_.vertexBase + chunk_.vertexCursor);
+            threshold_[top] = static_cast<std::uint32_t>(chunk_->vertexBase + chunk_->vertexCursor);
             verticalThreshold_ = threshold_[top];
             // Only a seam slab (the last of a chunk but the last) meets the next chunk's slice.
-            if (!chunk_.last && z + 1 == chunk_.zEnd) {
+            if (!chunk_->last && z + 1 == chunk_->zEnd) {
                 for (int y = 0; y + 1 < ny_; ++y) marchRow<true>(y, z, bottom, top);
             } else {
                 for (int y = 0; y + 1 < ny_; ++y) marchRow<false>(y, z, bottom, top);
             }
-            if (z == chunk_.zBegin) chunk_.firstSliceIds = planar_[bottom];
+            if (z == chunk_->zBegin) chunk_->firstSliceIds = planar_[bottom];
         }
-        if (chunk_.vertexCursor != chunk_.vertexCount || chunk_.indexCursor != 3 * chunk_.triangleCount) {
+        if (chunk_->vertexCursor != chunk_->vertexCount || chunk_->indexCursor != 3 * chunk_->triangleCount) {
             throw std::logic_error("marching cubes: a chunk wrote other counts than it counted");
         }
-        chunk_.kept = {};
-        chunk_.spans = {};
-        chunk_.flagBits = {};
+        chunk_->kept = {};
+        chunk_->spans = {};
+        chunk_->flagBits = {};
     }
 
 private:
@@ -310,26 +318,26 @@ private:
     // Keeps slice z's classification (in `slot`) in the chunk: spans, and packed flags of the rows that change.
     void keepSlice(int z, int slot, std::size_t crossings) {
         if (crossings * 8 > sliceSize_) return;  // dense: classified again
-        chunk_.kept[std::size_t(z - chunk_.zBegin)] = 1;
-        const std::size_t slice = std::size_t(z - chunk_.zBegin) * std::size_t(ny_);
-        std::copy(spans_[slot].begin(), spans_[slot].end(), chunk_.spans.begin() + std::ptrdiff_t(slice));
+        chunk_->kept[std::size_t(z - chunk_->zBegin)] = 1;
+        const std::size_t slice = std::size_t(z - chunk_->zBegin) * std::size_t(ny_);
+        std::copy(spans_[slot].begin(), spans_[slot].end(), chunk_->spans.begin() + std::ptrdiff_t(slice));
         const std::uint8_t* flags = flags_[slot].data();
         for (int y = 0; y < ny_; ++y) {
             if (spans_[slot][std::size_t(y)].lo >= spans_[slot][std::size_t(y)].hi) continue;  // constant: its first flag says all
             const std::uint8_t* row = flags + std::size_t(nx_) * std::size_t(y);
-            std::uint8_t* bits = chunk_.flagBits.data() + (slice + std::size_t(y)) * rowBytes_;
+            std::uint8_t* bits = chunk_->flagBits.data() + (slice + std::size_t(y)) * rowBytes_;
             for (std::size_t b = 0; b < rowBytes_; ++b) bits[b] = packFlags(row + 8 * b);
         }
     }
 
     // classifySlice for the writing pass, from what the counting pass kept.
     void restoreSlice(int z, int slot) {
-        if (!chunk_.kept[std::size_t(z - chunk_.zBegin)]) {
+        if (!chunk_->kept[std::size_t(z - chunk_->zBegin)]) {
             classifySlice(z, slot);
             return;
         }
-        const std::size_t slice = std::size_t(z - chunk_.zBegin) * std::size_t(ny_);
-        std::copy(chunk_.spans.begin() + std::ptrdiff_t(slice), chunk_.spans.begin() + std::ptrdiff_t(slice) + ny_, spans_[slot].begin());
+        const std::size_t slice = std::size_t(z - chunk_->zBegin) * std::size_t(ny_);
+        std::copy(chunk_->spans.begin() + std::ptrdiff_t(slice), chunk_->spans.begin() + std::ptrdiff_t(slice) + ny_, spans_[slot].begin());
         const std::array<std::uint64_t, 256>& expand = flagExpansion();
         std::uint8_t* flags = flags_[slot].data();
         for (int y = 0; y < ny_; ++y) {
@@ -339,7 +347,7 @@ private:
                 std::memset(row, span.first, std::size_t(nx_));
                 continue;
             }
-            const std::uint8_t* bits = chunk_.flagBits.data() + (slice + std::size_t(y)) * rowBytes_;
+            const std::uint8_t* bits = chunk_->flagBits.data() + (slice + std::size_t(y)) * rowBytes_;
             // The last byte may spill past the row; the next row (or the padding) is written after.
             for (std::size_t b = 0; b < rowBytes_; ++b) std::memcpy(row + 8 * b, &expand[bits[b]], 8);
         }
@@ -476,9 +484,9 @@ private:
                 ids[e] = vertexOnEdge<SeamSlab>(x, y, z, cell, e, bottom, top);
             }
             const CaseContinuation& cased = table_[config];
-            if (parent_) unitePieces(config, cased, ids, unsigned(x > 0) | unsigned(y > 0) << 1 | unsigned(z > chunk_.zBegin) << 2);
+            if (parent_) unitePieces(config, cased, ids, unsigned(x > 0) | unsigned(y > 0) << 1 | unsigned(z > chunk_->zBegin) << 2);
             const int triangles = triangleCount_[config];
-            const std::size_t at = chunk_.indexBase + chunk_.indexCursor;
+            const std::size_t at = chunk_->indexBase + chunk_->indexCursor;
             std::uint32_t* out = mesh_.indices.data() + at;
             // Placeholders for the next chunk's slice come only in a seam slab.
             for (int t = 0; t < triangles; ++t) {
@@ -487,10 +495,10 @@ private:
             }
             if (SeamSlab) {
                 for (int c = 0; c < 3 * triangles; ++c) {
-                    if (out[c] & kSeamBit) chunk_.seamIndices.push_back(at + std::size_t(c));
+                    if (out[c] & kSeamBit) chunk_->seamIndices.push_back(at + std::size_t(c));
                 }
             }
-            chunk_.indexCursor += 3 * std::size_t(triangles);
+            chunk_->indexCursor += 3 * std::size_t(triangles);
         }
     }
 
@@ -535,7 +543,7 @@ private:
             threshold = threshold_[s];
         }
         if (*slot != kNoVertex && *slot >= threshold) return *slot;
-        const std::size_t id = chunk_.vertexBase + chunk_.vertexCursor++;
+        const std::size_t id = chunk_->vertexBase + chunk_->vertexCursor++;
         *slot = static_cast<std::uint32_t>(id);
         if (parent_) {
             parent_[id] = *slot;
@@ -553,7 +561,7 @@ private:
     const PieceUnions* const unions_;  // with parent_
     std::uint32_t* const parent_;
     std::uint8_t* const tally_;
-    Chunk& chunk_;
+    Chunk* chunk_ = nullptr;  // the chunk being marched
     Mesh& mesh_;
     const int nx_, ny_;
     const std::size_t sliceSize_, rowBytes_;
@@ -582,28 +590,27 @@ void allocate(std::vector<Chunk>& chunks, Mesh& mesh) {
     detail::resizeOnHugePages(mesh.indices, 3 * triangles);
 }
 
-// Resolves the placeholders each chunk left for the next chunk's first slice,
-// and joins the surfaces across the seams when labelling.
+// Resolves the placeholders chunk c left for chunk c + 1's first slice, once both are written.
+void resolveSeam(std::vector<Chunk>& chunks, std::size_t c, Mesh& mesh) {
+    const std::vector<std::uint32_t>& next = chunks[c + 1].firstSliceIds;
+    for (std::size_t at : chunks[c].seamIndices) mesh.indices[at] = next[mesh.indices[at] & ~kSeamBit];
+}
+
+// Joins the surfaces across the seams, for labelling (the placeholders resolved).
 void stitch(std::vector<Chunk>& chunks, Mesh& mesh, std::uint32_t* parent) {
+    // Each triangle with a placeholder joins its three corners, once (seam
+    // indices come in order, a triangle's together).
     for (std::size_t c = 0; c + 1 < chunks.size(); ++c) {
-        const std::vector<std::uint32_t>& next = chunks[c + 1].firstSliceIds;
-        for (std::size_t at : chunks[c].seamIndices) mesh.indices[at] = next[mesh.indices[at] & ~kSeamBit];
-    }
-    if (parent) {
-        // Each triangle with a placeholder joins its three corners, once (seam
-        // indices come in order, a triangle's together).
-        for (std::size_t c = 0; c + 1 < chunks.size(); ++c) {
-            std::size_t joined = ~std::size_t(0);
-            for (std::size_t at : chunks[c].seamIndices) {
-                const std::size_t first = at - at % 3;
-                if (first == joined) continue;
-                joined = first;
-                const std::uint32_t* triangle = &mesh.indices[first];
-                std::uint32_t root = findRoot(parent, triangle[0]);
-                for (int k = 1; k < 3; ++k) {
-                    const std::uint32_t other = findRoot(parent, triangle[k]);
-                    if (other != root) root = linkRoots(parent, root, other);
-                }
+        std::size_t joined = ~std::size_t(0);
+        for (std::size_t at : chunks[c].seamIndices) {
+            const std::size_t first = at - at % 3;
+            if (first == joined) continue;
+            joined = first;
+            const std::uint32_t* triangle = &mesh.indices[first];
+            std::uint32_t root = findRoot(parent, triangle[0]);
+            for (int k = 1; k < 3; ++k) {
+                const std::uint32_t other = findRoot(parent, triangle[k]);
+                if (other != root) root = linkRoots(parent, root, other);
             }
         }
     }
@@ -631,9 +638,10 @@ std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int 
     visitSamples(volume, [&](const auto* samples) {
         using T = std::remove_cv_t<std::remove_pointer_t<decltype(samples)>>;
         const detail::SampleGrid<T> grid(volume, samples, iso);
-        detail::parallelFor(chunkCount, threads, [&](int c) {
-            ChunkMarcher<T>(grid, continuation, slots, nullptr, nullptr, nullptr, chunks[std::size_t(c)], mesh).count();
-        });
+        // A marcher per thread, its slices of flags and ids reused from chunk to chunk.
+        detail::parallelForEach(
+            chunkCount, threads, [&] { return ChunkMarcher<T>(grid, continuation, slots, nullptr, nullptr, nullptr, mesh); },
+            [&](ChunkMarcher<T>& marcher, int c) { marcher.count(chunks[std::size_t(c)]); });
         allocate(chunks, mesh);
         std::uint32_t* parents = nullptr;
         std::uint8_t* tallies = nullptr;
@@ -645,11 +653,21 @@ std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int 
             parents = parent->data();
             tallies = tally->data();
         }
-        detail::parallelFor(chunkCount, threads, [&](int c) {
-            ChunkMarcher<T>(grid, continuation, slots, unions, parents, tallies, chunks[std::size_t(c)], mesh).run();
-        });
+        // A seam is resolved by whichever of its two chunks is written last, on its thread.
+        std::vector<std::atomic<int>> written(chunks.size());
+        auto chunkWritten = [&](std::size_t seam) {
+            if (written[seam].fetch_add(1) == 1) resolveSeam(chunks, seam, mesh);
+        };
+        detail::parallelForEach(
+            chunkCount, threads, [&] { return ChunkMarcher<T>(grid, continuation, slots, unions, parents, tallies, mesh); },
+            [&](ChunkMarcher<T>& marcher, int index) {
+                const std::size_t c = std::size_t(index);
+                marcher.run(chunks[c]);
+                if (c > 0) chunkWritten(c - 1);
+                if (c + 1 < chunks.size()) chunkWritten(c);
+            });
     });
-    stitch(chunks, mesh, parent ? parent->data() : nullptr);
+    if (parent) stitch(chunks, mesh, parent->data());
     return chunks;
 }
 

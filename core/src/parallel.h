@@ -57,6 +57,41 @@ void parallelFor(int count, int threads, Fn&& fn) {
     failure.rethrowIfAny();
 }
 
+// parallelFor with a state of each thread's own: every thread that takes part
+// makes one with make() and runs fn(state, i) for its indices, which come to it
+// in increasing order.
+template <class Make, class Fn>
+void parallelForEach(int count, int threads, Make&& make, Fn&& fn) {
+    if (count <= 0) return;
+    if (threads <= 1 || count <= 1) {
+        auto state = make();
+        for (int i = 0; i < count; ++i) fn(state, i);
+        return;
+    }
+    std::atomic<int> next{0};
+    FirstFailure failure;
+    auto work = [&] {
+        try {
+            int i = next++;
+            if (i >= count) return;
+            auto state = make();
+            for (; i < count; i = next++) fn(state, i);
+        } catch (...) {
+            next = count;
+            failure.record();
+        }
+    };
+    std::vector<std::thread> pool;
+    try {
+        for (int t = 1; t < std::min(threads, count); ++t) pool.emplace_back(work);
+    } catch (const std::system_error&) {
+        // No more threads to be had: the ones started, and this one, do the work.
+    }
+    work();
+    for (auto& thread : pool) thread.join();
+    failure.rethrowIfAny();
+}
+
 // Runs fn(i) for every i in [0, count) at once, each on a thread of its own
 // (0 on the calling thread), for parts that wait on one another. When a part
 // throws, or a thread cannot be started, abandon() lets the running parts stop;
