@@ -19,8 +19,9 @@
 //     least the vertex count at which its slice entered the slab window.
 // The x- and y-edges on the slice between two chunks belong to the upper chunk;
 // the lower chunk writes placeholders for them, resolved from the upper chunk's
-// first slice by whichever of the two is written last, on its thread. Temporaries are a few slices of flags
-// and ids per chunk, never per voxel of the volume.
+// first slice by whichever of the two is written last, on its thread.
+// Temporaries are a few slices of flags and ids per thread, kept from chunk to
+// chunk, and the counting pass's classification (a bit per voxel at most).
 //
 // Labelled (for extractAllSurfaces), the writing pass also joins the vertices of
 // each cell piece in a union-find over the chunk's own vertex range, while they
@@ -144,7 +145,6 @@ struct EdgeSlots {
     // y+1 at z, row y at z+1, row y+1 at z+1) are `left | right << 4`.
     std::array<std::uint8_t, 256> configOfColumns{};
     std::array<int, 12> axis{};
-    std::array<int, 12> dz{};
     std::array<std::array<int, 3>, 12> origin{};  // the edge's first corner, from the cell's
     std::array<std::size_t, 12> offset{};  // within a slice, from the cell's origin sample
     std::array<std::uint16_t, 256> crossed{};
@@ -156,7 +156,6 @@ EdgeSlots edgeSlots(int nx) {
         const auto& o = cube::edgeOrigin(e);
         s.origin[e] = o;
         s.axis[e] = cube::edgeAxis(e);
-        s.dz[e] = o[2];
         s.offset[e] = std::size_t(o[0]) + std::size_t(nx) * std::size_t(o[1]);
     }
     for (int columns = 0; columns < 256; ++columns) {
@@ -264,7 +263,7 @@ public:
     }
 
     // Writes the chunk into mesh_, whose buffers already have their final size.
-    // A marcher writes its chunks in order (parallelFor hands them out so): the
+    // A marcher writes its chunks in order (parallelForWithState hands them out so): the
     // ids its caches hold from earlier chunks are below this one's first, so
     // invalid here, and the caches need no clearing between chunks.
     void run(Chunk& chunk) {
@@ -537,8 +536,9 @@ private:
             slot = &vertical_[at];
             threshold = verticalThreshold_;
         } else {
-            const int s = slots_.dz[edge] ? top : bottom;
-            if (SeamSlab && slots_.dz[edge]) return kSeamBit | static_cast<std::uint32_t>(std::size_t(axis) * sliceSize_ + at);
+            const bool upper = slots_.origin[edge][2] != 0;
+            const int s = upper ? top : bottom;
+            if (SeamSlab && upper) return kSeamBit | static_cast<std::uint32_t>(std::size_t(axis) * sliceSize_ + at);
             slot = &planar_[s][std::size_t(axis) * sliceSize_ + at];
             threshold = threshold_[s];
         }
@@ -639,7 +639,7 @@ std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int 
         using T = std::remove_cv_t<std::remove_pointer_t<decltype(samples)>>;
         const detail::SampleGrid<T> grid(volume, samples, iso);
         // A marcher per thread, its slices of flags and ids reused from chunk to chunk.
-        detail::parallelForEach(
+        detail::parallelForWithState(
             chunkCount, threads, [&] { return ChunkMarcher<T>(grid, continuation, slots, nullptr, nullptr, nullptr, mesh); },
             [&](ChunkMarcher<T>& marcher, int c) { marcher.count(chunks[std::size_t(c)]); });
         allocate(chunks, mesh);
@@ -658,7 +658,7 @@ std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int 
         auto chunkWritten = [&](std::size_t seam) {
             if (written[seam].fetch_add(1) == 1) resolveSeam(chunks, seam, mesh);
         };
-        detail::parallelForEach(
+        detail::parallelForWithState(
             chunkCount, threads, [&] { return ChunkMarcher<T>(grid, continuation, slots, unions, parents, tallies, mesh); },
             [&](ChunkMarcher<T>& marcher, int index) {
                 const std::size_t c = std::size_t(index);

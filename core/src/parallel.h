@@ -27,41 +27,13 @@ private:
     std::exception_ptr failure_;
 };
 
-// Runs fn(i) for i in [0, count) on `threads` threads, handing out indices in
-// order. The first exception any iteration throws stops the hand-out and is
+// Runs fn(state, i) for i in [0, count) on `threads` threads, handing out
+// indices in order, so that each thread's come to it in increasing order. Every
+// thread that takes part makes a state of its own with make() before its first
+// index. The first exception any iteration throws stops the hand-out and is
 // rethrown on the calling thread once every thread has stopped.
-template <class Fn>
-void parallelFor(int count, int threads, Fn&& fn) {
-    if (threads <= 1 || count <= 1) {
-        for (int i = 0; i < count; ++i) fn(i);
-        return;
-    }
-    std::atomic<int> next{0};
-    FirstFailure failure;
-    auto work = [&] {
-        try {
-            for (int i = next++; i < count; i = next++) fn(i);
-        } catch (...) {
-            next = count;
-            failure.record();
-        }
-    };
-    std::vector<std::thread> pool;
-    try {
-        for (int t = 1; t < std::min(threads, count); ++t) pool.emplace_back(work);
-    } catch (const std::system_error&) {
-        // No more threads to be had: the ones started, and this one, do the work.
-    }
-    work();
-    for (auto& thread : pool) thread.join();
-    failure.rethrowIfAny();
-}
-
-// parallelFor with a state of each thread's own: every thread that takes part
-// makes one with make() and runs fn(state, i) for its indices, which come to it
-// in increasing order.
 template <class Make, class Fn>
-void parallelForEach(int count, int threads, Make&& make, Fn&& fn) {
+void parallelForWithState(int count, int threads, Make&& make, Fn&& fn) {
     if (count <= 0) return;
     if (threads <= 1 || count <= 1) {
         auto state = make();
@@ -90,6 +62,12 @@ void parallelForEach(int count, int threads, Make&& make, Fn&& fn) {
     work();
     for (auto& thread : pool) thread.join();
     failure.rethrowIfAny();
+}
+
+// Runs fn(i) for i in [0, count) on `threads` threads, as parallelForWithState.
+template <class Fn>
+void parallelFor(int count, int threads, Fn&& fn) {
+    parallelForWithState(count, threads, [] { return 0; }, [&](int, int i) { fn(i); });
 }
 
 // Runs fn(i) for every i in [0, count) at once, each on a thread of its own
