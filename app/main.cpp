@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
     add(isotrack::cli::addFieldCommand);
     add(isotrack::cli::addRenderCommand);
     add(isotrack::cli::addInfoCommand);
+    add(isotrack::cli::addBenchCommand);
     app.require_subcommand(0, 1);
     // No subcommand: the interactive viewer, with its own top-level options.
     const isotrack::viewer::ViewerCommandLine viewer = isotrack::viewer::addViewerOptions(app);

@@ -7,12 +7,14 @@ normals) at 1 and 2 threads through vtkSMPTools, followed by
 vtkPolyDataConnectivityFilter in all-regions and closest-point modes. Times are
 extraction only (reading excluded), medians of --repeat runs.
 
-The runs come in --rounds rounds, each running everything once (VTK, then each
-isotrack method in a process of its own, at 1 then 2 threads; every other round
-isotrack goes first). Each figure is the median of its rounds' medians. On a
-virtual machine the same work can run 30% faster or slower from one minute to
-the next, and from one process to the next by where its memory landed: rounds
-close together in time keep both sides of a ratio under the same conditions.
+The runs come in --rounds rounds, each running everything once: VTK at 1 then
+2 threads, and one `isotrack bench` process that times mc, all and track at 1
+and 2 threads interleaved (every other round isotrack goes first). Each figure
+is the median of its rounds' medians. On a virtual machine the same work can
+run 30% faster or slower from one minute to the next, and from one process to
+the next by where its memory landed: VTK's figures all come from this one
+process, isotrack's of a round from one process of its own, and rounds close
+together in time keep both sides of a ratio under the same conditions.
 Prints a table of times and ratios (VTK time / isotrack time: above 1 means
 isotrack is faster).
 
@@ -98,6 +100,18 @@ def isotrack_time(binary, path, iso, method, threads, repeat, seed=None):
     return json.loads(subprocess.run(cmd, check=True, capture_output=True, text=True).stdout)
 
 
+def isotrack_bench(binary, path, iso, seed, repeat):
+    """mc, all and track at 1 and 2 threads, interleaved in one `isotrack bench` process:
+    {threads: {method: run report}}."""
+    cmd = [binary, "bench", "--volume", path, "--iso", repr(iso), "--methods", "mc,all,track", "--threads", "1,2",
+           "--seed", ",".join(repr(v) for v in seed), "--repeat", str(repeat), "--json"]
+    report = json.loads(subprocess.run(cmd, check=True, capture_output=True, text=True).stdout)
+    out = {1: {}, 2: {}}
+    for run in report["runs"]:
+        out[run["threads"]][run["method"]] = run
+    return out
+
+
 def median_round(reports, key):
     """The report whose `key` is the median of the rounds' (the lower middle one for an even count)."""
     ordered = sorted(reports, key=lambda r: r[key])
@@ -143,7 +157,7 @@ def main():
     cases.append((f"sphere {m}^3", ensure_field(args.isotrack, f"sphere:{m}", data), 0.0, None))
 
     print(f"isotrack vs VTK {vtk.vtkVersion.GetVTKVersion()}: medians of {args.rounds} rounds' medians of {args.repeat} runs"
-          f" (isotrack: a process per method and round), extraction only;")
+          f" (isotrack: one process per round, its methods and threads interleaved), extraction only;")
     print("ratio = VTK time / isotrack time (above 1: isotrack faster)\n")
     header = f"{'volume':<16} {'what':<34} {'isotrack ms':>12} {'VTK ms':>10} {'ratio':>7}"
     print(header)
@@ -156,16 +170,17 @@ def main():
         ours = {1: {"mc": [], "all": [], "track": []}, 2: {"mc": [], "all": [], "track": []}}
         theirs = {1: [], 2: []}
         for round_ in range(args.rounds):
-            for threads in (1, 2):
-                def run_isotrack():
+            def run_isotrack():
+                runs = isotrack_bench(args.isotrack, path, iso, seed, args.repeat)
+                for threads in (1, 2):
                     for method in ("mc", "all", "track"):
-                        ours[threads][method].append(isotrack_time(args.isotrack, path, iso, method, threads, args.repeat,
-                                                                   seed if method == "track" else None))
-                if round_ % 2:
-                    run_isotrack()
+                        ours[threads][method].append(runs[threads][method])
+            if round_ % 2:
+                run_isotrack()
+            for threads in (1, 2):
                 theirs[threads].append(vtk_times(image, iso, seed, threads, args.repeat))
-                if not round_ % 2:
-                    run_isotrack()
+            if not round_ % 2:
+                run_isotrack()
         for threads in (1, 2):
             v = {key: statistics.median(r[key] for r in theirs[threads]) for key in ("fe", "fe_all", "fe_one")}
             for key in ("triangles", "regions", "one_triangles"):

@@ -15,5 +15,6 @@ RunCommand addExtractCommand(CLI::App& app);
 RunCommand addFieldCommand(CLI::App& app);
 RunCommand addRenderCommand(CLI::App& app);
 RunCommand addInfoCommand(CLI::App& app);
+RunCommand addBenchCommand(CLI::App& app);
 
 }  // namespace isotrack::cli

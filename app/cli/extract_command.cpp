@@ -1,6 +1,5 @@
 // isotrack extract: one mesh out of a volume, as PLY and/or a JSON summary.
 #include <CLI/CLI.hpp>
-#include <chrono>
 #include <cstdio>
 #include <algorithm>
 #include <cstring>
@@ -17,6 +16,7 @@
 
 #include "cli/commands.h"
 #include "cli/source.h"
+#include "cli/timed_extraction.h"
 #include "isotrack/continuation.h"
 #include "isotrack/io.h"
 #include "isotrack/marching_cubes.h"
@@ -106,19 +106,16 @@ void countMesh(Extraction& out) {
 
 // One run of the chosen method; only extraction is timed.
 Extraction extractOnce(const ExtractOptions& options, const Source& source, TableKind table) {
-    using Clock = std::chrono::steady_clock;
+    TimedExtraction run = extractTimed(source.volume, source.iso, options.method, table, options.threads, options.seed);
     Extraction out;
-    const auto start = Clock::now();
+    out.seconds.push_back(run.seconds);
     if (options.method == "mc") {
-        out.mesh = marchingCubes(source.volume, source.iso, table, options.threads);
-        out.seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+        out.mesh = std::move(run.mesh);
         countMesh(out);
         return out;
     }
     if (options.method == "track") {
-        const GridEdge seed = nearestCrossedEdge(source.volume, source.iso, {options.seed[0], options.seed[1], options.seed[2]});
-        Surface surface = trackSurface(source.volume, source.iso, seed, table, options.threads);
-        out.seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+        Surface& surface = run.surfaces.front();
         out.components = 1;
         out.cellsVisited = surface.stats.cellsVisited;
         out.surfaces.push_back(surfaceJson(surface.stats));
@@ -126,8 +123,7 @@ Extraction extractOnce(const ExtractOptions& options, const Source& source, Tabl
         countMesh(out);
         return out;
     }
-    const std::vector<Surface> surfaces = extractAllSurfaces(source.volume, source.iso, table, options.threads);
-    out.seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+    const std::vector<Surface>& surfaces = run.surfaces;
     out.components = surfaces.size();
     std::size_t cells = 0;
     for (std::size_t i = 0; i < surfaces.size(); ++i) {
@@ -162,9 +158,6 @@ struct ResidentMemory {
 };
 
 Extraction extract(const ExtractOptions& options, const Source& source, TableKind table) {
-    if (options.method == "track" && options.seed.size() != 3) {
-        throw InputError("--method track needs --seed X,Y,Z (world coordinates)");
-    }
     continuationTable(table);  // the tables are generated once, before any timing
     std::vector<double> seconds;
     Extraction out;
@@ -185,12 +178,6 @@ Extraction extract(const ExtractOptions& options, const Source& source, TableKin
     out.residentBefore = before;
     out.residentPeak = peak;
     return out;
-}
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2.0;
 }
 
 int runExtract(const ExtractOptions& options) {

@@ -34,6 +34,22 @@ grep -q "\"triangles\":$total," all.json || fail "surface files hold $total tria
 [[ -f objs/surface_000.obj ]] || fail "--out-dir did not follow --out's format"
 if "$isotrack" extract --volume blobs.nrrd --out-dir x 2>err.txt; then fail "--out-dir without --method all accepted"; fi
 
+# bench: every method and thread count in one process, the same meshes as extract.
+"$isotrack" bench --volume blobs.nrrd --methods mc,all --threads 1,2 --repeat 2 --json > bench.json
+python3 - bench.json out_ply.json all.json <<'PY' || fail "bench report: $(cat bench.json)"
+import json, sys
+bench, mc, every = (json.load(open(f)) for f in sys.argv[1:])
+runs = {(r["method"], r["threads"]): r for r in bench["runs"]}
+assert sorted(runs) == [("all", 1), ("all", 2), ("mc", 1), ("mc", 2)], sorted(runs)
+for (method, threads), r in runs.items():
+    assert len(r["seconds_all"]) == 2 and r["seconds"] > 0, r
+    want = mc if method == "mc" else every
+    assert (r["triangles"], r["vertices"]) == (want["triangles"], want["vertices"]), (r, want["triangles"])
+    assert r["components"] == (None if method == "mc" else every["components"]), r
+PY
+if "$isotrack" bench --volume blobs.nrrd --methods track 2>err.txt; then fail "bench track without --seed accepted"; fi
+grep -q "needs --seed" err.txt || fail "unhelpful message: $(cat err.txt)"
+
 # info: raw twin of the NRRD (header stripped) reports the same dims, range and histogram.
 "$isotrack" info --volume blobs.nrrd --json > info_nrrd.json
 tail -c $((32 * 32 * 32 * 4)) blobs.nrrd > blobs.raw

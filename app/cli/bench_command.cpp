@@ -1,0 +1,130 @@
+// isotrack bench: several methods and thread counts timed in one process,
+// interleaved, so that every figure is taken under the same conditions.
+//
+// A virtual machine runs the same work faster or slower from one minute to the
+// next, and one process faster than another by where its memory landed; ratios
+// between figures from separate processes carry that noise. Here each of the
+// --repeat passes runs every method at every thread count once (the order
+// reversed every other pass), and each figure is the median of its runs.
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.h"
+#include "cli/source.h"
+#include "cli/timed_extraction.h"
+#include "isotrack/continuation.h"
+#include "isotrack/errors.h"
+
+namespace isotrack::cli {
+namespace {
+
+struct BenchOptions {
+    SourceOptions source;
+    std::string table = "consistent";
+    std::vector<std::string> methods{"mc", "all", "track"};
+    std::vector<int> threads{1, 2};
+    std::vector<double> seed;
+    int repeat = 5;
+    bool json = false;
+};
+
+struct Config {
+    std::string method;
+    int threads = 1;
+    std::vector<double> seconds;
+    std::size_t triangles = 0, vertices = 0, surfaces = 0;
+};
+
+int runBench(const BenchOptions& options) {
+    const TableKind table = parseTableKind(options.table);
+    bool tracks = false;
+    for (const std::string& method : options.methods) tracks = tracks || method == "track";
+    if (tracks && options.seed.size() != 3) throw InputError("--methods track needs --seed X,Y,Z (world coordinates)");
+    const Source source = loadSource(options.source);
+    continuationTable(table);  // the tables are generated once, before any timing
+
+    std::vector<Config> configs;
+    for (const int threads : options.threads) {
+        for (const std::string& method : options.methods) {
+            configs.push_back({method, method == "track" ? std::min(threads, kMaxTrackThreads) : threads, {}, 0, 0, 0});
+        }
+    }
+    for (int pass = 0; pass < options.repeat; ++pass) {
+        for (std::size_t i = 0; i < configs.size(); ++i) {
+            Config& config = configs[pass % 2 ? configs.size() - 1 - i : i];
+            const TimedExtraction run =
+                extractTimed(source.volume, source.iso, config.method, table, config.threads, options.seed);
+            config.seconds.push_back(run.seconds);
+            config.triangles = run.mesh.triangleCount(), config.vertices = run.mesh.vertices.size();
+            config.surfaces = run.surfaces.size();
+            for (const Surface& surface : run.surfaces) {
+                config.triangles += surface.mesh.triangleCount();
+                config.vertices += surface.mesh.vertices.size();
+            }
+        }
+    }
+
+    if (options.json) {
+        nlohmann::json runs = nlohmann::json::array();
+        for (const Config& c : configs) {
+            runs.push_back({{"method", c.method},
+                            {"threads", c.threads},
+                            {"seconds", median(c.seconds)},
+                            {"seconds_all", c.seconds},
+                            {"triangles", c.triangles},
+                            {"vertices", c.vertices},
+                            {"components", c.method == "mc" ? nlohmann::json(nullptr) : nlohmann::json(c.surfaces)}});
+        }
+        const Dims& dims = source.volume.dims();
+        nlohmann::json report{{"source", source.name},
+                              {"isovalue", source.iso},
+                              {"table", tableKindName(table)},
+                              {"dims", {dims[0], dims[1], dims[2]}},
+                              {"repeat", options.repeat},
+                              {"runs", runs}};
+        std::printf("%s\n", report.dump().c_str());
+        return 0;
+    }
+    std::printf("%s at iso %g (%s table): medians of %d interleaved runs\n", source.name.c_str(), source.iso,
+                tableKindName(table), options.repeat);
+    for (const Config& c : configs) {
+        std::printf("  %-5s %2d thread%s %10.2f ms  %zu triangles", c.method.c_str(), c.threads, c.threads == 1 ? " " : "s",
+                    median(c.seconds) * 1e3, c.triangles);
+        if (c.method != "mc") std::printf(" in %zu surface%s", c.surfaces, c.surfaces == 1 ? "" : "s");
+        std::printf("\n");
+    }
+    return 0;
+}
+
+}  // namespace
+
+RunCommand addBenchCommand(CLI::App& app) {
+    auto options = std::make_shared<BenchOptions>();
+    CLI::App* command =
+        app.add_subcommand("bench", "Time several methods and thread counts in one process, interleaved (medians)");
+    addSourceOptions(*command, options->source);
+    command->add_option("--table", options->table, "Triangle table: consistent (default) or classic")
+        ->check(CLI::IsMember({"consistent", "classic"}));
+    command->add_option("--methods", options->methods, "Methods to time, e.g. mc,all,track (default: all three)")
+        ->delimiter(',')
+        ->check(CLI::IsMember({"mc", "track", "all"}));
+    command->add_option("--threads", options->threads, "Thread counts to time, e.g. 1,2 (default)")
+        ->delimiter(',')
+        ->check(CLI::Range(1, 256));
+    command->add_option("--seed", options->seed, "World point X,Y,Z for track: the crossed edge nearest to it")
+        ->delimiter(',')
+        ->expected(3);
+    command->add_option("--repeat", options->repeat, "Passes over every method and thread count; figures are medians")
+        ->check(CLI::Range(1, 1000));
+    command->add_flag("--json", options->json, "Print one JSON object on stdout");
+    return [options] { return runBench(*options); };
+}
+
+}  // namespace isotrack::cli
