@@ -9,12 +9,12 @@ extraction only (reading excluded), medians of --repeat runs.
 
 The runs come in --rounds rounds, each running everything once: VTK at 1 then
 2 threads, and one `isotrack bench` process that times mc, all and track at 1
-and 2 threads interleaved (every other round isotrack goes first). Each figure
-is the median of its rounds' medians. On a virtual machine the same work can
-run 30% faster or slower from one minute to the next, and from one process to
-the next by where its memory landed: VTK's figures all come from this one
-process, isotrack's of a round from one process of its own, and rounds close
-together in time keep both sides of a ratio under the same conditions.
+and 2 threads interleaved (every other round isotrack goes first). On a virtual
+machine the same work can run 30% faster or slower from one minute to the next,
+and from one process to the next by where its memory landed. So each time is
+the median of its rounds' medians, and each ratio is the median of its rounds'
+ratios: both sides of a round's ratio are measured minutes apart at most, and
+isotrack's all / mc and two threads against one come from one process.
 Prints a table of times and ratios (VTK time / isotrack time: above 1 means
 isotrack is faster).
 
@@ -112,12 +112,6 @@ def isotrack_bench(binary, path, iso, seed, repeat):
     return out
 
 
-def median_round(reports, key):
-    """The report whose `key` is the median of the rounds' (the lower middle one for an even count)."""
-    ordered = sorted(reports, key=lambda r: r[key])
-    return ordered[(len(ordered) - 1) // 2]
-
-
 def smallest_surface_seed(binary, path, iso):
     report = isotrack_time(binary, path, iso, "all", 2, 1)
     smallest = report["surfaces"][-1]
@@ -158,7 +152,7 @@ def main():
 
     print(f"isotrack vs VTK {vtk.vtkVersion.GetVTKVersion()}: medians of {args.rounds} rounds' medians of {args.repeat} runs"
           f" (isotrack: one process per round, its methods and threads interleaved), extraction only;")
-    print("ratio = VTK time / isotrack time (above 1: isotrack faster)\n")
+    print("ratio = VTK time / isotrack time (above 1: isotrack faster), the median of the rounds' ratios\n")
     header = f"{'volume':<16} {'what':<34} {'isotrack ms':>12} {'VTK ms':>10} {'ratio':>7}"
     print(header)
     print("-" * len(header))
@@ -181,23 +175,26 @@ def main():
                 theirs[threads].append(vtk_times(image, iso, seed, threads, args.repeat))
             if not round_ % 2:
                 run_isotrack()
+        paired = lambda top, bottom: statistics.median(t / b for t, b in zip(top, bottom))
         for threads in (1, 2):
-            v = {key: statistics.median(r[key] for r in theirs[threads]) for key in ("fe", "fe_all", "fe_one")}
-            for key in ("triangles", "regions", "one_triangles"):
-                v[key] = theirs[threads][0][key]
-            mc = median_round(ours[threads]["mc"], "seconds")
-            al = median_round(ours[threads]["all"], "seconds")
-            tr = median_round(ours[threads]["track"], "seconds")
+            vtk_runs, mine = theirs[threads], ours[threads]
+            times = {key: [r[key] for r in vtk_runs] for key in ("fe", "fe_all", "fe_one")}
+            times.update({method: [r["seconds"] for r in mine[method]] for method in ("mc", "all", "track")})
+            med = {key: statistics.median(values) for key, values in times.items()}
+            mc, al, tr = mine["mc"][0], mine["all"][0], mine["track"][0]  # the counts, the same in every round
+            v = vtk_runs[0]
             lines = [
-                (f"mc vs FlyingEdges, {threads}T", mc["seconds"], v["fe"]),
-                (f"all vs FE+connectivity, {threads}T", al["seconds"], v["fe_all"]),
-                (f"track vs FE+closest point, {threads}T", tr["seconds"], v["fe_one"]),
+                (f"mc vs FlyingEdges, {threads}T", "mc", "fe"),
+                (f"all vs FE+connectivity, {threads}T", "all", "fe_all"),
+                (f"track vs FE+closest point, {threads}T", "track", "fe_one"),
             ]
-            for what, mine, vtks in lines:
-                print(f"{name:<16} {what:<34} {mine * 1e3:12.2f} {vtks * 1e3:10.2f} {vtks / mine:7.2f}")
-            print(f"{'':<16} {'(all / mc, same threads)':<34} {al['seconds'] / mc['seconds']:12.2f}")
-            rows.append({"volume": name, "threads": threads, "mc": mc["seconds"], "all": al["seconds"],
-                         "track": tr["seconds"], "fe": v["fe"], "fe_all": v["fe_all"], "fe_one": v["fe_one"],
+            for what, ours_key, vtk_key in lines:
+                print(f"{name:<16} {what:<34} {med[ours_key] * 1e3:12.2f} {med[vtk_key] * 1e3:10.2f}"
+                      f" {paired(times[vtk_key], times[ours_key]):7.2f}")
+            all_over_mc = paired(times["all"], times["mc"])
+            print(f"{'':<16} {'(all / mc, same threads)':<34} {all_over_mc:12.2f}")
+            rows.append({"volume": name, "threads": threads, **{key: med[key] for key in times},
+                         "rounds": times, "all_over_mc": all_over_mc,
                          "triangles": mc["triangles"], "vtk_triangles": v["triangles"],
                          "surfaces": al["components"], "vtk_regions": v["regions"],
                          "track_triangles": tr["triangles"], "vtk_closest_triangles": v["one_triangles"]})
@@ -206,13 +203,12 @@ def main():
                       f" VTK {v['triangles']} / {v['regions']}")
             if tr["triangles"] != v["one_triangles"]:
                 print(f"{'':<16} note: tracked {tr['triangles']} triangles, VTK closest region {v['one_triangles']}")
+        rows[-1]["two_over_one"] = paired(rows[-2]["rounds"]["mc"], rows[-1]["rounds"]["mc"])
         print()
-    by_volume = {}
-    for r in rows:
-        by_volume.setdefault(r["volume"], {})[r["threads"]] = r
     print("two threads against one (isotrack mc):")
-    for name, r in by_volume.items():
-        print(f"  {name:<16} {r[1]['mc'] / r[2]['mc']:.2f}x")
+    for r in rows:
+        if "two_over_one" in r:
+            print(f"  {r['volume']:<16} {r['two_over_one']:.2f}x")
     with open(os.path.join(data, "compare_vtk.json"), "w") as f:
         json.dump(rows, f, indent=1)
 

@@ -51,8 +51,8 @@ int runBench(const BenchOptions& options) {
     continuationTable(table);  // the tables are generated once, before any timing
 
     std::vector<Config> configs;
-    for (const int threads : options.threads) {
-        for (const std::string& method : options.methods) {
+    for (const std::string& method : options.methods) {
+        for (const int threads : options.threads) {
             configs.push_back({method, method == "track" ? std::min(threads, kMaxTrackThreads) : threads, {}, 0, 0, 0});
         }
     }
