@@ -87,10 +87,11 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
 
     // Surfaces numbered in order of their roots (their first vertices): each
     // range lists its roots, and the lists one after the other are in order.
-    // Then each vertex's walk to its root gives its surface's number
-    // (`component`), the vertex gets its index in its range's share of that
-    // surface (`local`), and the share adds up the cell pieces and triangles
-    // tallied at its vertices. The walks only read the forest, so ranges run at once.
+    // Then each vertex gets its surface's number (`component`): its parent's when
+    // the parent is in the same range (below it, so numbered already), else by a
+    // walk to its root. It gets its index in its range's share of that surface
+    // (`local`), and the share adds up the cell pieces and triangles tallied at
+    // its vertices. Ranges only read the forest, so they run at once.
     const std::uint32_t* parent = labelled.parent.data();
     std::vector<std::vector<std::uint32_t>> rootsOf(parts.size());
     forParts([&](const Range& part, std::size_t r) {
@@ -112,14 +113,22 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
     // surface and counters stay in registers.
     forParts([&](const Range& part, std::size_t r) {
         std::vector<Share>& share = shares[r];
-        std::uint32_t lastRoot = kNone, k = 0, counter = 0, triangles = 0, pieces = 0;
+        std::uint32_t k = kNone, counter = 0, triangles = 0, pieces = 0;
         for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
-            std::uint32_t root = parent[v];
-            while (parent[root] != root) root = parent[root];
-            if (root != lastRoot) {
-                if (lastRoot != kNone) share[k].vertices = counter, share[k].triangles = triangles, share[k].pieces = pieces;
-                lastRoot = root;
-                k = numberOf(lastRoot);
+            // A parent in this range is numbered already (parents are below their
+            // children): its surface is the vertex's, without a walk to the root.
+            const std::uint32_t up = parent[v];
+            std::uint32_t surface;
+            if (up != v && up >= part.vertexBegin) {
+                surface = component[up];
+            } else {
+                std::uint32_t root = up;
+                while (parent[root] != root) root = parent[root];
+                surface = numberOf(root);
+            }
+            if (surface != k) {
+                if (k != kNone) share[k].vertices = counter, share[k].triangles = triangles, share[k].pieces = pieces;
+                k = surface;
                 counter = share[k].vertices, triangles = share[k].triangles, pieces = share[k].pieces;
             }
             component[v] = k;
@@ -128,7 +137,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             triangles += tally & detail::kTalliedTriangles;
             pieces += tally / detail::kTalliedPiece;
         }
-        if (lastRoot != kNone) share[k].vertices = counter, share[k].triangles = triangles, share[k].pieces = pieces;
+        if (k != kNone) share[k].vertices = counter, share[k].triangles = triangles, share[k].pieces = pieces;
     });
     Buffer<std::uint32_t>().swap(labelled.parent);
     std::vector<Surface> surfaces(count);
