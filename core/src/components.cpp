@@ -87,7 +87,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
 
     // Surfaces numbered in order of their roots (their first vertices): each
     // range lists its roots, and the lists one after the other are in order.
-    // Then each vertex gets its surface's number (`component`): its parent's when
+    // Then each vertex gets its surface's number (its label's `surface`): its parent's when
     // the parent is in the same range (below it, so numbered already), else by a
     // walk to its root. It gets its index in its range's share of that surface
     // (`local`), and the share adds up the cell pieces and triangles tallied at
@@ -105,9 +105,13 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
     auto numberOf = [&](std::uint32_t root) {
         return static_cast<std::uint32_t>(std::lower_bound(roots.begin(), roots.end(), root) - roots.begin());
     };
-    Buffer<std::uint32_t> component, local;
-    detail::resizeOnHugePages(component, mesh.vertices.size());
-    detail::resizeOnHugePages(local, mesh.vertices.size());
+    // Per vertex, its surface and its index in its range's share, side by side:
+    // splitting the triangles looks both up for each corner.
+    struct Label {
+        std::uint32_t surface, local;
+    };
+    Buffer<Label> labels;
+    detail::resizeOnHugePages(labels, mesh.vertices.size());
     std::vector<std::vector<Share>> shares(parts.size(), std::vector<Share>(count));
     // Runs of vertices and of triangles on one surface are common: the run's
     // surface and counters stay in registers.
@@ -120,7 +124,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             const std::uint32_t up = parent[v];
             std::uint32_t surface;
             if (up != v && up >= part.vertexBegin) {
-                surface = component[up];
+                surface = labels[up].surface;
             } else {
                 std::uint32_t root = up;
                 while (parent[root] != root) root = parent[root];
@@ -131,8 +135,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
                 k = surface;
                 counter = share[k].vertices, triangles = share[k].triangles, pieces = share[k].pieces;
             }
-            component[v] = k;
-            local[v] = counter++;
+            labels[v] = {k, counter++};
             const unsigned tally = labelled.tally[v];
             triangles += tally & detail::kTalliedTriangles;
             pieces += tally / detail::kTalliedPiece;
@@ -178,8 +181,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             if (r + 1 < parts.size()) nextBase[k] = static_cast<std::uint32_t>(shares[r + 1][k].vertexBase);
         }
         std::uint32_t* indices = mesh.indices.data();
-        const std::uint32_t* localIndex = local.data();
-        const std::uint32_t* surfaceOf = component.data();
+        const Label* label = labels.data();
         const Vertex* vertices = mesh.vertices.data();
         const std::size_t vertexEnd = part.vertexEnd, triangleEnd = part.triangleEnd;
         std::size_t to = 3 * part.triangleBegin;  // where the largest surface's next triangle goes
@@ -199,7 +201,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         };
         for (std::size_t t = part.triangleBegin; t < triangleEnd;) {
             const std::uint32_t* v = indices + 3 * t;
-            const std::uint32_t k = surfaceOf[v[0]];
+            const std::uint32_t k = label[v[0]].surface;
             if (k != runSurface) {
                 if (runSurface != kNone) endRun();
                 runSurface = k;
@@ -213,7 +215,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
                 }
             }
             std::size_t run = 1;
-            if (t + 4 <= triangleEnd && surfaceOf[v[3]] == k && surfaceOf[v[6]] == k && surfaceOf[v[9]] == k) {
+            if (t + 4 <= triangleEnd && label[v[3]].surface == k && label[v[6]].surface == k && label[v[9]].surface == k) {
                 detail::TriangleMeasure::addFourTo(runArea, runVolume, vertices, v);
                 run = 4;
             } else {
@@ -224,9 +226,9 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
                 auto remap = [&](auto corners) {
                     for (std::size_t i = 0; i < decltype(corners)::value; ++i) {
                         if constexpr (decltype(oneRange)::value) {
-                            out[i] = localIndex[v[i]];
+                            out[i] = label[v[i]].local;
                         } else {
-                            out[i] = localIndex[v[i]] + (v[i] < vertexEnd ? own : next);
+                            out[i] = label[v[i]].local + (v[i] < vertexEnd ? own : next);
                         }
                     }
                 };
@@ -255,7 +257,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         float x0 = 0, y0 = 0, z0 = 0, x1 = 0, y1 = 0, z1 = 0;
         bool border = false;
         for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
-            const std::uint32_t k = component[v];
+            const auto [k, local] = labels[v];
             const Vertex& vertex = mesh.vertices[v];
             const PackedGridEdge edge = mesh.vertexEdges[v];
             const float x = vertex.position[0], y = vertex.position[1], z = vertex.position[2];
@@ -269,7 +271,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             x1 = std::max(x1, x), y1 = std::max(y1, y), z1 = std::max(z1, z);
             border = border || detail::edgeOnVolumeBorder(edge, dims);
             if (k != largest) {
-                const std::size_t at = local[v] + share[k].vertexBase;
+                const std::size_t at = local + share[k].vertexBase;
                 surfaces[k].mesh.vertices[at] = vertex;
                 surfaces[k].mesh.vertexEdges[at] = edge;
             } else if (compact) {
