@@ -112,6 +112,11 @@ def isotrack_bench(binary, path, iso, seed, repeat):
     return out
 
 
+def paired_ratio(tops, bottoms):
+    """The median of the rounds' ratios, each round's top over the same round's bottom."""
+    return statistics.median(t / b for t, b in zip(tops, bottoms))
+
+
 def smallest_surface_seed(binary, path, iso):
     report = isotrack_time(binary, path, iso, "all", 2, 1)
     smallest = report["surfaces"][-1]
@@ -175,7 +180,6 @@ def main():
                 theirs[threads].append(vtk_times(image, iso, seed, threads, args.repeat))
             if not round_ % 2:
                 run_isotrack()
-        paired = lambda top, bottom: statistics.median(t / b for t, b in zip(top, bottom))
         for threads in (1, 2):
             vtk_runs, mine = theirs[threads], ours[threads]
             times = {key: [r[key] for r in vtk_runs] for key in ("fe", "fe_all", "fe_one")}
@@ -190,8 +194,8 @@ def main():
             ]
             for what, ours_key, vtk_key in lines:
                 print(f"{name:<16} {what:<34} {med[ours_key] * 1e3:12.2f} {med[vtk_key] * 1e3:10.2f}"
-                      f" {paired(times[vtk_key], times[ours_key]):7.2f}")
-            all_over_mc = paired(times["all"], times["mc"])
+                      f" {paired_ratio(times[vtk_key], times[ours_key]):7.2f}")
+            all_over_mc = paired_ratio(times["all"], times["mc"])
             print(f"{'':<16} {'(all / mc, same threads)':<34} {all_over_mc:12.2f}")
             rows.append({"volume": name, "threads": threads, **{key: med[key] for key in times},
                          "rounds": times, "all_over_mc": all_over_mc,
@@ -203,7 +207,8 @@ def main():
                       f" VTK {v['triangles']} / {v['regions']}")
             if tr["triangles"] != v["one_triangles"]:
                 print(f"{'':<16} note: tracked {tr['triangles']} triangles, VTK closest region {v['one_triangles']}")
-        rows[-1]["two_over_one"] = paired(rows[-2]["rounds"]["mc"], rows[-1]["rounds"]["mc"])
+        one, two = ([r["seconds"] for r in ours[threads]["mc"]] for threads in (1, 2))
+        rows[-1]["two_over_one"] = paired_ratio(one, two)
         print()
     print("two threads against one (isotrack mc):")
     for r in rows:

@@ -44,8 +44,7 @@ struct Config {
 
 int runBench(const BenchOptions& options) {
     const TableKind table = parseTableKind(options.table);
-    bool tracks = false;
-    for (const std::string& method : options.methods) tracks = tracks || method == "track";
+    const bool tracks = std::find(options.methods.begin(), options.methods.end(), "track") != options.methods.end();
     if (tracks && options.seed.size() != 3) throw InputError("--methods track needs --seed X,Y,Z (world coordinates)");
     const Source source = loadSource(options.source);
     continuationTable(table);  // the tables are generated once, before any timing
@@ -110,8 +109,7 @@ RunCommand addBenchCommand(CLI::App& app) {
     CLI::App* command =
         app.add_subcommand("bench", "Time several methods and thread counts in one process, interleaved (medians)");
     addSourceOptions(*command, options->source);
-    command->add_option("--table", options->table, "Triangle table: consistent (default) or classic")
-        ->check(CLI::IsMember({"consistent", "classic"}));
+    addTableOption(*command, options->table);
     command->add_option("--methods", options->methods, "Methods to time, e.g. mc,all,track (default: all three)")
         ->delimiter(',')
         ->check(CLI::IsMember({"mc", "track", "all"}));

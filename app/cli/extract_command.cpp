@@ -243,8 +243,7 @@ RunCommand addExtractCommand(CLI::App& app) {
     auto options = std::make_shared<ExtractOptions>();
     CLI::App* command = app.add_subcommand("extract", "Extract an isosurface and report or save it");
     addSourceOptions(*command, options->source);
-    command->add_option("--table", options->table, "Triangle table: consistent (default) or classic")
-        ->check(CLI::IsMember({"consistent", "classic"}));
+    addTableOption(*command, options->table);
     command->add_option("--method", options->method,
                         "mc: every cell, one mesh; track: the one surface through --seed; all: every surface separately")
         ->check(CLI::IsMember({"mc", "track", "all"}));

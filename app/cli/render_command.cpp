@@ -10,6 +10,7 @@
 
 #include "cli/commands.h"
 #include "cli/source.h"
+#include "cli/timed_extraction.h"
 #include "headless/headless_context.h"
 #include "isotrack/errors.h"
 #include "isotrack/marching_cubes.h"
@@ -84,20 +85,19 @@ Vec3d volumeCentre(const Volume& volume) {
     return centre;
 }
 
-// The meshes to draw, largest first for "all".
-std::vector<Mesh> extractSurfaces(const RenderOptions& options, const Source& source, TableKind table) {
-    std::vector<Mesh> meshes;
-    if (options.method == "mc") {
-        meshes.push_back(marchingCubes(source.volume, source.iso, table));
-    } else if (options.method == "track") {
+// The meshes to draw, largest first for "all", on one thread (a tracked
+// surface's vertex order is then the same from run to run); seconds in *seconds.
+std::vector<Mesh> extractSurfaces(const RenderOptions& options, const Source& source, TableKind table, double* seconds) {
+    std::vector<double> seed;
+    if (options.method == "track") {
         const Vec3d point = options.seed.empty() ? volumeCentre(source.volume) : parsePoint(options.seed);
-        const GridEdge seed = nearestCrossedEdge(source.volume, source.iso, point);
-        meshes.push_back(trackSurface(source.volume, source.iso, seed, table).mesh);
-    } else {
-        for (Surface& surface : extractAllSurfaces(source.volume, source.iso, table)) {
-            meshes.push_back(std::move(surface.mesh));
-        }
+        seed.assign(point.begin(), point.end());
     }
+    TimedExtraction run = extractTimed(source.volume, source.iso, options.method, table, 1, seed);
+    *seconds = run.seconds;
+    std::vector<Mesh> meshes;
+    if (options.method == "mc") meshes.push_back(std::move(run.mesh));
+    for (Surface& surface : run.surfaces) meshes.push_back(std::move(surface.mesh));
     return meshes;
 }
 
@@ -112,9 +112,9 @@ int runRender(const RenderOptions& options) {
     snapshotOptions.selected = options.select;
 
     const Source source = loadSource(options.source);
-    auto start = Clock::now();
-    const std::vector<Mesh> meshes = extractSurfaces(options, source, table);
-    const double extractMs = millisecondsSince(start);
+    double extractSeconds = 0.0;
+    const std::vector<Mesh> meshes = extractSurfaces(options, source, table, &extractSeconds);
+    const double extractMs = extractSeconds * 1e3;
     if (options.select && *options.select >= meshes.size()) {
         throw InputError(
             "--select " + std::to_string(*options.select) + ": out of range, there " +
@@ -122,7 +122,7 @@ int runRender(const RenderOptions& options) {
             " (0 is the largest)");
     }
 
-    start = Clock::now();
+    const auto start = Clock::now();
     const headless::HeadlessContext context;
     std::vector<const Mesh*> surfaces;
     std::size_t triangles = 0;
@@ -156,8 +156,7 @@ RunCommand addRenderCommand(CLI::App& app) {
         ->check(CLI::IsMember({"mc", "track", "all"}));
     command->add_option("--seed", options->seed,
                         "X,Y,Z: world point near the surface to track (default: the volume's centre)");
-    command->add_option("--table", options->table, "Triangle table: consistent (default) or classic")
-        ->check(CLI::IsMember({"consistent", "classic"}));
+    addTableOption(*command, options->table);
     command->add_option("--out", options->out, "The PNG file to write")->required();
     command->add_option("--size", options->size, "WIDTHxHEIGHT in pixels, each 1..8192 (default 640x480)");
     command->add_option("--camera", options->camera,

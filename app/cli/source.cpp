@@ -24,6 +24,11 @@ const std::map<std::string, ScalarType> kRawTypes = [] {
 
 }  // namespace
 
+void addTableOption(CLI::App& command, std::string& table) {
+    command.add_option("--table", table, "Triangle table: consistent (default) or classic")
+        ->check(CLI::IsMember({"consistent", "classic"}));
+}
+
 void addRawOptions(CLI::App& command, RawOptions& raw, CLI::Option* volume) {
     std::vector<std::string> typeNames;
     for (const auto& entry : kRawTypes) typeNames.push_back(entry.first);

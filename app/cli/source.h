@@ -36,6 +36,9 @@ void addSourceOptions(CLI::App& command, SourceOptions& options);
 // Adds the raw layout options; they need `volume` (the --volume option).
 void addRawOptions(CLI::App& command, RawOptions& raw, CLI::Option* volume);
 
+// Adds --table consistent|classic (the triangle table) to `command`.
+void addTableOption(CLI::App& command, std::string& table);
+
 // Reads the file: as raw samples when raw.dims is set, else by its extension.
 Volume loadVolumeFile(const std::string& path, const RawOptions& raw);
 

@@ -119,8 +119,6 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         std::vector<Share>& share = shares[r];
         std::uint32_t k = kNone, counter = 0, triangles = 0, pieces = 0;
         for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
-            // A parent in this range is numbered already (parents are below their
-            // children): its surface is the vertex's, without a walk to the root.
             const std::uint32_t up = parent[v];
             std::uint32_t surface;
             if (up != v && up >= part.vertexBegin) {
