@@ -101,9 +101,9 @@ def isotrack_time(binary, path, iso, method, threads, repeat, seed=None):
 
 
 def isotrack_bench(binary, path, iso, seed, repeat):
-    """mc, all and track at 1 and 2 threads, interleaved in one `isotrack bench` process:
-    {threads: {method: run report}}."""
-    cmd = [binary, "bench", "--volume", path, "--iso", repr(iso), "--methods", "mc,all,track", "--threads", "1,2",
+    """mc, all, track and stream (every sample read once) at 1 and 2 threads, interleaved in
+    one `isotrack bench` process: {threads: {method: run report}}."""
+    cmd = [binary, "bench", "--volume", path, "--iso", repr(iso), "--methods", "mc,all,track,stream", "--threads", "1,2",
            "--seed", ",".join(repr(v) for v in seed), "--repeat", str(repeat), "--json"]
     report = json.loads(subprocess.run(cmd, check=True, capture_output=True, text=True).stdout)
     out = {1: {}, 2: {}}
@@ -166,13 +166,14 @@ def main():
         image = read_nrrd(path)
         if seed is None:
             seed = smallest_surface_seed(args.isotrack, path, iso)
-        ours = {1: {"mc": [], "all": [], "track": []}, 2: {"mc": [], "all": [], "track": []}}
+        methods = ("mc", "all", "track", "stream")
+        ours = {threads: {method: [] for method in methods} for threads in (1, 2)}
         theirs = {1: [], 2: []}
         for round_ in range(args.rounds):
             def run_isotrack():
                 runs = isotrack_bench(args.isotrack, path, iso, seed, args.repeat)
                 for threads in (1, 2):
-                    for method in ("mc", "all", "track"):
+                    for method in methods:
                         ours[threads][method].append(runs[threads][method])
             if round_ % 2:
                 run_isotrack()
@@ -183,7 +184,7 @@ def main():
         for threads in (1, 2):
             vtk_runs, mine = theirs[threads], ours[threads]
             times = {key: [r[key] for r in vtk_runs] for key in ("fe", "fe_all", "fe_one")}
-            times.update({method: [r["seconds"] for r in mine[method]] for method in ("mc", "all", "track")})
+            times.update({method: [r["seconds"] for r in mine[method]] for method in methods})
             med = {key: statistics.median(values) for key, values in times.items()}
             mc, al, tr = mine["mc"][0], mine["all"][0], mine["track"][0]  # the counts, the same in every round
             v = vtk_runs[0]
@@ -197,8 +198,11 @@ def main():
                       f" {paired_ratio(times[vtk_key], times[ours_key]):7.2f}")
             all_over_mc = paired_ratio(times["all"], times["mc"])
             print(f"{'':<16} {'(all / mc, same threads)':<34} {all_over_mc:12.2f}")
+            # Against reading every sample once, on as many threads.
+            mc_over_stream = paired_ratio(times["mc"], times["stream"])
+            print(f"{'':<16} {'(mc / reading the volume once)':<34} {mc_over_stream:12.2f}   (reading: {med['stream'] * 1e3:.2f} ms)")
             rows.append({"volume": name, "threads": threads, **{key: med[key] for key in times},
-                         "rounds": times, "all_over_mc": all_over_mc,
+                         "rounds": times, "all_over_mc": all_over_mc, "mc_over_stream": mc_over_stream,
                          "triangles": mc["triangles"], "vtk_triangles": v["triangles"],
                          "surfaces": al["components"], "vtk_regions": v["regions"],
                          "track_triangles": tr["triangles"], "vtk_closest_triangles": v["one_triangles"]})

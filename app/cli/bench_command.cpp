@@ -6,8 +6,11 @@
 // between figures from separate processes carry that noise. Here each of the
 // --repeat passes runs every method at every thread count once (the order
 // reversed every other pass), and each figure is the median of its runs.
+// `stream` reads every sample once and does nothing else (it counts those at or
+// above the isovalue): the floor an extraction's time is measured against.
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -40,6 +43,7 @@ struct Config {
     int threads = 1;
     std::vector<double> seconds;
     std::size_t triangles = 0, vertices = 0, surfaces = 0;
+    std::size_t samplesAbove = 0;  // stream
 };
 
 int runBench(const BenchOptions& options) {
@@ -58,6 +62,12 @@ int runBench(const BenchOptions& options) {
     for (int pass = 0; pass < options.repeat; ++pass) {
         for (std::size_t i = 0; i < configs.size(); ++i) {
             Config& config = configs[pass % 2 ? configs.size() - 1 - i : i];
+            if (config.method == "stream") {
+                const auto start = std::chrono::steady_clock::now();
+                config.samplesAbove = countSamplesAbove(source.volume, source.iso, config.threads);
+                config.seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+                continue;
+            }
             const TimedExtraction run =
                 extractTimed(source.volume, source.iso, config.method, table, config.threads, options.seed);
             config.seconds.push_back(run.seconds);
@@ -73,13 +83,15 @@ int runBench(const BenchOptions& options) {
     if (options.json) {
         nlohmann::json runs = nlohmann::json::array();
         for (const Config& c : configs) {
-            runs.push_back({{"method", c.method},
-                            {"threads", c.threads},
-                            {"seconds", median(c.seconds)},
-                            {"seconds_all", c.seconds},
-                            {"triangles", c.triangles},
-                            {"vertices", c.vertices},
-                            {"components", c.method == "mc" ? nlohmann::json(nullptr) : nlohmann::json(c.surfaces)}});
+            nlohmann::json run{{"method", c.method}, {"threads", c.threads}, {"seconds", median(c.seconds)}, {"seconds_all", c.seconds}};
+            if (c.method == "stream") {
+                run["samples_above"] = c.samplesAbove;
+            } else {
+                run["triangles"] = c.triangles;
+                run["vertices"] = c.vertices;
+                run["components"] = c.method == "mc" ? nlohmann::json(nullptr) : nlohmann::json(c.surfaces);
+            }
+            runs.push_back(run);
         }
         const Dims& dims = source.volume.dims();
         nlohmann::json report{{"source", source.name},
@@ -94,8 +106,12 @@ int runBench(const BenchOptions& options) {
     std::printf("%s at iso %g (%s table): medians of %d interleaved runs\n", source.name.c_str(), source.iso,
                 tableKindName(table), options.repeat);
     for (const Config& c : configs) {
-        std::printf("  %-5s %2d thread%s %10.2f ms  %zu triangles", c.method.c_str(), c.threads, c.threads == 1 ? " " : "s",
-                    median(c.seconds) * 1e3, c.triangles);
+        std::printf("  %-6s %2d thread%s %10.2f ms  ", c.method.c_str(), c.threads, c.threads == 1 ? " " : "s", median(c.seconds) * 1e3);
+        if (c.method == "stream") {
+            std::printf("every sample read once, %zu at or above the isovalue\n", c.samplesAbove);
+            continue;
+        }
+        std::printf("%zu triangles", c.triangles);
         if (c.method != "mc") std::printf(" in %zu surface%s", c.surfaces, c.surfaces == 1 ? "" : "s");
         std::printf("\n");
     }
@@ -110,9 +126,9 @@ RunCommand addBenchCommand(CLI::App& app) {
         app.add_subcommand("bench", "Time several methods and thread counts in one process, interleaved (medians)");
     addSourceOptions(*command, options->source);
     addTableOption(*command, options->table);
-    command->add_option("--methods", options->methods, "Methods to time, e.g. mc,all,track (default: all three)")
+    command->add_option("--methods", options->methods, "Methods to time, e.g. mc,all,track (default: those three); stream reads every sample once")
         ->delimiter(',')
-        ->check(CLI::IsMember({"mc", "track", "all"}));
+        ->check(CLI::IsMember({"mc", "track", "all", "stream"}));
     command->add_option("--threads", options->threads, "Thread counts to time, e.g. 1,2 (default)")
         ->delimiter(',')
         ->check(CLI::Range(1, 256));

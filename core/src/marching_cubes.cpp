@@ -710,4 +710,30 @@ std::size_t countCrossedEdges(const Volume& volume, double iso) {
     });
 }
 
+std::size_t countSamplesAbove(const Volume& volume, double iso, int threads) {
+    return visitSamples(volume, [&](const auto* samples) -> std::size_t {
+        using T = std::remove_cv_t<std::remove_pointer_t<decltype(samples)>>;
+        const detail::NativeThreshold<T> threshold(iso);
+        const std::size_t total = volume.sampleCount();
+        if (threshold.all || threshold.none) return threshold.all ? total : 0;
+        // Equal contiguous parts, one per thread, each a loop the compiler vectorises.
+        const int parts = int(std::max<std::size_t>(1, std::min<std::size_t>(std::size_t(std::max(1, threads)), total)));
+        std::vector<std::size_t> counts(std::size_t(parts), 0);
+        const T t = threshold.value;
+        detail::parallelFor(parts, parts, [&](int p) {
+            const std::size_t begin = total * std::size_t(p) / std::size_t(parts), end = total * std::size_t(p + 1) / std::size_t(parts);
+            std::size_t count = 0;
+            for (std::size_t block = begin; block < end; block += 65536) {
+                std::uint32_t inBlock = 0;  // narrow sums keep the vector lanes wide
+                for (std::size_t i = block, stop = std::min(end, block + 65536); i < stop; ++i) inBlock += samples[i] >= t;
+                count += inBlock;
+            }
+            counts[std::size_t(p)] = count;
+        });
+        std::size_t count = 0;
+        for (const std::size_t c : counts) count += c;
+        return count;
+    });
+}
+
 }  // namespace isotrack

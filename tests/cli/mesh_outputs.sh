@@ -57,4 +57,17 @@ tail -c $((32 * 32 * 32 * 4)) blobs.nrrd > blobs.raw
 strip() { sed -e 's/"file":"[^"]*",//' -e 's/"format":"[^"]*",//' "$1"; }
 [[ $(strip info_nrrd.json) == "$(strip info_raw.json)" ]] || fail "info differs: $(cat info_nrrd.json) vs $(cat info_raw.json)"
 "$isotrack" info --volume blobs.nrrd | grep -q "histogram 16 bins" || fail "no text histogram"
+
+# bench's stream: every sample read once, those at or above the isovalue counted.
+"$isotrack" bench --volume blobs.raw --dims 32,32,32 --type float32 --iso 0.25 --methods stream --threads 1,2 --repeat 2 --json > stream.json
+python3 - stream.json blobs.raw <<'PY' || fail "bench stream: $(cat stream.json)"
+import array, json, sys
+report = json.load(open(sys.argv[1]))
+samples = array.array("f", open(sys.argv[2], "rb").read())
+expected = sum(1 for v in samples if v >= 0.25)
+assert 0 < expected < len(samples), expected
+for run in report["runs"]:
+    assert run["method"] == "stream" and run["samples_above"] == expected, (run, expected)
+    assert "triangles" not in run, run
+PY
 echo "ok ($total triangles in $count surface files)"

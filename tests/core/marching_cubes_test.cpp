@@ -205,3 +205,31 @@ TEST_CASE("the CT skull is watertight away from the border with one vertex per c
     CHECK(t.repeatedDirectedEdges == 0);
     CHECK(mesh.vertices.size() == countCrossedEdges(volume, 400.5));
 }
+
+TEST_CASE("counting the samples at or above the isovalue agrees with classifying each one", "[core][mc]") {
+    // 70 x 41 x 29 samples: more than one 65536-sample block, and parts of uneven length on 3 threads.
+    const Dims dims{70, 41, 29};
+    for (ScalarType type : {ScalarType::Int16, ScalarType::UInt8, ScalarType::Float32, ScalarType::Float64}) {
+        INFO("type " << int(type));
+        Volume volume(dims, type);
+        std::uint32_t state = 12345;
+        for (int z = 0; z < dims[2]; ++z)
+            for (int y = 0; y < dims[1]; ++y)
+                for (int x = 0; x < dims[0]; ++x) {
+                    state = state * 1664525u + 1013904223u;
+                    volume.setValue(x, y, z, double(state >> 24) - (type == ScalarType::UInt8 ? 0.0 : 100.0));
+                }
+        const bool floating = type == ScalarType::Float32 || type == ScalarType::Float64;
+        if (floating) volume.setValue(3, 4, 5, std::nan(""));  // NaN is below every isovalue
+        for (double iso : {-1000.0, -100.0, 0.0, 20.0, 20.5, 155.0, 1000.0}) {
+            std::size_t expected = 0;
+            for (int z = 0; z < dims[2]; ++z)
+                for (int y = 0; y < dims[1]; ++y)
+                    for (int x = 0; x < dims[0]; ++x) expected += volume.value(x, y, z) >= iso;
+            for (int threads : {1, 2, 3}) {
+                INFO("iso " << iso << ", " << threads << " threads");
+                CHECK(countSamplesAbove(volume, iso, threads) == expected);
+            }
+        }
+    }
+}

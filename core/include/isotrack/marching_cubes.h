@@ -17,4 +17,10 @@ Mesh marchingCubes(const Volume& volume, double iso, TableKind table = TableKind
 // The number of grid edges whose ends lie on different sides of `iso`.
 std::size_t countCrossedEdges(const Volume& volume, double iso);
 
+// The number of samples at or above `iso` (isotrack's one classification rule),
+// counted in a single pass over the samples on `threads` threads: reading every
+// sample once, the least any extraction over the whole volume does, and the
+// floor its time is measured against.
+std::size_t countSamplesAbove(const Volume& volume, double iso, int threads = 1);
+
 }  // namespace isotrack
