@@ -10,7 +10,6 @@
 // above the isovalue): the floor an extraction's time is measured against.
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -63,9 +62,8 @@ int runBench(const BenchOptions& options) {
         for (std::size_t i = 0; i < configs.size(); ++i) {
             Config& config = configs[pass % 2 ? configs.size() - 1 - i : i];
             if (config.method == "stream") {
-                const auto start = std::chrono::steady_clock::now();
-                config.samplesAbove = countSamplesAbove(source.volume, source.iso, config.threads);
-                config.seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+                config.seconds.push_back(
+                    secondsOf([&] { config.samplesAbove = countSamplesAbove(source.volume, source.iso, config.threads); }));
                 continue;
             }
             const TimedExtraction run =

@@ -1,7 +1,6 @@
 #include "cli/timed_extraction.h"
 
 #include <algorithm>
-#include <chrono>
 
 #include "isotrack/continuation.h"
 #include "isotrack/errors.h"
@@ -10,21 +9,19 @@ namespace isotrack::cli {
 
 TimedExtraction extractTimed(const Volume& volume, double iso, const std::string& method, TableKind table, int threads,
                              const std::vector<double>& seed) {
-    using Clock = std::chrono::steady_clock;
     if (method == "track" && seed.size() != 3) throw InputError("--method track needs --seed X,Y,Z (world coordinates)");
+    if (method != "mc" && method != "track" && method != "all") throw InputError("unknown method " + method + " (mc, all or track)");
     TimedExtraction out;
-    const auto start = Clock::now();
-    if (method == "mc") {
-        out.mesh = marchingCubes(volume, iso, table, threads);
-    } else if (method == "track") {
-        const GridEdge edge = nearestCrossedEdge(volume, iso, {seed[0], seed[1], seed[2]});
-        out.surfaces.push_back(trackSurface(volume, iso, edge, table, threads));
-    } else if (method == "all") {
-        out.surfaces = extractAllSurfaces(volume, iso, table, threads);
-    } else {
-        throw InputError("unknown method " + method + " (mc, all or track)");
-    }
-    out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    out.seconds = secondsOf([&] {
+        if (method == "mc") {
+            out.mesh = marchingCubes(volume, iso, table, threads);
+        } else if (method == "track") {
+            const GridEdge edge = nearestCrossedEdge(volume, iso, {seed[0], seed[1], seed[2]});
+            out.surfaces.push_back(trackSurface(volume, iso, edge, table, threads));
+        } else {
+            out.surfaces = extractAllSurfaces(volume, iso, table, threads);
+        }
+    });
     return out;
 }
 

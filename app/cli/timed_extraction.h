@@ -1,5 +1,6 @@
 #pragma once
 // One timed extraction by method name, shared by `extract` and `bench`.
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,14 @@ struct TimedExtraction {
     Mesh mesh;                      // mc: the one mesh
     std::vector<Surface> surfaces;  // track: the one surface; all: every surface, largest first
 };
+
+// The seconds fn() takes, on a steady clock.
+template <class Fn>
+double secondsOf(Fn&& fn) {
+    const auto start = std::chrono::steady_clock::now();
+    fn();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 // method "mc", "all" or "track" (from the crossed edge nearest `seed`, a world
 // point, which must then hold 3 values; finding that edge is timed too).

@@ -717,7 +717,7 @@ std::size_t countSamplesAbove(const Volume& volume, double iso, int threads) {
         const std::size_t total = volume.sampleCount();
         if (threshold.all || threshold.none) return threshold.all ? total : 0;
         // Equal contiguous parts, one per thread, each a loop the compiler vectorises.
-        const int parts = int(std::max<std::size_t>(1, std::min<std::size_t>(std::size_t(std::max(1, threads)), total)));
+        const int parts = std::max(1, threads);
         std::vector<std::size_t> counts(std::size_t(parts), 0);
         const T t = threshold.value;
         detail::parallelFor(parts, parts, [&](int p) {
