@@ -8,6 +8,8 @@
 #include <thread>
 #include <vector>
 
+#include "worker_pool.h"
+
 namespace isotrack::detail {
 
 // The first exception of several threads, kept to be rethrown on the calling one.
@@ -27,8 +29,9 @@ private:
     std::exception_ptr failure_;
 };
 
-// Runs fn(state, i) for i in [0, count) on `threads` threads, handing out
-// indices in order, so that each thread's come to it in increasing order. Every
+// Runs fn(state, i) for i in [0, count) on `threads` threads (the calling one
+// and kept ones, see WorkerPool), handing out indices in order, so that each
+// thread's come to it in increasing order. Every
 // thread that takes part makes a state of its own with make() before its first
 // index. The first exception any iteration throws stops the hand-out and is
 // rethrown on the calling thread once every thread has stopped.
@@ -53,14 +56,19 @@ void parallelForWithState(int count, int threads, Make&& make, Fn&& fn) {
             failure.record();
         }
     };
-    std::vector<std::thread> pool;
-    try {
-        for (int t = 1; t < std::min(threads, count); ++t) pool.emplace_back(work);
-    } catch (const std::system_error&) {
-        // No more threads to be had: the ones started, and this one, do the work.
+    const int helpers = std::min(threads, count) - 1;
+    using Work = decltype(work);
+    if (!WorkerPool::shared().run(helpers, {[](void* w) { (*static_cast<Work*>(w))(); }, &work})) {
+        // The pool is busy (another thread's step, or this one nested in a step): threads of its own.
+        std::vector<std::thread> pool;
+        try {
+            for (int t = 0; t < helpers; ++t) pool.emplace_back(work);
+        } catch (const std::system_error&) {
+            // No more threads to be had: the ones started, and this one, do the work.
+        }
+        work();
+        for (auto& thread : pool) thread.join();
     }
-    work();
-    for (auto& thread : pool) thread.join();
     failure.rethrowIfAny();
 }
 
