@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "isotrack/continuation.h"
 #include "isotrack/errors.h"
 
 namespace isotrack::cli {

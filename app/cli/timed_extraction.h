@@ -1,5 +1,5 @@
 #pragma once
-// One timed extraction by method name, shared by `extract` and `bench`.
+// One timed extraction by method name, shared by `extract`, `bench` and `render`.
 #include <chrono>
 #include <string>
 #include <vector>

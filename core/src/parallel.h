@@ -31,10 +31,10 @@ private:
 
 // Runs fn(state, i) for i in [0, count) on `threads` threads (the calling one
 // and kept ones, see WorkerPool), handing out indices in order, so that each
-// thread's come to it in increasing order. Every
-// thread that takes part makes a state of its own with make() before its first
-// index. The first exception any iteration throws stops the hand-out and is
-// rethrown on the calling thread once every thread has stopped.
+// thread's come to it in increasing order. Every thread that takes part makes a
+// state of its own with make() before its first index. The first exception any
+// iteration throws stops the hand-out and is rethrown on the calling thread
+// once every thread has stopped.
 template <class Make, class Fn>
 void parallelForWithState(int count, int threads, Make&& make, Fn&& fn) {
     if (count <= 0) return;
