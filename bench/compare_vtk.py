@@ -91,15 +91,6 @@ def vtk_times(image, iso, seed, threads, repeat):
             "regions": regions, "one_triangles": one}
 
 
-def isotrack_time(binary, path, iso, method, threads, repeat, seed=None):
-    """The report of one `isotrack extract --json` process."""
-    cmd = [binary, "extract", "--volume", path, "--iso", repr(iso), "--method", method, "--threads", str(threads),
-           "--repeat", str(repeat), "--json"]
-    if seed is not None:
-        cmd += ["--seed", ",".join(repr(v) for v in seed)]
-    return json.loads(subprocess.run(cmd, check=True, capture_output=True, text=True).stdout)
-
-
 def isotrack_bench(binary, path, iso, seed, repeat):
     """mc, all, track and stream (every sample read once) at 1 and 2 threads, interleaved in
     one `isotrack bench` process: {threads: {method: run report}}."""
@@ -118,7 +109,9 @@ def paired_ratio(tops, bottoms):
 
 
 def smallest_surface_seed(binary, path, iso):
-    report = isotrack_time(binary, path, iso, "all", 2, 1)
+    """A world point on the smallest surface (from `isotrack extract --method all --json`), to track."""
+    cmd = [binary, "extract", "--volume", path, "--iso", repr(iso), "--method", "all", "--threads", "2", "--json"]
+    report = json.loads(subprocess.run(cmd, check=True, capture_output=True, text=True).stdout)
     smallest = report["surfaces"][-1]
     lo, hi = smallest["bounds"]
     return [lo[0], (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2]
