@@ -36,6 +36,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <mutex>
 #include <stdexcept>
 #include <vector>
 
@@ -596,26 +597,25 @@ void resolveSeam(std::vector<Chunk>& chunks, std::size_t c, Mesh& mesh) {
     for (std::size_t at : chunks[c].seamIndices) mesh.indices[at] = next[mesh.indices[at] & ~kSeamBit];
 }
 
-// Joins the surfaces across the seams, for labelling (the placeholders resolved).
-void stitch(std::vector<Chunk>& chunks, Mesh& mesh, std::uint32_t* parent) {
-    // Each triangle with a placeholder joins its three corners, once (seam
-    // indices come in order, a triangle's together).
-    for (std::size_t c = 0; c + 1 < chunks.size(); ++c) {
-        std::size_t joined = ~std::size_t(0);
-        for (std::size_t at : chunks[c].seamIndices) {
-            const std::size_t first = at - at % 3;
-            if (first == joined) continue;
-            joined = first;
-            const std::uint32_t* triangle = &mesh.indices[first];
-            std::uint32_t root = findRoot(parent, triangle[0]);
-            for (int k = 1; k < 3; ++k) {
-                const std::uint32_t other = findRoot(parent, triangle[k]);
-                if (other != root) root = linkRoots(parent, root, other);
-            }
+// Joins the surfaces across the seam between `chunk` and the next one, for
+// labelling, once its placeholders are resolved: each triangle with a placeholder
+// joins its three corners, once (seam indices come in order, a triangle's
+// together). It reads and writes the forest of the two chunks and of the chunks
+// below joined to them already, all written; the caller joins one seam at a time.
+void stitch(const Chunk& chunk, const Mesh& mesh, std::uint32_t* parent) {
+    std::size_t joined = ~std::size_t(0);
+    for (std::size_t at : chunk.seamIndices) {
+        const std::size_t first = at - at % 3;
+        if (first == joined) continue;
+        joined = first;
+        const std::uint32_t* triangle = &mesh.indices[first];
+        std::uint32_t root = findRoot(parent, triangle[0]);
+        for (int k = 1; k < 3; ++k) {
+            const std::uint32_t other = findRoot(parent, triangle[k]);
+            if (other != root) root = linkRoots(parent, root, other);
         }
     }
 }
-
 
 // The exhaustive pass on `threads` threads; labels surfaces in *parent and tallies
 // cell pieces in *tally (both resized to one entry per vertex) when given.
@@ -653,10 +653,17 @@ std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int 
             parents = parent->data();
             tallies = tally->data();
         }
-        // A seam is resolved by whichever of its two chunks is written last, on its thread.
+        // A seam is resolved, and joined when labelling, by whichever of its two
+        // chunks is written last, on its thread, while other chunks are marched.
         std::vector<std::atomic<int>> written(chunks.size());
+        std::mutex joining;
         auto chunkWritten = [&](std::size_t seam) {
-            if (written[seam].fetch_add(1) == 1) resolveSeam(chunks, seam, mesh);
+            if (written[seam].fetch_add(1) != 1) return;
+            resolveSeam(chunks, seam, mesh);
+            if (parents) {
+                const std::lock_guard<std::mutex> lock(joining);
+                stitch(chunks[seam], mesh, parents);
+            }
         };
         detail::parallelForWithState(
             chunkCount, threads, [&] { return ChunkMarcher<T>(grid, continuation, slots, unions, parents, tallies, mesh); },
@@ -667,7 +674,6 @@ std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int 
                 if (c + 1 < chunks.size()) chunkWritten(c);
             });
     });
-    if (parent) stitch(chunks, mesh, parent->data());
     return chunks;
 }
 
