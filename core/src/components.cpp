@@ -8,7 +8,8 @@
 // vertices), which gives it its place in every surface's buffers,
 // and the triangles, then the vertices, are copied there and measured. The largest
 // surface is not copied but compacted in place, keeping the exhaustive pass's
-// buffers (and their pages, already touched). It yields
+// buffers (and their pages, already touched); its part below the first vertex of
+// any other surface is in place already, and is only measured. It yields
 // exactly the surfaces trackAllSurfaces finds by tracking one surface at a time
 // (the tests hold them equal), with no per-voxel memory.
 #include <algorithm>
@@ -165,6 +166,14 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
     // share moves to the start of the range (every element moves down, within the
     // range), then the shares next to each other. A lone surface stays as it is.
     const bool compact = count > 0 && surfaces[largest].stats.vertices != mesh.vertices.size();
+    // Every vertex below the first vertex of another surface (its root) is the
+    // largest surface's, at its final place: those vertices, and the triangles
+    // with only such corners, stay as they are, and are only measured. With one
+    // surface far larger than the rest, which start late, that is most of the mesh.
+    std::size_t settled = mesh.vertices.size();
+    for (std::size_t k = 0; k < std::min<std::size_t>(count, 2); ++k) {
+        if (k != largest) settled = std::min<std::size_t>(settled, roots[k]);
+    }
     // Triangles out to their surfaces, measured on the way, while the vertices are
     // still in place. A range's triangles use the next range's vertices too.
     // One range (one thread) has all of every surface: indices are then the vertices' own.
@@ -197,7 +206,30 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
                 cursor[runSurface] = std::size_t(out - surfaces[runSurface].mesh.indices.data());
             }
         };
-        for (std::size_t t = part.triangleBegin; t < triangleEnd;) {
+        std::size_t t = part.triangleBegin;
+        // The range's first triangles, while their corners are settled: the run of
+        // the largest surface begins with them, in place.
+        auto isSettled = [&](const std::uint32_t* v, std::size_t corners) {
+            std::uint32_t top = 0;
+            for (std::size_t i = 0; i < corners; ++i) top = std::max(top, v[i]);
+            return top < settled;
+        };
+        while (t + 4 <= triangleEnd && isSettled(indices + 3 * t, 12)) {
+            detail::TriangleMeasure::addFourTo(runArea, runVolume, vertices, indices + 3 * t);
+            t += 4;
+        }
+        while (t < triangleEnd && isSettled(indices + 3 * t, 3)) {
+            const std::uint32_t* v = indices + 3 * t++;
+            detail::TriangleMeasure::addTo(runArea, runVolume, vertices[v[0]], vertices[v[1]], vertices[v[2]]);
+        }
+        if (t != part.triangleBegin) {
+            runSurface = static_cast<std::uint32_t>(largest);
+            own = base[largest];
+            next = nextBase[largest];
+            to = 3 * t;
+            out = compact ? indices + to : nullptr;
+        }
+        while (t < triangleEnd) {
             const std::uint32_t* v = indices + 3 * t;
             const std::uint32_t k = label[v[0]].surface;
             if (k != runSurface) {
@@ -254,7 +286,20 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         std::uint32_t runSurface = kNone;
         float x0 = 0, y0 = 0, z0 = 0, x1 = 0, y1 = 0, z1 = 0;
         bool border = false;
-        for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
+        // Settled vertices stay; the largest surface's run begins with their bounds.
+        std::size_t v = part.vertexBegin;
+        const std::size_t settledEnd = std::clamp(settled, part.vertexBegin, part.vertexEnd);
+        if (settledEnd > v) {
+            detail::SurfaceMeasure run;
+            run.addBounds(mesh.vertices.data() + v, settledEnd - v);
+            x0 = run.boundsMin[0], y0 = run.boundsMin[1], z0 = run.boundsMin[2];
+            x1 = run.boundsMax[0], y1 = run.boundsMax[1], z1 = run.boundsMax[2];
+            border = std::any_of(mesh.vertexEdges.begin() + std::ptrdiff_t(v), mesh.vertexEdges.begin() + std::ptrdiff_t(settledEnd),
+                                 [&](const PackedGridEdge& edge) { return detail::edgeOnVolumeBorder(edge, dims); });
+            runSurface = static_cast<std::uint32_t>(largest);
+            v = to = settledEnd;
+        }
+        for (; v < part.vertexEnd; ++v) {
             const auto [k, local] = labels[v];
             const Vertex& vertex = mesh.vertices[v];
             const PackedGridEdge edge = mesh.vertexEdges[v];
@@ -289,6 +334,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
                 const std::size_t from = byTriangle ? parts[r].triangleBegin : parts[r].vertexBegin;
                 const std::size_t to = byTriangle ? share.triangleBase : share.vertexBase;
                 const std::size_t moved = byTriangle ? share.triangles : share.vertices;
+                if (from == to) continue;  // nothing below it left the largest surface
                 std::copy_n(buffer.begin() + std::ptrdiff_t(per * from), per * moved, buffer.begin() + std::ptrdiff_t(per * to));
             }
         };

@@ -369,6 +369,23 @@ TEST_CASE("every surface together is the exhaustive mesh, triangle for triangle"
     SECTION("noise, consistent") { requireAllEqualsExhaustive(makeField({"noise", 32}), 0.5, TableKind::Consistent); }
     SECTION("noise, classic") { requireAllEqualsExhaustive(makeField({"noise", 32}), 0.5, TableKind::Classic); }
     SECTION("gyroid") { requireAllEqualsExhaustive(makeField({"gyroid", 48}), 0.0, TableKind::Consistent); }
+    // The largest surface's vertices below the first of another surface stay in
+    // place: here nearly all of them, on every range, the speck starting late.
+    SECTION("a large sphere and a speck in the far corner") {
+        const int n = 40;
+        Volume volume({n, n, n}, ScalarType::Float32, {1.0, 1.0, 1.0}, {0.0, 0.0, 0.0});
+        for (int z = 0; z < n; ++z)
+            for (int y = 0; y < n; ++y)
+                for (int x = 0; x < n; ++x) {
+                    const double large = 15.0 - std::hypot(x - 17.0, y - 17.5, z - 16.0);
+                    const double speck = 1.5 - std::hypot(x - 35.2, y - 35.6, z - 35.4);
+                    volume.setValue(x, y, z, std::max(large, speck));
+                }
+        const auto surfaces = extractAllSurfaces(volume, 0.0);
+        REQUIRE(surfaces.size() == 2);
+        REQUIRE(surfaces[0].mesh.triangleCount() > 100 * surfaces[1].mesh.triangleCount());
+        requireAllEqualsExhaustive(volume, 0.0, TableKind::Consistent);
+    }
 }
 
 TEST_CASE("every surface together is the exhaustive mesh for every sample type, across its whole range", "[core][tracking]") {
