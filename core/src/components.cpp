@@ -197,9 +197,9 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         // time where four in a row are on it.
         std::uint32_t runSurface = kNone, own = 0, next = 0;
         std::uint32_t* out = nullptr;  // null for a lone surface, whose triangles stay as they are
-        double runArea = 0.0, runVolume = 0.0;
+        detail::TriangleLanes runSums;
         auto endRun = [&] {
-            share[runSurface].measure.triangles.merge({runArea, runVolume});
+            share[runSurface].measure.triangles.merge(runSums.total());
             if (runSurface == largest) {
                 if (out) to = std::size_t(out - indices);
             } else {
@@ -215,12 +215,12 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             return top < settled;
         };
         while (t + 4 <= triangleEnd && isSettled(indices + 3 * t, 12)) {
-            detail::TriangleMeasure::addFourTo(runArea, runVolume, vertices, indices + 3 * t);
+            runSums.addFour(vertices, indices + 3 * t);
             t += 4;
         }
         while (t < triangleEnd && isSettled(indices + 3 * t, 3)) {
             const std::uint32_t* v = indices + 3 * t++;
-            detail::TriangleMeasure::addTo(runArea, runVolume, vertices[v[0]], vertices[v[1]], vertices[v[2]]);
+            runSums.add(vertices[v[0]], vertices[v[1]], vertices[v[2]]);
         }
         if (t != part.triangleBegin) {
             runSurface = static_cast<std::uint32_t>(largest);
@@ -235,7 +235,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             if (k != runSurface) {
                 if (runSurface != kNone) endRun();
                 runSurface = k;
-                runArea = runVolume = 0.0;
+                runSums = {};
                 own = base[k];
                 next = nextBase[k];
                 if (k != largest) {
@@ -246,10 +246,10 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             }
             std::size_t run = 1;
             if (t + 4 <= triangleEnd && label[v[3]].surface == k && label[v[6]].surface == k && label[v[9]].surface == k) {
-                detail::TriangleMeasure::addFourTo(runArea, runVolume, vertices, v);
+                runSums.addFour(vertices, v);
                 run = 4;
             } else {
-                detail::TriangleMeasure::addTo(runArea, runVolume, vertices[v[0]], vertices[v[1]], vertices[v[2]]);
+                runSums.add(vertices[v[0]], vertices[v[1]], vertices[v[2]]);
             }
             if (out) {
                 // Read before writing: a compacted triangle may land on its own corners.

@@ -43,6 +43,7 @@ inline std::uint64_t firstEdgeOrder(const Mesh& mesh, const Dims& dims) {
 // kept as twice the area and six times the volume so that a triangle costs no
 // division.
 struct TriangleMeasure {
+    friend class TriangleLanes;
     double doubleArea = 0.0, sixfoldVolume = 0.0;
 
     double area() const { return 0.5 * doubleArea; }
@@ -67,24 +68,11 @@ struct TriangleMeasure {
     // the same order, so the sums are those of four addTo calls.
     static void addFourTo(double& doubledArea, double& sixfoldSignedVolume, const Vertex* vertices, const std::uint32_t* indices) {
 #if defined(__SSE2__)
-        // Lane i: triangle i's corner k, as x, y, z rows.
-        __m128 x[3], y[3], z[3];
-        for (int k = 0; k < 3; ++k) {
-            __m128 p0 = _mm_loadu_ps(vertices[indices[k]].position), p1 = _mm_loadu_ps(vertices[indices[3 + k]].position);
-            __m128 p2 = _mm_loadu_ps(vertices[indices[6 + k]].position), p3 = _mm_loadu_ps(vertices[indices[9 + k]].position);
-            _MM_TRANSPOSE4_PS(p0, p1, p2, p3);
-            x[k] = p0, y[k] = p1, z[k] = p2;
-        }
-        const __m128 ux = _mm_sub_ps(x[1], x[0]), uy = _mm_sub_ps(y[1], y[0]), uz = _mm_sub_ps(z[1], z[0]);
-        const __m128 vx = _mm_sub_ps(x[2], x[0]), vy = _mm_sub_ps(y[2], y[0]), vz = _mm_sub_ps(z[2], z[0]);
-        const __m128 nx = _mm_sub_ps(_mm_mul_ps(uy, vz), _mm_mul_ps(uz, vy));
-        const __m128 ny = _mm_sub_ps(_mm_mul_ps(uz, vx), _mm_mul_ps(ux, vz));
-        const __m128 nz = _mm_sub_ps(_mm_mul_ps(ux, vy), _mm_mul_ps(uy, vx));
-        const __m128 squared = _mm_add_ps(_mm_add_ps(_mm_mul_ps(nx, nx), _mm_mul_ps(ny, ny)), _mm_mul_ps(nz, nz));
-        const __m128 volume = _mm_add_ps(_mm_add_ps(_mm_mul_ps(x[0], nx), _mm_mul_ps(y[0], ny)), _mm_mul_ps(z[0], nz));
+        __m128 areas4, volumes4;
+        measureFour(vertices, indices, areas4, volumes4);
         alignas(16) float areas[4], volumes[4];
-        _mm_store_ps(areas, _mm_sqrt_ps(squared));
-        _mm_store_ps(volumes, volume);
+        _mm_store_ps(areas, areas4);
+        _mm_store_ps(volumes, volumes4);
         for (int i = 0; i < 4; ++i) {
             doubledArea += double(areas[i]);
             sixfoldSignedVolume += double(volumes[i]);
@@ -118,6 +106,26 @@ private:
     }
 
 #if defined(__SSE2__)
+    // Lane i: twice the area and six times the signed volume of triangle i of
+    // the four at indices[0..11], by measure's float operations.
+    static void measureFour(const Vertex* vertices, const std::uint32_t* indices, __m128& doubledAreas, __m128& sixfoldSignedVolumes) {
+        // Lane i: triangle i's corner k, as x, y, z rows.
+        __m128 x[3], y[3], z[3];
+        for (int k = 0; k < 3; ++k) {
+            __m128 p0 = _mm_loadu_ps(vertices[indices[k]].position), p1 = _mm_loadu_ps(vertices[indices[3 + k]].position);
+            __m128 p2 = _mm_loadu_ps(vertices[indices[6 + k]].position), p3 = _mm_loadu_ps(vertices[indices[9 + k]].position);
+            _MM_TRANSPOSE4_PS(p0, p1, p2, p3);
+            x[k] = p0, y[k] = p1, z[k] = p2;
+        }
+        const __m128 ux = _mm_sub_ps(x[1], x[0]), uy = _mm_sub_ps(y[1], y[0]), uz = _mm_sub_ps(z[1], z[0]);
+        const __m128 vx = _mm_sub_ps(x[2], x[0]), vy = _mm_sub_ps(y[2], y[0]), vz = _mm_sub_ps(z[2], z[0]);
+        const __m128 nx = _mm_sub_ps(_mm_mul_ps(uy, vz), _mm_mul_ps(uz, vy));
+        const __m128 ny = _mm_sub_ps(_mm_mul_ps(uz, vx), _mm_mul_ps(ux, vz));
+        const __m128 nz = _mm_sub_ps(_mm_mul_ps(ux, vy), _mm_mul_ps(uy, vx));
+        const __m128 squared = _mm_add_ps(_mm_add_ps(_mm_mul_ps(nx, nx), _mm_mul_ps(ny, ny)), _mm_mul_ps(nz, nz));
+        doubledAreas = _mm_sqrt_ps(squared);
+        sixfoldSignedVolumes = _mm_add_ps(_mm_add_ps(_mm_mul_ps(x[0], nx), _mm_mul_ps(y[0], ny)), _mm_mul_ps(z[0], nz));
+    }
     static __m128 yzx(__m128 p) { return _mm_shuffle_ps(p, p, _MM_SHUFFLE(3, 0, 2, 1)); }
     static __m128 zxy(__m128 p) { return _mm_shuffle_ps(p, p, _MM_SHUFFLE(3, 1, 0, 2)); }
     // (p0 + p1) + p2.
@@ -125,6 +133,69 @@ private:
         const __m128 p1 = _mm_shuffle_ps(p, p, _MM_SHUFFLE(1, 1, 1, 1));
         return _mm_cvtss_f32(_mm_add_ss(_mm_add_ss(p, p1), _mm_movehl_ps(p, p)));
     }
+#endif
+};
+
+// TriangleMeasure's sums over a run of triangles, with four running sums each,
+// one per lane of the four triangles measured at once: consecutive groups' adds
+// do not wait on each other, as they do on one running sum (a double add's
+// latency per triangle, which bounded splitting every surface). The totals' last
+// bits depend on how the triangles were grouped.
+class TriangleLanes {
+public:
+    void addFour(const Vertex* vertices, const std::uint32_t* indices) {
+#if defined(__SSE2__)
+        __m128 areas, volumes;
+        TriangleMeasure::measureFour(vertices, indices, areas, volumes);
+        area01_ = _mm_add_pd(area01_, _mm_cvtps_pd(areas));
+        area23_ = _mm_add_pd(area23_, _mm_cvtps_pd(_mm_movehl_ps(areas, areas)));
+        volume01_ = _mm_add_pd(volume01_, _mm_cvtps_pd(volumes));
+        volume23_ = _mm_add_pd(volume23_, _mm_cvtps_pd(_mm_movehl_ps(volumes, volumes)));
+#else
+        for (int i = 0; i < 4; ++i) {
+            float area, volume;
+            TriangleMeasure::measure(vertices[indices[3 * i]], vertices[indices[3 * i + 1]], vertices[indices[3 * i + 2]], area, volume);
+            area_[i] += double(area);
+            volume_[i] += double(volume);
+        }
+#endif
+    }
+    // One triangle, into the first lane.
+    void add(const Vertex& a, const Vertex& b, const Vertex& c) {
+        float area, volume;
+        TriangleMeasure::measure(a, b, c, area, volume);
+#if defined(__SSE2__)
+        area01_ = _mm_add_sd(area01_, _mm_set_sd(double(area)));
+        volume01_ = _mm_add_sd(volume01_, _mm_set_sd(double(volume)));
+#else
+        area_[0] += double(area);
+        volume_[0] += double(volume);
+#endif
+    }
+    // The lanes added up: (0 + 1) + (2 + 3).
+    TriangleMeasure total() const {
+        double area[4], volume[4];
+#if defined(__SSE2__)
+        _mm_storeu_pd(area, area01_);
+        _mm_storeu_pd(area + 2, area23_);
+        _mm_storeu_pd(volume, volume01_);
+        _mm_storeu_pd(volume + 2, volume23_);
+#else
+        std::copy(area_, area_ + 4, area);
+        std::copy(volume_, volume_ + 4, volume);
+#endif
+        TriangleMeasure sums;
+        sums.doubleArea = (area[0] + area[1]) + (area[2] + area[3]);
+        sums.sixfoldVolume = (volume[0] + volume[1]) + (volume[2] + volume[3]);
+        return sums;
+    }
+
+private:
+#if defined(__SSE2__)
+    __m128d area01_ = _mm_setzero_pd(), area23_ = _mm_setzero_pd();
+    __m128d volume01_ = _mm_setzero_pd(), volume23_ = _mm_setzero_pd();
+#else
+    double area_[4] = {}, volume_[4] = {};
 #endif
 };
 
