@@ -198,6 +198,17 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         std::uint32_t runSurface = kNone, own = 0, next = 0;
         std::uint32_t* out = nullptr;  // null for a lone surface, whose triangles stay as they are
         detail::TriangleLanes runSums;
+        // A run of surface k begins: its bases, and where its triangles go.
+        auto startRun = [&](std::uint32_t k) {
+            runSurface = k;
+            own = base[k];
+            next = nextBase[k];
+            if (k != largest) {
+                out = surfaces[k].mesh.indices.data() + cursor[k];
+            } else {
+                out = compact ? indices + to : nullptr;
+            }
+        };
         auto endRun = [&] {
             share[runSurface].measure.triangles.merge(runSums.total());
             if (runSurface == largest) {
@@ -223,26 +234,16 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             runSums.add(vertices[v[0]], vertices[v[1]], vertices[v[2]]);
         }
         if (t != part.triangleBegin) {
-            runSurface = static_cast<std::uint32_t>(largest);
-            own = base[largest];
-            next = nextBase[largest];
             to = 3 * t;
-            out = compact ? indices + to : nullptr;
+            startRun(static_cast<std::uint32_t>(largest));
         }
         while (t < triangleEnd) {
             const std::uint32_t* v = indices + 3 * t;
             const std::uint32_t k = label[v[0]].surface;
             if (k != runSurface) {
                 if (runSurface != kNone) endRun();
-                runSurface = k;
                 runSums = {};
-                own = base[k];
-                next = nextBase[k];
-                if (k != largest) {
-                    out = surfaces[k].mesh.indices.data() + cursor[k];
-                } else {
-                    out = compact ? indices + to : nullptr;
-                }
+                startRun(k);
             }
             std::size_t run = 1;
             if (t + 4 <= triangleEnd && label[v[3]].surface == k && label[v[6]].surface == k && label[v[9]].surface == k) {

@@ -27,7 +27,8 @@
 // each cell piece in a union-find over the chunk's own vertex range, while they
 // are in cache (looking up only the vertices that earlier cells have not joined
 // already, see PieceUnions), and tallies the piece and its triangles at one vertex;
-// stitch joins across seams. The forest is handed on as it is: extractAllSurfaces
+// a seam is joined (stitch) by the thread that writes the second of its two
+// chunks, while other chunks are marched. The forest is handed on as it is: extractAllSurfaces
 // walks each vertex to its root while it numbers the surfaces.
 #include "isotrack/marching_cubes.h"
 
