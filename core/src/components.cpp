@@ -1,12 +1,14 @@
 // Every surface at once: the exhaustive pass, labelled, then split.
 //
 // extractAllSurfaces runs the (parallel) exhaustive pass, which labels the
-// connected surfaces on the way (labelled_march.h) and tallies each cell piece
-// and its triangles at one of its vertices. The mesh is then split in parallel
-// over ranges of chunks: the surfaces are numbered, each range counts its share
-// of every surface's vertices, triangles and cell pieces (one pass over its
-// vertices), which gives it its place in every surface's buffers,
-// and the triangles, then the vertices, are copied there and measured. The largest
+// connected surfaces on the way (labelled_march.h), tallies each cell piece
+// and its triangles at one of its vertices, and lists the vertices on the
+// volume's border. The mesh is then split in parallel over ranges of chunks:
+// the surfaces are numbered, each range counts its share of every surface's
+// vertices, triangles and cell pieces (one pass over its vertices), which gives
+// it its place in every surface's buffers, the listed vertices mark the surfaces
+// the border cuts, and the triangles, then the vertices, are copied there and
+// measured. The largest
 // surface is not copied but compacted in place, keeping the exhaustive pass's
 // buffers (and their pages, already touched); its part below the first vertex of
 // any other surface is in place already, and is only measured. It yields
@@ -65,13 +67,12 @@ std::vector<Range> ranges(const std::vector<detail::MarchedChunk>& chunks, int t
     return out;
 }
 
-// Adds a run of one surface's vertices, kept in registers by the caller (values,
-// not references: a lambda capturing them would keep them in memory).
-void addVertexRun(detail::SurfaceMeasure& measure, float x0, float y0, float z0, float x1, float y1, float z1, bool border) {
+// Adds the bounds of a run of one surface's vertices, kept in registers by the
+// caller (values, not references: a lambda capturing them would keep them in memory).
+void addVertexRun(detail::SurfaceMeasure& measure, float x0, float y0, float z0, float x1, float y1, float z1) {
     detail::SurfaceMeasure run;
     run.boundsMin[0] = x0, run.boundsMin[1] = y0, run.boundsMin[2] = z0;
     run.boundsMax[0] = x1, run.boundsMax[1] = y1, run.boundsMax[2] = z1;
-    run.touchesBorder = border;
     measure.merge(run);
 }
 
@@ -140,6 +141,10 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             pieces += tally / detail::kTalliedPiece;
         }
         if (k != kNone) share[k].vertices = counter, share[k].triangles = triangles, share[k].pieces = pieces;
+        // The surfaces the border cuts: the exhaustive pass listed their vertices on it.
+        for (std::size_t c = part.chunkBegin; c < part.chunkEnd; ++c) {
+            for (const std::uint32_t v : labelled.chunks[c].borderVertices) share[labels[v].surface].measure.touchesBorder = true;
+        }
     });
     Buffer<std::uint32_t>().swap(labelled.parent);
     std::vector<Surface> surfaces(count);
@@ -279,14 +284,13 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
     } else {
         forParts([&](const Range& part, std::size_t r) { splitTriangles(part, r, std::false_type{}); });
     }
-    // Vertices out to their surfaces, measured on the way; a run of one surface's
-    // vertices keeps its bounds and border flag in registers (locals, as above).
+    // Vertices out to their surfaces, their bounds measured on the way; a run of
+    // one surface's vertices keeps its bounds in registers (locals, as above).
     forParts([&](const Range& part, std::size_t r) {
         std::vector<Share>& share = shares[r];
         std::size_t to = part.vertexBegin;
         std::uint32_t runSurface = kNone;
         float x0 = 0, y0 = 0, z0 = 0, x1 = 0, y1 = 0, z1 = 0;
-        bool border = false;
         // Settled vertices stay; the largest surface's run begins with their bounds.
         std::size_t v = part.vertexBegin;
         const std::size_t settledEnd = std::clamp(settled, part.vertexBegin, part.vertexEnd);
@@ -295,8 +299,6 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             run.addBounds(mesh.vertices.data() + v, settledEnd - v);
             x0 = run.boundsMin[0], y0 = run.boundsMin[1], z0 = run.boundsMin[2];
             x1 = run.boundsMax[0], y1 = run.boundsMax[1], z1 = run.boundsMax[2];
-            border = std::any_of(mesh.vertexEdges.begin() + std::ptrdiff_t(v), mesh.vertexEdges.begin() + std::ptrdiff_t(settledEnd),
-                                 [&](const PackedGridEdge& edge) { return detail::edgeOnVolumeBorder(edge, dims); });
             runSurface = static_cast<std::uint32_t>(largest);
             v = to = settledEnd;
         }
@@ -306,14 +308,12 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             const PackedGridEdge edge = mesh.vertexEdges[v];
             const float x = vertex.position[0], y = vertex.position[1], z = vertex.position[2];
             if (k != runSurface) {
-                if (runSurface != kNone) addVertexRun(share[runSurface].measure, x0, y0, z0, x1, y1, z1, border);
+                if (runSurface != kNone) addVertexRun(share[runSurface].measure, x0, y0, z0, x1, y1, z1);
                 runSurface = k;
                 x0 = x1 = x, y0 = y1 = y, z0 = z1 = z;
-                border = share[k].measure.touchesBorder;  // known already: no test per vertex
             }
             x0 = std::min(x0, x), y0 = std::min(y0, y), z0 = std::min(z0, z);
             x1 = std::max(x1, x), y1 = std::max(y1, y), z1 = std::max(z1, z);
-            border = border || detail::edgeOnVolumeBorder(edge, dims);
             if (k != largest) {
                 const std::size_t at = local + share[k].vertexBase;
                 surfaces[k].mesh.vertices[at] = vertex;
@@ -323,7 +323,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
                 mesh.vertexEdges[to++] = edge;
             }
         }
-        if (runSurface != kNone) addVertexRun(share[runSurface].measure, x0, y0, z0, x1, y1, z1, border);
+        if (runSurface != kNone) addVertexRun(share[runSurface].measure, x0, y0, z0, x1, y1, z1);
     });
     if (compact) {
         // Range by range (a share may land on the previous one's old place), the

@@ -17,6 +17,7 @@ namespace isotrack::detail {
 struct MarchedChunk {
     std::size_t vertexBegin = 0, vertexEnd = 0;
     std::size_t triangleBegin = 0, triangleEnd = 0;
+    std::vector<std::uint32_t> borderVertices;  // its vertices on the volume's border (edgeOnVolumeBorder)
 };
 
 // A vertex's tally: kTalliedPiece per cell piece counted at it, plus the pieces'

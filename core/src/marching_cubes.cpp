@@ -27,8 +27,9 @@
 // each cell piece in a union-find over the chunk's own vertex range, while they
 // are in cache (looking up only the vertices that earlier cells have not joined
 // already, see PieceUnions), and tallies the piece and its triangles at one vertex;
-// a seam is joined (stitch) by the thread that writes the second of its two
-// chunks, while other chunks are marched. The forest is handed on as it is: extractAllSurfaces
+// cells on the volume's border list their vertices on it (so that the split
+// need not test every vertex). A seam is joined (stitch) by the thread that
+// writes the second of its two chunks, while other chunks are marched. The forest is handed on as it is: extractAllSurfaces
 // walks each vertex to its root while it numbers the surfaces.
 #include "isotrack/marching_cubes.h"
 
@@ -47,6 +48,7 @@
 #include "isotrack/cube.h"
 #include "labelled_march.h"
 #include "parallel.h"
+#include "surface_measure.h"
 
 namespace isotrack {
 namespace {
@@ -186,6 +188,7 @@ struct Chunk {
     std::size_t vertexBase = 0, indexBase = 0;
     std::size_t vertexCursor = 0, indexCursor = 0;  // written so far, relative to the bases
     std::vector<std::size_t> seamIndices;           // positions in the final indices holding placeholders
+    std::vector<std::uint32_t> borderVertices;      // labelled: the vertices on the volume's border
     std::vector<std::uint32_t> firstSliceIds;       // x- and y-edge ids of slice zBegin
     // The counting pass's classification, kept for the writing pass so that it
     // does not stream the samples again: per slice zBegin..zEnd, each row's span
@@ -224,7 +227,7 @@ public:
     // With `parent`, the writing pass labels surfaces in it (one entry per vertex of the mesh).
     ChunkMarcher(const detail::SampleGrid<T>& grid, const std::array<CaseContinuation, 256>& table, const EdgeSlots& slots,
                  const PieceUnions* unions, std::uint32_t* parent, std::uint8_t* tally, Mesh& mesh)
-        : grid_(grid), table_(table), slots_(slots), unions_(unions), parent_(parent), tally_(tally), mesh_(mesh), nx_(grid.nx()), ny_(grid.ny()),
+        : grid_(grid), table_(table), slots_(slots), unions_(unions), parent_(parent), tally_(tally), mesh_(mesh), nx_(grid.nx()), ny_(grid.ny()), nz_(grid.nz()),
           sliceSize_(std::size_t(grid.nx()) * std::size_t(grid.ny())), rowBytes_(std::size_t(grid.nx() + 7) / 8) {
         for (int s = 0; s < 2; ++s) {
             flags_[s].assign(sliceSize_ + 8, 0);  // rows are packed and unpacked 8 flags at a time
@@ -476,8 +479,11 @@ private:
         if (!rowRange(y, bottom, top, begin, end)) return;
         const std::size_t row = std::size_t(nx_) * std::size_t(y);
         const std::uint8_t* columns = columns_.data();
+        // Only a cell on the volume's border makes vertices on it.
+        const bool borderRow = y == 0 || y + 2 == ny_ || z == 0 || z + 2 == nz_;
         for (int x = nextActiveCell(columns, begin, end); x < end; x = nextActiveCell(columns, x + 1, end)) {
             const unsigned config = slots_.configOfColumns[columns[x] | columns[x + 1] << 4];
+            borderCell_ = borderRow || x == 0 || x + 2 == nx_;
             std::array<std::uint32_t, 12> ids;
             const std::size_t cell = row + std::size_t(x);
             for (unsigned mask = slots_.crossed[config]; mask != 0; mask &= mask - 1) {
@@ -547,13 +553,15 @@ private:
         if (*slot != kNoVertex && *slot >= threshold) return *slot;
         const std::size_t id = chunk_->vertexBase + chunk_->vertexCursor++;
         *slot = static_cast<std::uint32_t>(id);
+        const auto& o = slots_.origin[edge];
+        const GridEdge gridEdge{x + o[0], y + o[1], z + o[2], axis};
         if (parent_) {
             parent_[id] = *slot;
             tally_[id] = 0;
+            if (borderCell_ && detail::edgeOnVolumeBorder(gridEdge, Dims{nx_, ny_, nz_})) chunk_->borderVertices.push_back(*slot);
         }
-        const auto& o = slots_.origin[edge];
-        grid_.edgeVertex(x + o[0], y + o[1], z + o[2], axis, mesh_.vertices[id]);
-        mesh_.vertexEdges[id] = GridEdge{x + o[0], y + o[1], z + o[2], axis};
+        grid_.edgeVertex(gridEdge.x, gridEdge.y, gridEdge.z, axis, mesh_.vertices[id]);
+        mesh_.vertexEdges[id] = gridEdge;
         return *slot;
     }
 
@@ -565,7 +573,7 @@ private:
     std::uint8_t* const tally_;
     Chunk* chunk_ = nullptr;  // the chunk being marched
     Mesh& mesh_;
-    const int nx_, ny_;
+    const int nx_, ny_, nz_;
     const std::size_t sliceSize_, rowBytes_;
     std::array<std::vector<std::uint8_t>, 2> flags_;
     std::array<std::vector<RowSpan>, 2> spans_;
@@ -575,6 +583,7 @@ private:
     std::array<std::uint8_t, 256> triangleCount_{};
     std::array<std::uint32_t, 2> threshold_{};
     std::uint32_t verticalThreshold_ = 0;
+    bool borderCell_ = false;  // the cell being marched is on the volume's border
 };
 
 // Gives each chunk its ranges of the final buffers and sizes them once.
@@ -692,7 +701,8 @@ LabelledMesh marchLabelled(const Volume& volume, double iso, TableKind table, in
     LabelledMesh out;
     std::vector<Chunk> chunks = march(volume, iso, table, threads, out.mesh, &out.parent, &out.tally);
     for (Chunk& chunk : chunks) {
-        out.chunks.push_back({chunk.vertexBase, chunk.vertexBase + chunk.vertexCount, chunk.indexBase / 3, chunk.indexBase / 3 + chunk.triangleCount});
+        out.chunks.push_back({chunk.vertexBase, chunk.vertexBase + chunk.vertexCount, chunk.indexBase / 3, chunk.indexBase / 3 + chunk.triangleCount,
+                              std::move(chunk.borderVertices)});
     }
     return out;
 }
