@@ -120,15 +120,21 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
     forParts([&](const Range& part, std::size_t r) {
         std::vector<Share>& share = shares[r];
         std::uint32_t k = kNone, counter = 0, triangles = 0, pieces = 0;
+        // The last walk's start and its surface: vertices in a row often share a
+        // parent below the range.
+        std::uint32_t walkedFrom = kNone, walkedTo = kNone;
         for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
             const std::uint32_t up = parent[v];
             std::uint32_t surface;
             if (up != v && up >= part.vertexBegin) {
                 surface = labels[up].surface;
+            } else if (up == walkedFrom) {
+                surface = walkedTo;
             } else {
                 std::uint32_t root = up;
                 while (parent[root] != root) root = parent[root];
                 surface = numberOf(root);
+                walkedFrom = up, walkedTo = surface;
             }
             if (surface != k) {
                 if (k != kNone) share[k].vertices = counter, share[k].triangles = triangles, share[k].pieces = pieces;
