@@ -8,12 +8,11 @@
 // vertices, triangles and cell pieces (one pass over its vertices), which gives
 // it its place in every surface's buffers, the listed vertices mark the surfaces
 // the border cuts, and the triangles, then the vertices, are copied there and
-// measured. The largest
-// surface is not copied but compacted in place, keeping the exhaustive pass's
-// buffers (and their pages, already touched); its part below the first vertex of
-// any other surface is in place already, and is only measured. It yields
-// exactly the surfaces trackAllSurfaces finds by tracking one surface at a time
-// (the tests hold them equal), with no per-voxel memory.
+// measured. The largest surface is not copied but compacted in place, keeping
+// the exhaustive pass's buffers (and their pages, already touched); its part
+// below the first vertex of any other surface is in place already, and is only
+// measured. It yields exactly the surfaces trackAllSurfaces finds by tracking
+// one surface at a time (the tests hold them equal), with no per-voxel memory.
 #include <algorithm>
 #include <numeric>
 #include <type_traits>

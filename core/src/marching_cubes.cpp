@@ -29,8 +29,9 @@
 // already, see PieceUnions), and tallies the piece and its triangles at one vertex;
 // cells on the volume's border list their vertices on it (so that the split
 // need not test every vertex). A seam is joined (stitch) by the thread that
-// writes the second of its two chunks, while other chunks are marched. The forest is handed on as it is: extractAllSurfaces
-// walks each vertex to its root while it numbers the surfaces.
+// writes the second of its two chunks, while other chunks are marched. The
+// forest is handed on as it is: extractAllSurfaces walks each vertex to its root
+// while it numbers the surfaces.
 #include "isotrack/marching_cubes.h"
 
 #include <algorithm>
@@ -483,12 +484,12 @@ private:
         const bool borderRow = y == 0 || y + 2 == ny_ || z == 0 || z + 2 == nz_;
         for (int x = nextActiveCell(columns, begin, end); x < end; x = nextActiveCell(columns, x + 1, end)) {
             const unsigned config = slots_.configOfColumns[columns[x] | columns[x + 1] << 4];
-            borderCell_ = borderRow || x == 0 || x + 2 == nx_;
+            const bool onBorder = borderRow || x == 0 || x + 2 == nx_;
             std::array<std::uint32_t, 12> ids;
             const std::size_t cell = row + std::size_t(x);
             for (unsigned mask = slots_.crossed[config]; mask != 0; mask &= mask - 1) {
                 const int e = __builtin_ctz(mask);
-                ids[e] = vertexOnEdge<SeamSlab>(x, y, z, cell, e, bottom, top);
+                ids[e] = vertexOnEdge<SeamSlab>(x, y, z, cell, e, bottom, top, onBorder);
             }
             const CaseContinuation& cased = table_[config];
             if (parent_) unitePieces(config, cased, ids, unsigned(x > 0) | unsigned(y > 0) << 1 | unsigned(z > chunk_->zBegin) << 2);
@@ -535,7 +536,7 @@ private:
     }
 
     template <bool SeamSlab>
-    std::uint32_t vertexOnEdge(int x, int y, int z, std::size_t cell, int edge, int bottom, int top) {
+    std::uint32_t vertexOnEdge(int x, int y, int z, std::size_t cell, int edge, int bottom, int top, bool onBorder) {
         const int axis = slots_.axis[edge];
         const std::size_t at = cell + slots_.offset[edge];
         std::uint32_t* slot;
@@ -558,7 +559,7 @@ private:
         if (parent_) {
             parent_[id] = *slot;
             tally_[id] = 0;
-            if (borderCell_ && detail::edgeOnVolumeBorder(gridEdge, Dims{nx_, ny_, nz_})) chunk_->borderVertices.push_back(*slot);
+            if (onBorder && detail::edgeOnVolumeBorder(gridEdge, Dims{nx_, ny_, nz_})) chunk_->borderVertices.push_back(*slot);
         }
         grid_.edgeVertex(gridEdge.x, gridEdge.y, gridEdge.z, axis, mesh_.vertices[id]);
         mesh_.vertexEdges[id] = gridEdge;
@@ -583,7 +584,6 @@ private:
     std::array<std::uint8_t, 256> triangleCount_{};
     std::array<std::uint32_t, 2> threshold_{};
     std::uint32_t verticalThreshold_ = 0;
-    bool borderCell_ = false;  // the cell being marched is on the volume's border
 };
 
 // Gives each chunk its ranges of the final buffers and sizes them once.
