@@ -92,17 +92,19 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
     // the parent is in the same range (below it, so numbered already), else by a
     // walk to its root. It gets its index in its range's share of that surface
     // (`local`), and the share adds up the cell pieces and triangles tallied at
-    // its vertices. Ranges only read the forest, so they run at once.
+    // its vertices. Ranges only read the forest, so they run at once. One range
+    // (one thread) has every root, and numbers each surface as its root comes.
     const std::uint32_t* parent = labelled.parent.data();
-    std::vector<std::vector<std::uint32_t>> rootsOf(parts.size());
-    forParts([&](const Range& part, std::size_t r) {
-        for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
-            if (parent[v] == v) rootsOf[r].push_back(static_cast<std::uint32_t>(v));
-        }
-    });
     std::vector<std::uint32_t> roots;
-    for (const std::vector<std::uint32_t>& some : rootsOf) roots.insert(roots.end(), some.begin(), some.end());
-    const std::size_t count = roots.size();
+    if (parts.size() > 1) {
+        std::vector<std::vector<std::uint32_t>> rootsOf(parts.size());
+        forParts([&](const Range& part, std::size_t r) {
+            for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
+                if (parent[v] == v) rootsOf[r].push_back(static_cast<std::uint32_t>(v));
+            }
+        });
+        for (const std::vector<std::uint32_t>& some : rootsOf) roots.insert(roots.end(), some.begin(), some.end());
+    }
     auto numberOf = [&](std::uint32_t root) {
         return static_cast<std::uint32_t>(std::lower_bound(roots.begin(), roots.end(), root) - roots.begin());
     };
@@ -113,10 +115,10 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
     };
     Buffer<Label> labels;
     detail::resizeOnHugePages(labels, mesh.vertices.size());
-    std::vector<std::vector<Share>> shares(parts.size(), std::vector<Share>(count));
+    std::vector<std::vector<Share>> shares(parts.size(), std::vector<Share>(roots.size()));
     // Runs of vertices and of triangles on one surface are common: the run's
     // surface and counters stay in registers.
-    forParts([&](const Range& part, std::size_t r) {
+    auto number = [&](const Range& part, std::size_t r, auto oneRange) {
         std::vector<Share>& share = shares[r];
         std::uint32_t k = kNone, counter = 0, triangles = 0, pieces = 0;
         // The last walk's start and its surface: vertices in a row often share a
@@ -125,7 +127,15 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         for (std::size_t v = part.vertexBegin; v < part.vertexEnd; ++v) {
             const std::uint32_t up = parent[v];
             std::uint32_t surface;
-            if (up != v && up >= part.vertexBegin) {
+            if constexpr (decltype(oneRange)::value) {
+                if (up == v) {
+                    surface = static_cast<std::uint32_t>(roots.size());
+                    roots.push_back(up);
+                    share.emplace_back();
+                } else {
+                    surface = labels[up].surface;
+                }
+            } else if (up != v && up >= part.vertexBegin) {
                 surface = labels[up].surface;
             } else if (up == walkedFrom) {
                 surface = walkedTo;
@@ -150,7 +160,13 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         for (std::size_t c = part.chunkBegin; c < part.chunkEnd; ++c) {
             for (const std::uint32_t v : labelled.chunks[c].borderVertices) share[labels[v].surface].measure.touchesBorder = true;
         }
-    });
+    };
+    if (parts.size() == 1) {
+        number(parts[0], 0, std::true_type{});
+    } else {
+        forParts([&](const Range& part, std::size_t r) { number(part, r, std::false_type{}); });
+    }
+    const std::size_t count = roots.size();
     Buffer<std::uint32_t>().swap(labelled.parent);
     std::vector<Surface> surfaces(count);
     std::size_t largest = 0;
