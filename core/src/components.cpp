@@ -323,28 +323,42 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             runSurface = static_cast<std::uint32_t>(largest);
             v = to = settledEnd;
         }
+        // Where the run's vertices and grid edges go, one after the other (a run's
+        // locals are consecutive); null for a lone surface, which stays as it is.
+        Vertex* const vertices = mesh.vertices.data();
+        PackedGridEdge* const edges = mesh.vertexEdges.data();
+        Vertex* outVertex = compact && runSurface != kNone ? vertices + to : nullptr;
+        PackedGridEdge* outEdge = compact && runSurface != kNone ? edges + to : nullptr;
+        auto endRun = [&] {
+            addVertexRun(share[runSurface].measure, x0, y0, z0, x1, y1, z1);
+            if (runSurface == largest && outVertex) to = std::size_t(outVertex - vertices);
+        };
         for (; v < part.vertexEnd; ++v) {
             const auto [k, local] = labels[v];
-            const Vertex& vertex = mesh.vertices[v];
-            const PackedGridEdge edge = mesh.vertexEdges[v];
+            const Vertex& vertex = vertices[v];
+            const PackedGridEdge edge = edges[v];
             const float x = vertex.position[0], y = vertex.position[1], z = vertex.position[2];
             if (k != runSurface) {
-                if (runSurface != kNone) addVertexRun(share[runSurface].measure, x0, y0, z0, x1, y1, z1);
+                if (runSurface != kNone) endRun();
                 runSurface = k;
                 x0 = x1 = x, y0 = y1 = y, z0 = z1 = z;
+                if (k != largest) {
+                    const std::size_t at = local + share[k].vertexBase;
+                    outVertex = surfaces[k].mesh.vertices.data() + at;
+                    outEdge = surfaces[k].mesh.vertexEdges.data() + at;
+                } else {
+                    outVertex = compact ? vertices + to : nullptr;
+                    outEdge = compact ? edges + to : nullptr;
+                }
             }
             x0 = std::min(x0, x), y0 = std::min(y0, y), z0 = std::min(z0, z);
             x1 = std::max(x1, x), y1 = std::max(y1, y), z1 = std::max(z1, z);
-            if (k != largest) {
-                const std::size_t at = local + share[k].vertexBase;
-                surfaces[k].mesh.vertices[at] = vertex;
-                surfaces[k].mesh.vertexEdges[at] = edge;
-            } else if (compact) {
-                mesh.vertices[to] = vertex;
-                mesh.vertexEdges[to++] = edge;
+            if (outVertex) {
+                *outVertex++ = vertex;
+                *outEdge++ = edge;
             }
         }
-        if (runSurface != kNone) addVertexRun(share[runSurface].measure, x0, y0, z0, x1, y1, z1);
+        if (runSurface != kNone) endRun();
     });
     if (compact) {
         // Range by range (a share may land on the previous one's old place), the
