@@ -312,27 +312,39 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
         std::size_t to = part.vertexBegin;
         std::uint32_t runSurface = kNone;
         float x0 = 0, y0 = 0, z0 = 0, x1 = 0, y1 = 0, z1 = 0;
+        // Where the run's vertices and grid edges go, one after the other (a run's
+        // locals are consecutive); null for a lone surface, which stays as it is.
+        Vertex* const vertices = mesh.vertices.data();
+        PackedGridEdge* const edges = mesh.vertexEdges.data();
+        Vertex* outVertex = nullptr;
+        PackedGridEdge* outEdge = nullptr;
+        // A run of surface k begins at its vertex `local`: where its vertices go.
+        auto startRun = [&](std::uint32_t k, std::uint32_t local) {
+            runSurface = k;
+            if (k != largest) {
+                const std::size_t at = local + share[k].vertexBase;
+                outVertex = surfaces[k].mesh.vertices.data() + at;
+                outEdge = surfaces[k].mesh.vertexEdges.data() + at;
+            } else {
+                outVertex = compact ? vertices + to : nullptr;
+                outEdge = compact ? edges + to : nullptr;
+            }
+        };
+        auto endRun = [&] {
+            addVertexRun(share[runSurface].measure, x0, y0, z0, x1, y1, z1);
+            if (runSurface == largest && outVertex) to = std::size_t(outVertex - vertices);
+        };
         // Settled vertices stay; the largest surface's run begins with their bounds.
         std::size_t v = part.vertexBegin;
         const std::size_t settledEnd = std::clamp(settled, part.vertexBegin, part.vertexEnd);
         if (settledEnd > v) {
             detail::SurfaceMeasure run;
-            run.addBounds(mesh.vertices.data() + v, settledEnd - v);
+            run.addBounds(vertices + v, settledEnd - v);
             x0 = run.boundsMin[0], y0 = run.boundsMin[1], z0 = run.boundsMin[2];
             x1 = run.boundsMax[0], y1 = run.boundsMax[1], z1 = run.boundsMax[2];
-            runSurface = static_cast<std::uint32_t>(largest);
             v = to = settledEnd;
+            startRun(static_cast<std::uint32_t>(largest), 0);
         }
-        // Where the run's vertices and grid edges go, one after the other (a run's
-        // locals are consecutive); null for a lone surface, which stays as it is.
-        Vertex* const vertices = mesh.vertices.data();
-        PackedGridEdge* const edges = mesh.vertexEdges.data();
-        Vertex* outVertex = compact && runSurface != kNone ? vertices + to : nullptr;
-        PackedGridEdge* outEdge = compact && runSurface != kNone ? edges + to : nullptr;
-        auto endRun = [&] {
-            addVertexRun(share[runSurface].measure, x0, y0, z0, x1, y1, z1);
-            if (runSurface == largest && outVertex) to = std::size_t(outVertex - vertices);
-        };
         for (; v < part.vertexEnd; ++v) {
             const auto [k, local] = labels[v];
             const Vertex& vertex = vertices[v];
@@ -340,16 +352,8 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
             const float x = vertex.position[0], y = vertex.position[1], z = vertex.position[2];
             if (k != runSurface) {
                 if (runSurface != kNone) endRun();
-                runSurface = k;
+                startRun(k, local);
                 x0 = x1 = x, y0 = y1 = y, z0 = z1 = z;
-                if (k != largest) {
-                    const std::size_t at = local + share[k].vertexBase;
-                    outVertex = surfaces[k].mesh.vertices.data() + at;
-                    outEdge = surfaces[k].mesh.vertexEdges.data() + at;
-                } else {
-                    outVertex = compact ? vertices + to : nullptr;
-                    outEdge = compact ? edges + to : nullptr;
-                }
             }
             x0 = std::min(x0, x), y0 = std::min(y0, y), z0 = std::min(z0, z);
             x1 = std::max(x1, x), y1 = std::max(y1, y), z1 = std::max(z1, z);
