@@ -1,0 +1,27 @@
+#pragma once
+// The isovalue a volume opens on when the user has not chosen one.
+//
+// Rule: the valley above the tallest peak of the histogram. The values are
+// counted in 128 bins across the volume's range; the two end bins are left out
+// (padding, air clamped to the scanner's minimum and saturated samples gather
+// there), the counts are smoothed over five bins, and from the tallest
+// remaining peak the walk goes up in value while the counts fall; where they
+// stop falling is the valley, and its bin's centre the isovalue. On a CT the
+// tallest peak is soft tissue and the valley above it lies between tissue and
+// bone (about 340 HU on the Cranium sample, a closed skull). When there is no
+// such valley (the counts fall to the last bin, or two-valued data), Otsu's
+// threshold over the same bins is used instead.
+#include "isotrack/volume.h"
+
+namespace isotrack {
+
+// The suggested isovalue; the middle of the range for a constant volume.
+double suggestIsovalue(const Volume& volume);
+
+// The same rule on a histogram already counted: `counts` in equal bins across [lo, hi].
+double suggestIsovalue(const std::vector<std::uint64_t>& counts, double lo, double hi);
+
+// Otsu's threshold: the bin boundary that maximises the between-class variance.
+double otsuThreshold(const std::vector<std::uint64_t>& counts, double lo, double hi);
+
+}  // namespace isotrack
