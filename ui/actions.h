@@ -81,6 +81,8 @@ using Action = std::variant<LoadField, LoadFile, SetIso, SetTable, SetMethod, Gr
                             SetColourByGrowth, Select, SetVisible, Isolate, ShowAll, Delete, Export, SetColour,
                             SetOffset, SetExplode, SetWireframe, SetBoundingBox, FrameSelection, FrameAll>;
 
+inline constexpr const char* kDefaultExportPattern = "surface_{id}.ply";
+
 // "surface_{id}.ply" with {id} replaced by the surface id.
 std::string exportPath(const std::string& pattern, std::uint32_t id);
 

@@ -11,10 +11,14 @@
 namespace isotrack::ui {
 namespace {
 
-// Points the chooser at the field being shown, when that changes.
+// Points the chooser at the field being shown, or the path box at the file, when that changes.
 void followSource(const DataState& data, PanelScratch& scratch) {
     if (data.source == scratch.shownSource) return;
     scratch.shownSource = data.source;
+    if (data.sourceIsFile) {
+        std::snprintf(scratch.path.data(), scratch.path.size(), "%s", data.source.c_str());
+        return;
+    }
     const std::size_t colon = data.source.find(':');
     const std::string name = data.source.substr(0, colon);
     for (std::size_t i = 0; i < data.fields.size(); ++i) {
@@ -27,7 +31,6 @@ void followSource(const DataState& data, PanelScratch& scratch) {
 
 void fieldChooser(const DataState& data, PanelScratch& scratch, std::vector<Action>& actions) {
     if (data.fields.empty()) return;
-    followSource(data, scratch);
     scratch.fieldIndex = std::clamp(scratch.fieldIndex, 0, static_cast<int>(data.fields.size()) - 1);
     const FieldChoice& chosen = data.fields[std::size_t(scratch.fieldIndex)];
     if (scratch.fieldSize <= 0) scratch.fieldSize = chosen.defaultSize;
@@ -96,12 +99,17 @@ void histogram(const DataState& data, const ExtractionState& extraction, std::ve
 
 void dataSection(const PanelState& state, PanelScratch& scratch, std::vector<Action>& actions) {
     const DataState& data = state.data;
+    followSource(data, scratch);
+    if (data.loaded) {
+        ImGui::Text("showing %s %s", data.sourceIsFile ? "file" : "field", data.sourceName.c_str());
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", data.source.c_str());
+    } else {
+        ImGui::TextDisabled("no volume loaded yet");
+    }
+    ImGui::TextDisabled("open another: a built-in field, or a file");
     fieldChooser(data, scratch, actions);
     fileChooser(scratch, actions);
-    if (!data.loaded) {
-        ImGui::TextDisabled("no volume loaded yet");
-        return;
-    }
+    if (!data.loaded) return;
     ImGui::Text("%d x %d x %d %s, values %.5g .. %.5g", data.dims[0], data.dims[1], data.dims[2],
                 data.scalarType.c_str(), data.rangeMin, data.rangeMax);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", data.source.c_str());

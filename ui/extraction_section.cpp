@@ -41,6 +41,10 @@ void extractionSection(const PanelState& state, std::vector<Action>& actions) {
         actions.push_back(SetIso{iso});
     }
 
+    if (data.loaded && extraction.shownIso != extraction.iso) {
+        ImGui::TextDisabled("showing %.5g, following", extraction.shownIso);
+    }
+
     int table = extraction.table == Table::Classic ? 1 : 0;
     ImGui::TextUnformatted("table");
     ImGui::SameLine();

@@ -83,10 +83,14 @@ void statsWindow(const PanelState& state) {
 
 }  // namespace
 
+std::string Panel::exportPattern() const {
+    return scratch_.initialised ? std::string(scratch_.exportPattern.data()) : std::string(kDefaultExportPattern);
+}
+
 void Panel::build(const PanelState& state, std::vector<Action>& actions) {
     if (!scratch_.initialised) {
         compactStyle();
-        std::snprintf(scratch_.exportPattern.data(), scratch_.exportPattern.size(), "%s", "surface_{id}.ply");
+        std::snprintf(scratch_.exportPattern.data(), scratch_.exportPattern.size(), "%s", kDefaultExportPattern);
         scratch_.initialised = true;
     }
     ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f), ImGuiCond_Always);

@@ -22,7 +22,7 @@ namespace isotrack::ui {
 // What the user is editing in the panel's text boxes and choices.
 struct PanelScratch {
     std::array<char, 1024> path{};
-    std::array<char, 256> exportPattern{};
+    std::array<char, 256> exportPattern{};  // "surface_{id}.ply": the extension picks PLY, OBJ or STL
     int fieldIndex = 0;
     int fieldSize = 0;
     std::string shownSource;  // the source the field chooser was last set from
@@ -36,6 +36,8 @@ public:
     // Between ImGui::NewFrame() and ImGui::Render(): builds the panel and
     // appends the user's requests to `actions`.
     void build(const PanelState& state, std::vector<Action>& actions);
+    // Where the E key exports the selected surface to.
+    std::string exportPattern() const;
 
 private:
     PanelScratch scratch_;

@@ -25,6 +25,8 @@ struct FieldChoice {
 struct DataState {
     std::vector<FieldChoice> fields;
     std::string source;  // file path or field spec; empty before the first load
+    std::string sourceName;  // what the panel calls it: the file's name or the field spec
+    bool sourceIsFile = false;
     bool loaded = false;
     std::array<int, 3> dims{0, 0, 0};
     std::string scalarType;
@@ -33,7 +35,8 @@ struct DataState {
 };
 
 struct ExtractionState {
-    double iso = 0.0;
+    double iso = 0.0;       // asked for (the slider)
+    double shownIso = 0.0;  // of the surfaces on screen; trails `iso` by about one extraction while it is dragged
     Table table = Table::Consistent;
     Method method = Method::All;
     bool busy = false;         // the worker is loading or extracting
@@ -64,6 +67,11 @@ struct SurfaceRow {
     std::size_t triangles = 0, vertices = 0, cellsVisited = 0;
     std::size_t cpuBytes = 0, gpuBytes = 0;
     double area = 0.0;
+    bool tracked = false;  // has a seed, kept across isovalues
+    // A tracked surface may have no mesh at this isovalue: gone, or merged into another tracked surface.
+    enum Presence { Shown, Gone, Merged } presence = Shown;
+    double absentIso = 0.0;
+    std::uint32_t mergedInto = 0;
 };
 
 struct StatsState {

@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <cstdio>
+#include <string>
 
 #include "ui/sections.h"
 
@@ -19,7 +20,7 @@ void surfaceMenu(const SurfaceRow& row, const PanelScratch& scratch, std::vector
         actions.push_back(Select{row.id});
         actions.push_back(FrameSelection{});
     }
-    if (ImGui::MenuItem("Export PLY"))
+    if (ImGui::MenuItem("Export"))
         actions.push_back(Export{row.id, exportPath(scratch.exportPattern.data(), row.id)});
     if (ImGui::MenuItem("Delete")) actions.push_back(Delete{row.id});
 }
@@ -36,8 +37,14 @@ void surfaceRow(const SurfaceRow& row, bool selected, const PanelScratch& scratc
     bool visible = row.visible;
     if (ImGui::Checkbox("##visible", &visible)) actions.push_back(SetVisible{row.id, visible});
     ImGui::TableSetColumnIndex(2);
-    char name[32];
-    std::snprintf(name, sizeof(name), "%u%s", row.id, row.growing ? " +" : "");
+    char name[48];
+    if (row.presence == SurfaceRow::Gone) {
+        std::snprintf(name, sizeof(name), "%u gone", row.id);
+    } else if (row.presence == SurfaceRow::Merged) {
+        std::snprintf(name, sizeof(name), "%u in %u", row.id, row.mergedInto);
+    } else {
+        std::snprintf(name, sizeof(name), "%u%s%s", row.id, row.tracked ? " *" : "", row.growing ? " +" : "");
+    }
     if (ImGui::Selectable(name, selected,
                           ImGuiSelectableFlags_SpanAllColumns | ImGuiSelectableFlags_AllowItemOverlap)) {
         actions.push_back(Select{selected ? std::nullopt : std::optional<std::uint32_t>(row.id)});
@@ -62,6 +69,13 @@ void surfaceRow(const SurfaceRow& row, bool selected, const PanelScratch& scratc
 }
 
 void selectedDetails(const SurfaceRow& row, PanelScratch& scratch, std::vector<Action>& actions) {
+    if (row.presence == SurfaceRow::Gone) {
+        ImGui::TextWrapped("surface %u: no surface near its seed at isovalue %.5g; the seed is kept and the surface "
+                           "comes back where there is one again", row.id, row.absentIso);
+    } else if (row.presence == SurfaceRow::Merged) {
+        ImGui::TextWrapped("surface %u: merged into surface %u at isovalue %.5g; it comes back when they split",
+                           row.id, row.mergedInto, row.absentIso);
+    }
     ImGui::Text("surface %u: %s triangles, %s", row.id, formatCount(row.triangles).c_str(),
                 row.growing ? "growing" : (row.closed ? "closed" : "open"));
     ImGui::Text("CPU %s, GPU %s, area %.5g", formatBytes(row.cpuBytes).c_str(), formatBytes(row.gpuBytes).c_str(),
@@ -81,6 +95,26 @@ void selectedDetails(const SurfaceRow& row, PanelScratch& scratch, std::vector<A
     if (ImGui::Button("Export")) actions.push_back(Export{row.id, exportPath(scratch.exportPattern.data(), row.id)});
 }
 
+// PLY, OBJ or STL: rewrites the pattern's extension, which is what decides the format.
+void exportFormatChooser(PanelScratch& scratch) {
+    static const char* const kFormats[] = {"ply", "obj", "stl"};
+    std::string pattern = scratch.exportPattern.data();
+    const std::size_t dot = pattern.rfind('.');
+    const std::string extension = dot == std::string::npos ? "" : pattern.substr(dot + 1);
+    int current = -1;
+    for (int i = 0; i < 3; ++i) {
+        if (extension == kFormats[i]) current = i;
+    }
+    ImGui::TextUnformatted("format");
+    for (int i = 0; i < 3; ++i) {
+        ImGui::SameLine();
+        if (ImGui::RadioButton(kFormats[i], current == i) && current != i) {
+            pattern = (dot == std::string::npos ? pattern : pattern.substr(0, dot)) + "." + kFormats[i];
+            std::snprintf(scratch.exportPattern.data(), scratch.exportPattern.size(), "%s", pattern.c_str());
+        }
+    }
+}
+
 }  // namespace
 
 void surfacesSection(const PanelState& state, PanelScratch& scratch, std::vector<Action>& actions) {
@@ -91,6 +125,7 @@ void surfacesSection(const PanelState& state, PanelScratch& scratch, std::vector
     ImGui::SameLine();
     if (ImGui::SmallButton("Show all")) actions.push_back(ShowAll{});
     ImGui::InputText("export to", scratch.exportPattern.data(), scratch.exportPattern.size());
+    exportFormatChooser(scratch);
 
     const float height = ImGui::GetTextLineHeightWithSpacing() * 6.5f;
     if (ImGui::BeginTable("surfaces", 9, kTableFlags, ImVec2(0.0f, height))) {

@@ -24,6 +24,12 @@ const std::map<std::string, ScalarType> kRawTypes = [] {
 
 }  // namespace
 
+ScalarType rawScalarType(const std::string& name) {
+    const auto type = kRawTypes.find(name);
+    if (type == kRawTypes.end()) throw InputError("--type: unknown sample type \"" + name + "\"");
+    return type->second;
+}
+
 void addTableOption(CLI::App& command, std::string& table) {
     command.add_option("--table", table, "Triangle table: consistent (default) or classic")
         ->check(CLI::IsMember({"consistent", "classic"}));
@@ -66,9 +72,7 @@ Volume loadVolumeFile(const std::string& path, const RawOptions& raw) {
     if (raw.dims.empty()) return loadVolume(path);
     RawLayout layout;
     for (std::size_t a = 0; a < 3; ++a) layout.dims[a] = raw.dims.at(a);
-    const auto type = kRawTypes.find(raw.type);
-    if (type == kRawTypes.end()) throw InputError("--type: unknown sample type \"" + raw.type + "\"");
-    layout.type = type->second;
+    layout.type = rawScalarType(raw.type);
     if (!raw.spacing.empty()) layout.spacing = {raw.spacing.at(0), raw.spacing.at(1), raw.spacing.at(2)};
     layout.bigEndian = raw.endian == "big";
     return loadRaw(path, layout);

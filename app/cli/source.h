@@ -39,6 +39,9 @@ void addRawOptions(CLI::App& command, RawOptions& raw, CLI::Option* volume);
 // Adds --table consistent|classic (the triangle table) to `command`.
 void addTableOption(CLI::App& command, std::string& table);
 
+// --type's name (scalarTypeName's) as a type; InputError for another.
+ScalarType rawScalarType(const std::string& name);
+
 // Reads the file: as raw samples when raw.dims is set, else by its extension.
 Volume loadVolumeFile(const std::string& path, const RawOptions& raw);
 

@@ -7,12 +7,13 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <filesystem>
 #include <limits>
-#include <set>
 
 #include "isotrack/errors.h"
 #include "isotrack/fields.h"
 #include "isotrack/io.h"
+#include "isotrack/isovalue.h"
 #include "isotrack/marching_cubes.h"
 
 namespace isotrack::viewer {
@@ -31,32 +32,6 @@ std::vector<float> histogramOf(const Volume& volume, const std::array<double, 2>
     return std::vector<float>(counts.begin(), counts.end());
 }
 
-std::shared_ptr<LoadedVolume> load(const SourceSpec& source) {
-    auto loaded = std::make_shared<LoadedVolume>();
-    loaded->source = source;
-    if (source.kind == SourceSpec::Field) {
-        const FieldSpec spec = parseFieldSpec(source.text);
-        loaded->volume = makeField(spec);
-        loaded->defaultIso = fieldDefaultIso(spec.name);
-    } else {
-        loaded->volume = loadVolume(source.text);
-    }
-    loaded->range = loaded->volume.range();
-    if (source.kind == SourceSpec::File) loaded->defaultIso = 0.5 * (loaded->range[0] + loaded->range[1]);
-    loaded->histogram = histogramOf(loaded->volume, loaded->range);
-    return loaded;
-}
-
-// The surface's smallest grid edge: the same surface tracked from two seeds has the same one.
-std::uint64_t surfaceKey(const Mesh& mesh, const Volume& volume) {
-    std::uint64_t key = std::numeric_limits<std::uint64_t>::max();
-    for (const PackedGridEdge& packed : mesh.vertexEdges) {
-        const GridEdge e = packed;
-        key = std::min(key, std::uint64_t(volume.index(e.x, e.y, e.z)) * 3 + std::uint64_t(e.axis));
-    }
-    return key;
-}
-
 const char* methodPhase(ui::Method method) {
     switch (method) {
         case ui::Method::Exhaustive: return "marching cubes";
@@ -66,7 +41,43 @@ const char* methodPhase(ui::Method method) {
     return "extracting";
 }
 
+// Thrown inside a pass when the flag is raised; caught by work().
+struct Cancelled {};
+
+bool meshHasEdge(const Mesh& mesh, const GridEdge& edge) {
+    return std::any_of(mesh.vertexEdges.begin(), mesh.vertexEdges.end(),
+                       [&](const PackedGridEdge& e) { return GridEdge(e) == edge; });
+}
+
 }  // namespace
+
+std::string SourceSpec::displayName() const {
+    if (kind == Field) return text;
+    return std::filesystem::path(text).filename().string();
+}
+
+bool supersedes(const ExtractionRequest& newer, const ExtractionRequest& older) {
+    return newer.source != older.source || newer.method != older.method || newer.table != older.table;
+}
+
+std::shared_ptr<LoadedVolume> loadSource(const SourceSpec& source) {
+    auto loaded = std::make_shared<LoadedVolume>();
+    loaded->source = source;
+    if (source.kind == SourceSpec::Field) {
+        const FieldSpec spec = parseFieldSpec(source.text);
+        loaded->volume = makeField(spec);
+        loaded->defaultIso = fieldDefaultIso(spec.name);
+    } else {
+        loaded->volume = source.raw ? loadRaw(source.text, *source.raw) : loadVolume(source.text);
+    }
+    loaded->range = loaded->volume.range();
+    if (source.kind == SourceSpec::File) {
+        if (!std::isfinite(loaded->range[0])) throw InputError(source.text + ": no finite samples");
+        loaded->defaultIso = suggestIsovalue(loaded->volume);
+    }
+    loaded->histogram = histogramOf(loaded->volume, loaded->range);
+    return loaded;
+}
 
 ExtractionWorker::ExtractionWorker(int threads) : threads_(std::max(threads, 1)), thread_([this] { run(); }) {}
 
@@ -74,7 +85,7 @@ ExtractionWorker::~ExtractionWorker() {
     {
         std::lock_guard<std::mutex> lock(mutex_);
         stop_ = true;
-        latest_ = std::numeric_limits<std::uint64_t>::max();  // whatever runs is stale now
+        cancel_ = true;  // whatever runs is pointless now
     }
     wake_.notify_all();
     thread_.join();
@@ -83,15 +94,19 @@ ExtractionWorker::~ExtractionWorker() {
 void ExtractionWorker::submit(ExtractionRequest request) {
     {
         std::lock_guard<std::mutex> lock(mutex_);
-        latest_ = request.generation;
+        if (running_ && supersedes(request, *running_)) cancel_ = true;
+        if (finished_ && (finished_->method != request.method || finished_->table != request.table ||
+                          !finished_->volume || finished_->volume->source != request.source)) {
+            finished_.reset();
+        }
         pending_ = std::move(request);
     }
     wake_.notify_all();
 }
 
-void ExtractionWorker::cancel(std::uint64_t generation) {
+void ExtractionWorker::cancel() {
     std::lock_guard<std::mutex> lock(mutex_);
-    latest_ = generation;
+    if (running_) cancel_ = true;
     pending_.reset();
     finished_.reset();
 }
@@ -105,16 +120,16 @@ std::optional<ExtractionResult> ExtractionWorker::poll() {
 
 bool ExtractionWorker::busy() const {
     std::lock_guard<std::mutex> lock(mutex_);
-    return working_ || pending_.has_value() || finished_.has_value();
+    return running_.has_value() || pending_.has_value() || finished_.has_value();
 }
 
 WorkerProgress ExtractionWorker::progress() const {
     std::lock_guard<std::mutex> lock(mutex_);
     WorkerProgress progress;
-    progress.busy = working_ || pending_.has_value();
+    progress.busy = running_.has_value() || pending_.has_value();
     if (!progress.busy) return progress;
-    progress.what = working_ ? phase_ : "waiting";
-    progress.seconds = working_ ? msSince(phaseStart_) / 1000.0 : 0.0;
+    progress.what = running_ ? phase_ : "waiting";
+    progress.seconds = running_ ? msSince(phaseStart_) / 1000.0 : 0.0;
     const int total = seedsTotal_.load();
     if (total > 0) {
         progress.fraction = float(seedsDone_.load()) / float(total);
@@ -145,12 +160,19 @@ void ExtractionWorker::run() {
             if (stop_) return;
             request = std::move(*pending_);
             pending_.reset();
-            working_ = true;
+            running_ = request;
+            running_->seeds.clear();
+            cancel_ = false;
         }
-        ExtractionResult result = work(request);
+        std::optional<ExtractionResult> result;
+        try {
+            result = work(request);
+        } catch (const Cancelled&) {
+            ++cancelled_;
+        }
         std::lock_guard<std::mutex> lock(mutex_);
-        working_ = false;
-        if (!stale(request.generation)) finished_ = std::move(result);
+        running_.reset();
+        if (result && !cancel_) finished_ = std::move(*result);  // newer than any result not yet polled
     }
 }
 
@@ -162,25 +184,31 @@ ExtractionResult ExtractionWorker::work(const ExtractionRequest& request) {
     result.method = request.method;
     try {
         result.volume = volumeFor(request.source, result.loadMs);
-        if (stale(request.generation)) return result;
+        if (cancelling()) throw Cancelled{};
         result.iso = request.iso.value_or(result.volume->defaultIso);
         extract(request, *result.volume, result);
     } catch (const std::bad_alloc&) {
         result.error = "out of memory";
+    } catch (const Cancelled&) {
+        throw;
     } catch (const std::exception& e) {
         result.error = e.what();
     }
-    if (!result.error.empty()) result.surfaces.clear();
+    if (!result.error.empty()) {
+        result.surfaces.clear();
+        result.footprints.clear();
+        result.seeds.clear();
+    }
     result.finished = Clock::now();
     return result;
 }
 
 std::shared_ptr<const LoadedVolume> ExtractionWorker::volumeFor(const SourceSpec& source, double& loadMs) {
     if (cache_ && cache_->source == source) return cache_;
-    setPhase(source.kind == SourceSpec::Field ? "building " + source.text : "loading " + source.text, 0.0);
+    setPhase(source.kind == SourceSpec::Field ? "building " + source.text : "loading " + source.displayName(), 0.0);
     const auto start = Clock::now();
     cache_.reset();  // the old volume goes before the new one is read
-    cache_ = load(source);
+    cache_ = loadSource(source);
     loadMs = msSince(start);
     return cache_;
 }
@@ -191,45 +219,55 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
     setPhase(methodPhase(request.method), known != lastMs_.end() ? known->second : 0.0);
     const Volume& volume = loaded.volume;
     const auto start = Clock::now();
-    const bool consistent = request.table == TableKind::Consistent;
     switch (request.method) {
         case ui::Method::Exhaustive: {
             Surface surface;
             surface.mesh = marchingCubes(volume, result.iso, request.table, threads_);
-            if (stale(request.generation)) return;
-            surface.stats = measureSurface(surface.mesh, volume, consistent);
+            if (cancelling()) throw Cancelled{};
+            surface.stats = measureSurface(surface.mesh, volume, request.table == TableKind::Consistent);
             result.surfaces.push_back(std::move(surface));
-            result.seeds.emplace_back();
             break;
         }
         case ui::Method::All:
             result.surfaces = extractAllSurfaces(volume, result.iso, request.table, threads_);
-            result.seeds.resize(result.surfaces.size());
             break;
-        case ui::Method::Track: {
-            seedsTotal_ = static_cast<int>(request.seeds.size());
-            seedsDone_ = 0;
-            std::set<std::uint64_t> seen;
-            for (const Vec3d& point : request.seeds) {
-                if (stale(request.generation)) break;
-                ++seedsDone_;
-                GridEdge seed;
-                try {
-                    seed = nearestCrossedEdge(volume, result.iso, point);
-                } catch (const InputError&) {
-                    continue;  // no surface at this isovalue any more
-                }
-                Surface surface = trackSurface(volume, result.iso, seed, request.table, threads_);
-                if (!seen.insert(surfaceKey(surface.mesh, volume)).second) continue;
-                result.surfaces.push_back(std::move(surface));
-                result.seeds.emplace_back(point);
-            }
-            seedsTotal_ = 0;
-            break;
-        }
+        case ui::Method::Track: break;
     }
+    if (cancelling()) throw Cancelled{};
+    trackSeeds(request, volume, result);
+    result.footprints.reserve(result.surfaces.size());
+    for (const Surface& surface : result.surfaces) result.footprints.push_back(footprintOf(surface.mesh));
     result.extractMs = msSince(start);
     lastMs_[key] = result.extractMs;
+}
+
+// Each seed is followed to the new isovalue; in `all` it names the surface that
+// holds its edge, otherwise its surface is tracked (once, however many seeds it holds).
+void ExtractionWorker::trackSeeds(const ExtractionRequest& request, const Volume& volume, ExtractionResult& result) {
+    seedsTotal_ = static_cast<int>(request.seeds.size());
+    seedsDone_ = 0;
+    const std::size_t exhaustive = result.surfaces.size();
+    for (const SeedRequest& wanted : request.seeds) {
+        if (cancelling()) throw Cancelled{};
+        ++seedsDone_;
+        SeedResult seed;
+        seed.surface = wanted.surface;
+        seed.seed = followSeed(volume, result.iso, wanted.point);
+        if (seed.seed) {
+            const GridEdge edge = seed.seed->edge;
+            const std::size_t from = request.method == ui::Method::All ? 0 : exhaustive;
+            for (std::size_t i = from; i < result.surfaces.size() && seed.index < 0; ++i) {
+                if (meshHasEdge(result.surfaces[i].mesh, edge)) seed.index = static_cast<int>(i);
+            }
+            if (seed.index < 0 && request.method != ui::Method::All) {
+                result.surfaces.push_back(trackSurface(volume, result.iso, edge, request.table, threads_));
+                seed.index = static_cast<int>(result.surfaces.size() - 1);
+            }
+            if (seed.index < 0) seed.seed.reset();  // all: no surface holds it (cannot happen for a crossed edge)
+        }
+        result.seeds.push_back(seed);
+    }
+    seedsTotal_ = 0;
 }
 
 }  // namespace isotrack::viewer

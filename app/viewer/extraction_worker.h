@@ -2,11 +2,18 @@
 // Long work off the frame loop: loading a volume (or building a field) and
 // extracting its surfaces run on one worker std::thread, so the window keeps
 // drawing while they run. The frame loop submits a request describing the whole
-// scene it wants (source, isovalue, table, method, tracking seeds); a newer
-// request replaces one still waiting, and the worker checks the generation
-// between passes, dropping work that a newer request has made stale. Finished
-// results wait for the frame loop to poll() them and upload them on the main
-// thread (GL objects are created only there).
+// scene it wants (source, isovalue, table, method, tracked seeds).
+//
+// Progressive updates: at most one request waits (a newer one replaces it),
+// and the newest finished result is handed to poll() even when a newer request
+// is already waiting, so while the isovalue is dragged the view trails the
+// slider by about one extraction instead of freezing until the drag ends. A
+// request only for another isovalue (or other seeds) lets the running one
+// finish, since its result is still worth showing; one for another source,
+// method or table makes the running work pointless, and it is cancelled: the
+// worker checks between passes and between seeds (each seed's surface is
+// tracked on all the worker's threads, as `extract --method track` does). Finished results are uploaded by the frame loop on the main thread
+// (GL objects are created only there).
 #include <array>
 #include <atomic>
 #include <chrono>
@@ -20,6 +27,8 @@
 #include <thread>
 #include <vector>
 
+#include "isotrack/follow.h"
+#include "isotrack/io.h"
 #include "isotrack/tables.h"
 #include "isotrack/tracking.h"
 #include "isotrack/volume.h"
@@ -27,12 +36,21 @@
 
 namespace isotrack::viewer {
 
-// A built-in field ("blobs:128") or a volume file.
+// A built-in field ("blobs:128"), a volume file, or a raw file with its layout.
 struct SourceSpec {
     enum Kind { Field, File } kind = Field;
     std::string text;
-    friend bool operator==(const SourceSpec& a, const SourceSpec& b) { return a.kind == b.kind && a.text == b.text; }
+    std::optional<RawLayout> raw;  // a headerless file: how to read it
+    friend bool operator==(const SourceSpec& a, const SourceSpec& b) {
+        return a.kind == b.kind && a.text == b.text && a.raw.has_value() == b.raw.has_value();
+    }
     friend bool operator!=(const SourceSpec& a, const SourceSpec& b) { return !(a == b); }
+    static SourceSpec field(std::string spec) { return SourceSpec{Field, std::move(spec), std::nullopt}; }
+    static SourceSpec file(std::string path, std::optional<RawLayout> raw = std::nullopt) {
+        return SourceSpec{File, std::move(path), std::move(raw)};
+    }
+    // What the panel calls it: the field spec, or the file's name.
+    std::string displayName() const;
 };
 
 // A loaded volume and what the panel shows about it.
@@ -41,18 +59,31 @@ struct LoadedVolume {
     Volume volume;
     std::array<double, 2> range{0.0, 0.0};
     std::vector<float> histogram;  // sample counts in kHistogramBins bins across `range`
-    double defaultIso = 0.0;
+    double defaultIso = 0.0;       // a field's own, or suggestIsovalue for a file
 };
 
 inline constexpr std::size_t kHistogramBins = 128;
 
+// A tracked surface's seed, named by the viewer's surface id.
+struct SeedRequest {
+    std::uint32_t surface = 0;
+    Vec3d point{0, 0, 0};
+};
+
 struct ExtractionRequest {
     std::uint64_t generation = 0;
     SourceSpec source;
-    std::optional<double> iso;  // nullopt: the field's default, or the middle of a file's range
+    std::optional<double> iso;  // nullopt: the source's default
     TableKind table = TableKind::Consistent;
     ui::Method method = ui::Method::All;
-    std::vector<Vec3d> seeds;  // track: re-track the surface nearest each point
+    std::vector<SeedRequest> seeds;  // every tracked surface, in any method
+};
+
+// Where a seed went at the result's isovalue.
+struct SeedResult {
+    std::uint32_t surface = 0;          // the viewer's id, as requested
+    std::optional<FollowedSeed> seed;   // nullopt: no surface near it at this isovalue
+    int index = -1;                     // into ExtractionResult::surfaces; shared when seeds' surfaces merged
 };
 
 struct ExtractionResult {
@@ -61,8 +92,11 @@ struct ExtractionResult {
     double iso = 0.0;
     TableKind table = TableKind::Consistent;
     ui::Method method = ui::Method::All;
-    std::vector<Surface> surfaces;            // mc: one; all: largest first; track: one per distinct seed
-    std::vector<std::optional<Vec3d>> seeds;  // per surface: the point it was tracked from (track)
+    // mc: the exhaustive mesh first, then the seeds' surfaces; all: largest first
+    // (seeds point into them); track: the seeds' surfaces.
+    std::vector<Surface> surfaces;
+    std::vector<SurfaceFootprint> footprints;  // one per surface
+    std::vector<SeedResult> seeds;             // one per requested seed
     double loadMs = 0.0, extractMs = 0.0;
     std::chrono::steady_clock::time_point started{}, finished{};  // on the worker
     std::string error;  // set when loading or extracting failed; then only `generation` is meaningful
@@ -75,22 +109,31 @@ struct WorkerProgress {
     float fraction = -1.0f;  // < 0: unknown
 };
 
+// A newer request makes an older one's work pointless when it wants another
+// volume, method or table (a new isovalue or seed does not).
+bool supersedes(const ExtractionRequest& newer, const ExtractionRequest& older);
+
+// Loads a source as the viewer shows it (volume, range, histogram, default isovalue).
+std::shared_ptr<LoadedVolume> loadSource(const SourceSpec& source);
+
 class ExtractionWorker {
 public:
     explicit ExtractionWorker(int threads);
-    ~ExtractionWorker();  // waits for the current pass to end
+    ~ExtractionWorker();  // cancels the current pass and waits for it to end
     ExtractionWorker(const ExtractionWorker&) = delete;
     ExtractionWorker& operator=(const ExtractionWorker&) = delete;
 
     void submit(ExtractionRequest request);
-    // Drops the waiting request and marks the running one stale: nothing
-    // submitted before reaches poll().
-    void cancel(std::uint64_t generation);
+    // Drops the waiting request and any finished result, and cancels the running
+    // one: nothing submitted before reaches poll().
+    void cancel();
     // The newest finished result, if one is waiting.
     std::optional<ExtractionResult> poll();
     WorkerProgress progress() const;
-    // True while a request is waiting or being worked on.
+    // True while a request is waiting or being worked on, or a result waits.
     bool busy() const;
+    // How many passes were cancelled part-way since the worker started.
+    std::size_t cancelledCount() const { return cancelled_.load(); }
 
 private:
     using Clock = std::chrono::steady_clock;
@@ -99,17 +142,19 @@ private:
     ExtractionResult work(const ExtractionRequest& request);
     std::shared_ptr<const LoadedVolume> volumeFor(const SourceSpec& source, double& loadMs);
     void extract(const ExtractionRequest& request, const LoadedVolume& volume, ExtractionResult& result);
-    bool stale(std::uint64_t generation) const { return generation != latest_.load(); }
+    void trackSeeds(const ExtractionRequest& request, const Volume& volume, ExtractionResult& result);
+    bool cancelling() const { return cancel_.load(std::memory_order_relaxed); }
     void setPhase(const std::string& what, double expectedMs);
 
     const int threads_;
     mutable std::mutex mutex_;
     std::condition_variable wake_;
     std::optional<ExtractionRequest> pending_;
+    std::optional<ExtractionRequest> running_;  // a copy of what is being worked on (its source, method, table)
     std::optional<ExtractionResult> finished_;
-    bool working_ = false;
     bool stop_ = false;
-    std::atomic<std::uint64_t> latest_{0};
+    std::atomic<bool> cancel_{false};  // the running pass is pointless now
+    std::atomic<std::size_t> cancelled_{0};
 
     // Progress of the current pass (guarded by mutex_).
     std::string phase_;

@@ -175,6 +175,9 @@ void Profiler::writeTrace() {
                          {"growing", c.growing},
                          {"grown_cells", c.grownCells},
                          {"extracting", c.extracting},
+                         {"iso_shown", c.isoShown},
+                         {"iso_requested", c.isoRequested},
+                         {"extractions_applied", c.extractionsApplied},
                          {"gpu_ms", record.gpuUs >= 0.0 ? json(record.gpuUs / 1000.0) : json(nullptr)}};
         events.push_back(std::move(frame));
         for (const Span& span : record.spans) events.push_back(complete(stageName(span.stage), "stage", 1, span.startUs, span.durationUs));

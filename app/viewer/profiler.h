@@ -29,6 +29,8 @@ struct FrameCounters {
     std::size_t grownCells = 0;  // by growing surfaces this frame
     bool growing = false, extracting = false;
     std::size_t cpuBytes = 0, gpuBytes = 0;
+    double isoShown = 0.0, isoRequested = 0.0;  // the surfaces on screen trail the slider while it is dragged
+    std::size_t extractionsApplied = 0;          // results shown so far in the session
 };
 
 class Profiler {

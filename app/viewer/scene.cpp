@@ -74,7 +74,13 @@ void Scene::draw(const render::Renderer& renderer, const render::FrameView& fram
                  const render::FrameOptions& options) const {
     render::Renderer::beginFrame(frame, options);
     renderer.beginSurfaces(frame, wireframe);
-    for (const auto& surface : surfaces_) surface->draw(renderer, selected == surface->id(), colourByGrowth);
+    // Tracked surfaces first: where the exhaustive mesh holds the same triangles, the depth test keeps the first.
+    for (const auto& surface : surfaces_) {
+        if (surface->tracked()) surface->draw(renderer, selected == surface->id(), colourByGrowth);
+    }
+    for (const auto& surface : surfaces_) {
+        if (!surface->tracked()) surface->draw(renderer, selected == surface->id(), colourByGrowth);
+    }
     render::Renderer::endSurfaces(wireframe);
     if (!wireframe && !boundingBox) return;
     renderer.beginLines(frame);
@@ -89,7 +95,12 @@ void Scene::draw(const render::Renderer& renderer, const render::FrameView& fram
 void Scene::drawPick(const render::Renderer& renderer, const render::FrameView& frame,
                      const render::PickTarget& target) const {
     renderer.beginPick(frame, target);
-    for (const auto& surface : surfaces_) surface->drawPick(renderer);
+    for (const auto& surface : surfaces_) {
+        if (surface->tracked()) surface->drawPick(renderer);
+    }
+    for (const auto& surface : surfaces_) {
+        if (!surface->tracked()) surface->drawPick(renderer);
+    }
 }
 
 std::uint64_t Scene::signature(const render::Camera& camera, const render::FrameOptions& options) const {
@@ -112,6 +123,8 @@ void Scene::buildUI(ui::PanelState& state) const {
         const Volume& volume = volume_->volume;
         data.loaded = true;
         data.source = volume_->source.text;
+        data.sourceName = volume_->source.displayName();
+        data.sourceIsFile = volume_->source.kind == SourceSpec::File;
         data.dims = volume.dims();
         data.scalarType = scalarTypeName(volume.type());
         data.rangeMin = volume_->range[0];

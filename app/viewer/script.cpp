@@ -33,6 +33,7 @@ const std::map<std::string, Syntax>& commands() {
         {"table", {"K", 0, {"consistent", "classic"}}},
         {"method", {"K", 0, {"mc", "track", "all"}}},
         {"click", {"NNK", 1, {"ctrl"}}},
+        {"track", {"NNN", 0, {}}},
         {"frames", {"I", 0, {}}},
         {"wait", {"", 0, {}}},
         {"sweep", {"NNI", 0, {}}},

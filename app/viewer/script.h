@@ -12,6 +12,8 @@
 //   table consistent|classic  method mc|track|all
 //   click FX FY [ctrl]        click at fractions of the 3D view (0..1, origin top-left),
 //                             after any extraction in progress has finished
+//   track X Y Z               track the surface nearest the world point (as ctrl-click does),
+//                             after any extraction in progress has finished
 //   frames N                  run N frames
 //   wait                      run frames until extraction and growth are done
 //   sweep FROM TO STEPS       set the isovalue on each of STEPS frames, FROM to TO

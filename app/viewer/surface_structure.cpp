@@ -11,10 +11,46 @@ using Clock = std::chrono::steady_clock;
 
 }  // namespace
 
-SurfaceStructure::SurfaceStructure(std::uint32_t id, Surface surface, const glm::vec3& colour,
-                                   std::optional<Vec3d> seedPoint)
-    : id_(id), mesh_(std::move(surface.mesh)), stats_(surface.stats), gpu_(mesh_), seedPoint_(seedPoint) {
+SurfaceStructure::SurfaceStructure(std::uint32_t id, Surface surface, SurfaceFootprint footprint,
+                                   const glm::vec3& colour)
+    : id_(id), mesh_(std::move(surface.mesh)), stats_(surface.stats), gpu_(mesh_), footprint_(std::move(footprint)) {
     style_.colour = colour;
+}
+
+void SurfaceStructure::replaceSurface(Surface surface, SurfaceFootprint footprint) {
+    tracker_.reset();
+    mesh_ = std::move(surface.mesh);
+    stats_ = surface.stats;
+    gpu_ = render::GpuMesh(mesh_);
+    footprint_ = std::move(footprint);
+    presence_ = Presence::Shown;
+}
+
+void SurfaceStructure::setSeed(const FollowedSeed& seed, double iso) {
+    seedPoint_ = seed.point;
+    seed_ = seed.edge;
+    iso_ = iso;
+}
+
+void SurfaceStructure::setAbsent(Presence presence, double iso, std::uint32_t into) {
+    tracker_.reset();
+    mesh_ = Mesh{};
+    stats_ = SurfaceStats{};
+    gpu_ = render::GpuMesh();
+    presence_ = presence;
+    mergedInto_ = into;
+    absentIso_ = iso;
+}
+
+void SurfaceStructure::startTracking(std::shared_ptr<const LoadedVolume> volume, double iso, TableKind table,
+                                     const GridEdge& seed, const Vec3d& seedPoint) {
+    volume_ = std::move(volume);
+    iso_ = iso;
+    table_ = table;
+    seed_ = seed;
+    seedPoint_ = seedPoint;
+    presence_ = Presence::Shown;
+    restartGrowth();
 }
 
 SurfaceStructure::SurfaceStructure(std::uint32_t id, std::shared_ptr<const LoadedVolume> volume, double iso,
@@ -28,7 +64,7 @@ SurfaceStructure::SurfaceStructure(std::uint32_t id, std::shared_ptr<const Loade
 SurfaceStructure::~SurfaceStructure() = default;
 
 void SurfaceStructure::restartGrowth() {
-    if (!volume_) return;  // not a tracked surface
+    if (!volume_ || presence_ != Presence::Shown) return;  // not a tracked surface, or nothing to grow
     tracker_ = std::make_unique<SurfaceTracker>(volume_->volume, iso_, table_);
     tracker_->start(seed_);
     mesh_ = Mesh{};
@@ -59,6 +95,7 @@ void SurfaceStructure::finishGrowth() {
     stats_ = surface.stats;
     tracker_.reset();    // frees the tracker's visited sets and queues
     gpu_.shrinkToFit();  // and the GPU buffers' spare capacity
+    footprint_ = footprintOf(mesh_);
 }
 
 bool SurfaceStructure::containsEdge(const GridEdge& edge) const {
@@ -108,6 +145,15 @@ void SurfaceStructure::buildUI(ui::PanelState& state) const {
     row.cpuBytes = cpuBytes();
     row.gpuBytes = gpuBytes();
     row.area = stats_.area;
+    row.tracked = tracked();
+    if (presence_ == Presence::Gone) {
+        row.presence = ui::SurfaceRow::Gone;
+        row.absentIso = absentIso_;
+    } else if (presence_ == Presence::Merged) {
+        row.presence = ui::SurfaceRow::Merged;
+        row.absentIso = absentIso_;
+        row.mergedInto = mergedInto_;
+    }
     state.surfaces.push_back(row);
 }
 

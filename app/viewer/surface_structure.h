@@ -16,6 +16,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "isotrack/follow.h"
 #include "isotrack/tracking.h"
 #include "render/gpu_mesh.h"
 #include "render/renderer.h"
@@ -35,14 +36,34 @@ struct GrowthStep {
     std::chrono::nanoseconds extract{0}, upload{0};
 };
 
+// Whether a surface shows a mesh at the current isovalue. A tracked surface
+// keeps its seed when its surface vanishes (Gone) or when another tracked
+// surface's seed lies on the same surface (Merged): it comes back with its own
+// style when the isovalue moves back or the surfaces split again.
+enum class Presence { Shown, Gone, Merged };
+
 class SurfaceStructure {
 public:
     // A finished surface, uploaded in one go.
-    SurfaceStructure(std::uint32_t id, Surface surface, const glm::vec3& colour, std::optional<Vec3d> seedPoint);
+    SurfaceStructure(std::uint32_t id, Surface surface, SurfaceFootprint footprint, const glm::vec3& colour);
     // A surface to grow from `seed`, tracked on `volume` (kept alive by this).
     SurfaceStructure(std::uint32_t id, std::shared_ptr<const LoadedVolume> volume, double iso, TableKind table,
                      const GridEdge& seed, const Vec3d& seedPoint, const glm::vec3& colour);
     ~SurfaceStructure();
+
+    // A new mesh for the same surface (another isovalue); style, offset and id stay.
+    void replaceSurface(Surface surface, SurfaceFootprint footprint);
+    // Tracked surfaces: the seed as followed to the new isovalue.
+    void setSeed(const FollowedSeed& seed, double iso);
+    // No mesh at this isovalue: gone, or merged into surface `into`; the seed stays.
+    void setAbsent(Presence presence, double iso, std::uint32_t into = 0);
+    // Becomes a tracked surface growing from `seed` (a ctrl-click on an extracted surface).
+    void startTracking(std::shared_ptr<const LoadedVolume> volume, double iso, TableKind table, const GridEdge& seed,
+                       const Vec3d& seedPoint);
+    Presence presence() const { return presence_; }
+    std::uint32_t mergedInto() const { return mergedInto_; }
+    double absentSince() const { return absentIso_; }
+    const SurfaceFootprint& footprint() const { return footprint_; }
     SurfaceStructure(const SurfaceStructure&) = delete;
     SurfaceStructure& operator=(const SurfaceStructure&) = delete;
 
@@ -86,6 +107,10 @@ private:
     render::SurfaceStyle style_;
     glm::vec3 explodeOffset_{0.0f};
     std::optional<Vec3d> seedPoint_;
+    SurfaceFootprint footprint_;
+    Presence presence_ = Presence::Shown;
+    std::uint32_t mergedInto_ = 0;
+    double absentIso_ = 0.0;
 
     // While growing.
     std::shared_ptr<const LoadedVolume> volume_;

@@ -55,9 +55,9 @@ Viewer::Viewer(const ViewerOptions& options, std::optional<Script> script)
     method_ = parseMethod(options.method);
     iso_ = options.iso;
     if (!options.volumePath.empty()) {
-        source_ = SourceSpec{SourceSpec::File, options.volumePath};
+        source_ = SourceSpec::file(options.volumePath, options.raw);
     } else {
-        source_ = SourceSpec{SourceSpec::Field, options.fieldSpec.empty() ? kDefaultField : options.fieldSpec};
+        source_ = SourceSpec::field(options.fieldSpec.empty() ? kDefaultField : options.fieldSpec);
     }
     if (options.deterministic) cellsPerFrame_ = kDeterministicCellsPerFrame;
     if (!options.profile.empty()) profiler_.startRecording(options.profile);
@@ -216,6 +216,9 @@ void Viewer::frame() {
         counters.extracting = worker_.busy();
         counters.cpuBytes = cpuBytes();
         counters.gpuBytes = gpuBytes();
+        counters.isoShown = shownIso();
+        counters.isoRequested = currentIso();
+        counters.extractionsApplied = extractionsApplied_;
     }
     profiler_.endFrame(counters);
 }
@@ -229,9 +232,10 @@ int runViewer(const ViewerOptions& options) {
         std::FILE* file = std::fopen(options.volumePath.c_str(), "rb");
         if (file == nullptr) throw InputError("--volume " + options.volumePath + ": cannot open the file");
         std::fclose(file);
-        if (!volumeFormatOf(options.volumePath)) {
+        if (!options.raw && !volumeFormatOf(options.volumePath)) {
             throw InputError("--volume " + options.volumePath +
-                             ": unknown volume format (the viewer reads .nrrd .nhdr .nii .nii.gz .mhd .mha .vtk)");
+                             ": unknown volume format (the viewer reads .nrrd .nhdr .nii .nii.gz .mhd .mha .vtk, or raw "
+                             "samples with --dims and --type)");
         }
     }
     Viewer viewer(options, std::move(script));

@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "isotrack/io.h"
 #include "isotrack/tables.h"
 #include "render/camera.h"
 #include "render/renderer.h"
@@ -34,6 +35,7 @@ namespace isotrack::viewer {
 
 struct ViewerOptions {
     std::string volumePath;
+    std::optional<RawLayout> raw;  // --dims and friends: read volumePath as raw samples
     std::string fieldSpec;  // default when neither is given: kDefaultField
     std::optional<double> iso;
     std::string table = "consistent";
@@ -48,6 +50,7 @@ struct ViewerOptions {
 };
 
 inline constexpr const char* kDefaultField = "blobs:128";
+inline constexpr std::size_t kPicksKept = 16;  // the last clicks, for the summary
 
 class Viewer {
 public:
@@ -69,16 +72,22 @@ private:
     void frame();
     bool idle() const;
 
-    // viewer_scene.cpp: extraction, results, growth, picking
+    // viewer_scene.cpp: extraction requests, growth, picking
     void submit();
-    void takeResult();
-    void applyResult(ExtractionResult result);
     void grow();
     void click(float x, float y, bool track);
-    void trackFrom(const Vec3d& point);
-    double currentIso() const;
-    std::vector<Vec3d> trackedSeeds() const;
-    void cancelExtraction();
+    void trackFrom(const Vec3d& point, std::optional<std::uint32_t> hit);
+    double currentIso() const;  // the isovalue asked for (the slider)
+    double shownIso() const;    // the isovalue of the surfaces on screen
+    std::vector<SeedRequest> trackedSeeds() const;
+
+    // viewer_results.cpp: results applied so that surfaces keep who they are
+    void takeResult();
+    void applyResult(ExtractionResult result);
+    void placeTracked(ExtractionResult& result, std::vector<std::unique_ptr<SurfaceStructure>>& old,
+                      std::vector<bool>& claimed);
+    void placeUntracked(ExtractionResult& result, std::vector<std::unique_ptr<SurfaceStructure>>& old,
+                        std::vector<bool>& claimed, std::vector<std::unique_ptr<SurfaceStructure>>& next);
 
     // viewer_actions.cpp
     void apply(const ui::Action& action);
@@ -122,6 +131,11 @@ private:
     // What the user asked for; the worker makes it so.
     ExtractionWorker worker_;
     std::uint64_t generation_ = 0;
+    std::uint64_t epoch_ = 0;  // results of requests before this one are for another source, method or table
+    std::optional<ExtractionRequest> lastRequest_;
+    std::optional<double> shownIso_;  // of the last result applied
+    std::size_t extractionsApplied_ = 0;
+    std::size_t nextColour_ = 0;  // palette rank for the next new surface
     SourceSpec source_;
     std::optional<double> iso_;
     TableKind table_ = TableKind::Consistent;

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <type_traits>
 
+#include "isotrack/errors.h"
 #include "isotrack/io.h"
 #include "viewer/viewer.h"
 
@@ -22,12 +23,12 @@ Overloaded(Ts...) -> Overloaded<Ts...>;
 void Viewer::apply(const ui::Action& action) {
     std::visit(Overloaded{
                    [&](const ui::LoadField& a) {
-                       source_ = SourceSpec{SourceSpec::Field, a.name + ":" + std::to_string(a.size)};
+                       source_ = SourceSpec::field(a.name + ":" + std::to_string(a.size));
                        iso_.reset();
                        submit();
                    },
                    [&](const ui::LoadFile& a) {
-                       source_ = SourceSpec{SourceSpec::File, a.path};
+                       source_ = SourceSpec::file(a.path);
                        iso_.reset();
                        submit();
                    },
@@ -120,7 +121,7 @@ void Viewer::applyKey(KeyCommand key) {
             break;
         }
         case KeyCommand::ExportSelected:
-            if (selected) apply(ui::Export{*selected, ui::exportPath("surface_{id}.ply", *selected)});
+            if (selected) apply(ui::Export{*selected, ui::exportPath(panel_.exportPattern(), *selected)});
             break;
     }
 }
@@ -138,12 +139,18 @@ void Viewer::frameCamera(bool selectionOnly) {
     camera_ = frameKeepingAngles(camera_, bounds);
 }
 
+// The path's extension picks the format (PLY, OBJ or STL), as for `isotrack extract --out`.
 void Viewer::exportSurface(std::uint32_t id, const std::string& path) {
     const SurfaceStructure* surface = scene_.find(id);
     if (surface == nullptr) return;
-    writePly(path, surface->mesh());
+    if (surface->presence() != Presence::Shown) {
+        throw InputError("export " + path + ": surface " + std::to_string(id) + " has no mesh at isovalue " +
+                         std::to_string(shownIso()));
+    }
+    const MeshFormat format = meshFormatOf(path);
+    writeMesh(path, surface->mesh());
     status("surface " + std::to_string(id) + ": wrote " + std::to_string(surface->mesh().triangleCount()) +
-           " triangles to " + path);
+           " triangles to " + path + " (" + meshFormatExtension(format) + ")");
 }
 
 }  // namespace isotrack::viewer

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <charconv>
 
+#include "cli/source.h"
 #include "isotrack/errors.h"
 #include "viewer/viewer.h"
 
@@ -25,7 +26,8 @@ int parseSide(const std::string& text, const std::string& whole) {
 }  // namespace
 
 ViewerCommandLine addViewerOptions(CLI::App& app) {
-    ViewerCommandLine commandLine{std::make_shared<ViewerOptions>(), std::make_shared<std::string>()};
+    ViewerCommandLine commandLine{std::make_shared<ViewerOptions>(), std::make_shared<std::string>(),
+                                  std::make_shared<cli::RawOptions>()};
     ViewerOptions& o = *commandLine.options;
     CLI::Option_group* group =
         app.add_option_group("Viewer", "With no subcommand, isotrack opens the interactive viewer (needs a display)");
@@ -33,7 +35,9 @@ ViewerCommandLine addViewerOptions(CLI::App& app) {
     CLI::Option* field = group->add_option(
         "--field", o.fieldSpec, std::string("Open a built-in field NAME[:N] (default ") + kDefaultField + ")");
     volume->excludes(field);
-    group->add_option("--iso", o.iso, "Isovalue (default: the field's own, or the middle of a file's range)");
+    cli::addRawOptions(*group, *commandLine.raw, volume);
+    group->add_option("--iso", o.iso,
+                      "Isovalue (default: the field's own, or the valley above a file's tallest histogram peak)");
     group->add_option("--table", o.table, "Triangle table: consistent (default) or classic")
         ->check(CLI::IsMember({"consistent", "classic"}));
     group->add_option("--method", o.method, "mc: exhaustive; track: surfaces you click; all: every surface (default)")
@@ -59,6 +63,15 @@ int runViewerCommand(const ViewerCommandLine& commandLine) {
         if (x == std::string::npos) throw InputError("--size \"" + size + "\": expected WIDTHxHEIGHT, e.g. 960x600");
         options.width = parseSide(size.substr(0, x), size);
         options.height = parseSide(size.substr(x + 1), size);
+    }
+    const cli::RawOptions& raw = *commandLine.raw;
+    if (!raw.dims.empty()) {
+        RawLayout layout;
+        for (std::size_t a = 0; a < 3; ++a) layout.dims[a] = raw.dims.at(a);
+        layout.type = cli::rawScalarType(raw.type);
+        if (!raw.spacing.empty()) layout.spacing = {raw.spacing.at(0), raw.spacing.at(1), raw.spacing.at(2)};
+        layout.bigEndian = raw.endian == "big";
+        options.raw = layout;
     }
     return runViewer(options);
 }

@@ -7,6 +7,9 @@
 namespace CLI {
 class App;
 }
+namespace isotrack::cli {
+struct RawOptions;
+}
 
 namespace isotrack::viewer {
 
@@ -15,6 +18,7 @@ struct ViewerOptions;
 struct ViewerCommandLine {
     std::shared_ptr<ViewerOptions> options;
     std::shared_ptr<std::string> size;  // WIDTHxHEIGHT, parsed by run()
+    std::shared_ptr<cli::RawOptions> raw;  // --dims --type --spacing --endian
 };
 
 // Adds --volume, --field, --iso, --table, --method, --script, --json,

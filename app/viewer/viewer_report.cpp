@@ -13,6 +13,15 @@ namespace {
 // The box's 24 line vertices.
 constexpr std::size_t kBoxBytes = 24 * 3 * sizeof(float);
 
+const char* presenceName(Presence presence) {
+    switch (presence) {
+        case Presence::Shown: return "shown";
+        case Presence::Gone: return "gone";
+        case Presence::Merged: return "merged";
+    }
+    return "shown";
+}
+
 }  // namespace
 
 std::size_t Viewer::cpuBytes() const { return scene_.cpuVolumeBytes() + scene_.cpuMeshBytes() + tableBytes(); }
@@ -24,10 +33,21 @@ std::size_t Viewer::gpuOtherBytes() const {
 std::size_t Viewer::gpuBytes() const { return scene_.gpuSurfaceBytes() + gpuOtherBytes(); }
 
 nlohmann::json Viewer::memoryJson() const {
+    std::size_t gone = 0, merged = 0, triangles = 0;
+    for (const auto& surface : scene_.surfaces()) {
+        triangles += surface->mesh().triangleCount();
+        gone += surface->presence() == Presence::Gone ? 1 : 0;
+        merged += surface->presence() == Presence::Merged ? 1 : 0;
+    }
     return {{"cpu_bytes", cpuBytes()},
+            {"surfaces_gone", gone},
+            {"triangles", triangles},
+            {"surfaces_merged", merged},
             {"gpu_bytes", gpuBytes()},
             {"rss_bytes", residentBytes()},
             {"surfaces", scene_.surfaces().size()},
+            {"extractions_applied", extractionsApplied_},
+            {"isovalue_shown", shownIso()},
             {"frame", profiler_.frames()}};
 }
 
@@ -42,6 +62,7 @@ ui::PanelState Viewer::panelState() const {
 
     ui::ExtractionState& extraction = state.extraction;
     extraction.iso = currentIso();
+    extraction.shownIso = shownIso();
     extraction.table = table_ == TableKind::Classic ? ui::Table::Classic : ui::Table::Consistent;
     extraction.method = method_;
     const WorkerProgress progress = worker_.progress();
@@ -94,6 +115,8 @@ nlohmann::json Viewer::summary() const {
     nlohmann::json surfaces = nlohmann::json::array();
     for (const auto& surface : scene_.surfaces()) {
         const Mesh& mesh = surface->mesh();
+        const glm::vec3 colour = surface->style().colour;
+        const glm::vec3 offset = surface->userOffset;
         surfaces.push_back({{"id", surface->id()},
                             {"triangles", mesh.triangleCount()},
                             {"vertices", mesh.vertices.size()},
@@ -104,11 +127,21 @@ nlohmann::json Viewer::summary() const {
                             {"closed", surface->stats().closed},
                             {"growing", surface->growing()},
                             {"tracked", surface->tracked()},
-                            {"visible", surface->style().visible}});
+                            {"state", presenceName(surface->presence())},
+                            {"visible", surface->style().visible},
+                            {"colour", {colour.r, colour.g, colour.b}},
+                            {"offset", {offset.x, offset.y, offset.z}},
+                            {"selected", scene_.selected == surface->id()}});
+        if (surface->presence() == Presence::Merged) surfaces.back()["merged_into"] = surface->mergedInto();
+        if (const auto& seed = surface->seedPoint()) surfaces.back()["seed"] = *seed;
     }
     nlohmann::json summary = {
         {"source", scene_.volume() ? scene_.volume()->source.text : ""},
+        {"default_isovalue", scene_.volume() ? scene_.volume()->defaultIso : 0.0},
         {"isovalue", currentIso()},
+        {"isovalue_shown", shownIso()},
+        {"extractions_applied", extractionsApplied_},
+        {"extractions_cancelled", worker_.cancelledCount()},
         {"table", tableKindName(table_)},
         {"method", ui::methodName(method_)},
         {"surfaces", surfaces},

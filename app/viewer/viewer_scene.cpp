@@ -8,30 +8,17 @@
 #include "viewer/viewer.h"
 
 namespace isotrack::viewer {
-namespace {
-
-constexpr std::size_t kPicksKept = 16;
-
-const char* requestName(ui::Method method) {
-    switch (method) {
-        case ui::Method::Exhaustive: return "marching cubes";
-        case ui::Method::Track: return "re-track seeds";
-        case ui::Method::All: return "every surface";
-    }
-    return "extract";
-}
-
-}  // namespace
-
 double Viewer::currentIso() const {
     if (iso_) return *iso_;
     return scene_.volume() ? scene_.volume()->defaultIso : 0.0;
 }
 
-std::vector<Vec3d> Viewer::trackedSeeds() const {
-    std::vector<Vec3d> seeds;
+double Viewer::shownIso() const { return shownIso_.value_or(currentIso()); }
+
+std::vector<SeedRequest> Viewer::trackedSeeds() const {
+    std::vector<SeedRequest> seeds;
     for (const auto& surface : scene_.surfaces()) {
-        if (surface->seedPoint()) seeds.push_back(*surface->seedPoint());
+        if (surface->seedPoint()) seeds.push_back(SeedRequest{surface->id(), *surface->seedPoint()});
     }
     return seeds;
 }
@@ -43,48 +30,12 @@ void Viewer::submit() {
     request.iso = iso_;
     request.table = table_;
     request.method = method_;
-    if (method_ == ui::Method::Track) request.seeds = trackedSeeds();
+    request.seeds = trackedSeeds();
+    if (!lastRequest_ || supersedes(request, *lastRequest_)) epoch_ = request.generation;
+    lastRequest_ = request;
+    lastRequest_->seeds.clear();
     worker_.submit(std::move(request));
     if (script_) script_->jobCommand = script_->current;
-}
-
-void Viewer::cancelExtraction() { worker_.cancel(++generation_); }
-
-void Viewer::takeResult() {
-    std::optional<ExtractionResult> result = worker_.poll();
-    if (!result || result->generation != generation_) return;
-    Profiler::Scope scope(profiler_, Stage::Upload);
-    applyResult(std::move(*result));
-}
-
-void Viewer::applyResult(ExtractionResult result) {
-    profiler_.addWorkerSpan(requestName(result.method), result.started, result.finished);
-    if (!result.error.empty()) {
-        extractionError_ = result.error;
-        if (script_) {
-            const ScriptCommand* command = script_->jobCommand ? script_->jobCommand : script_->current;
-            throw command ? script_->script.error(*command, result.error) : ScriptError(result.error);
-        }
-        status(result.error);
-        return;
-    }
-    extractionError_.clear();
-    const bool newVolume = scene_.setVolume(result.volume);
-    if (newVolume) {  // a new box, and the default view of it
-        renderer_->setBounds(scene_.volumeBounds());
-        const render::FrameOptions options = frameOptions();
-        camera_ = render::frameBounds(scene_.volumeBounds(), float(options.width) / float(options.height));
-    }
-    iso_ = result.iso;
-    table_ = result.table;
-    method_ = result.method;
-    lastExtractMs_ = result.extractMs;
-    scene_.clearSurfaces();
-    for (std::size_t i = 0; i < result.surfaces.size(); ++i) {
-        const glm::vec3 colour = render::surfaceColour(result.method == ui::Method::Exhaustive ? 0 : i);
-        scene_.add(
-            std::make_unique<SurfaceStructure>(scene_.newId(), std::move(result.surfaces[i]), colour, result.seeds[i]));
-    }
 }
 
 void Viewer::grow() {
@@ -132,7 +83,7 @@ void Viewer::click(float x, float y, bool track) {
     }
     if (hit.surface) {
         const SurfaceStructure* surface = scene_.find(*hit.surface);
-        if (surface != nullptr && surface->tracked()) {  // already its own surface
+        if (surface != nullptr && surface->tracked()) {  // already a tracked surface
             scene_.selected = hit.surface;
             return;
         }
@@ -141,44 +92,47 @@ void Viewer::click(float x, float y, bool track) {
     if (!point) {
         glm::vec3 origin, direction;
         render::pixelRay(view, x + 0.5f, y + 0.5f, origin, direction);
-        point = firstIsoCrossing(scene_.volume()->volume, currentIso(), origin, direction);
+            point = firstIsoCrossing(scene_.volume()->volume, shownIso(), origin, direction);
     }
     if (!point) {
-        status("no surface at isovalue " + std::to_string(currentIso()) + " under the click");
+        status("no surface at isovalue " + std::to_string(shownIso()) + " under the click");
         return;
     }
     picks_.back()["point"] = *point;
-    trackFrom(*point);
+    trackFrom(*point, hit.surface);
 }
 
-void Viewer::trackFrom(const Vec3d& point) {
+// Tracks the surface through `point` and keeps every other surface. A click on
+// a surface of `all` turns that surface into a tracked one in place (same id,
+// style and list position), growing again from the seed; otherwise the tracked
+// surface is added at the end of the list.
+void Viewer::trackFrom(const Vec3d& point, std::optional<std::uint32_t> hit) {
     const std::shared_ptr<const LoadedVolume> volume = scene_.volume();
-    const double iso = currentIso();
+    const double iso = shownIso();
     const GridEdge seed = nearestCrossedEdge(volume->volume, iso, point);
     picks_.back()["seed_edge"] = {seed.x, seed.y, seed.z, seed.axis};
     for (const auto& surface : scene_.surfaces()) {
-        if (surface->tracked() && surface->containsEdge(seed)) {
+        if (surface->tracked() && surface->presence() == Presence::Shown && surface->containsEdge(seed)) {
             scene_.selected = surface->id();
             return;
         }
     }
-    const bool switching = method_ != ui::Method::Track;
-    if (switching) {
-        // Tracking replaces the exhaustive result: the scene holds tracked surfaces only.
-        method_ = ui::Method::Track;
-        cancelExtraction();
-        scene_.clearSurfaces();
+    SurfaceStructure* clicked = hit ? scene_.find(*hit) : nullptr;
+    if (clicked != nullptr && !clicked->tracked() && method_ == ui::Method::All && clicked->containsEdge(seed)) {
+        clicked->startTracking(volume, iso, table_, seed, point);
+        scene_.selected = clicked->id();
+        picks_.back()["tracked_surface"] = clicked->id();
+    } else {
+        auto surface = std::make_unique<SurfaceStructure>(scene_.newId(), volume, iso, table_, seed, point,
+                                                          render::surfaceColour(nextColour_++));
+        scene_.selected = surface->id();
+        picks_.back()["tracked_surface"] = surface->id();
+        scene_.add(std::move(surface));
     }
-    const std::size_t tracked = static_cast<std::size_t>(
-        std::count_if(scene_.surfaces().begin(), scene_.surfaces().end(), [](const auto& s) { return s->tracked(); }));
-    auto surface = std::make_unique<SurfaceStructure>(scene_.newId(), volume, iso, table_, seed, point,
-                                                      render::surfaceColour(tracked));
-    scene_.selected = surface->id();
-    picks_.back()["tracked_surface"] = surface->id();
-    scene_.add(std::move(surface));
+    scene_.refreshOffsets();
     playing_ = true;
-    // A re-tracking on its way (an isovalue change) must include this seed.
-    if (!switching && worker_.busy()) submit();
+    // A re-extraction on its way (an isovalue change) must include this seed.
+    if (worker_.busy()) submit();
 }
 
 }  // namespace isotrack::viewer

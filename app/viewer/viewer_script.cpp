@@ -102,8 +102,8 @@ bool Viewer::runCommand(const ScriptCommand& c) {
     };
     if (name == "load" || name == "field") {
         if (name == "field") parseFieldSpec(c.text);  // a bad spec fails here, on its line
-        source_ = name == "load" ? SourceSpec{SourceSpec::File, scriptInputPath(run.script, c.text)}
-                                 : SourceSpec{SourceSpec::Field, c.text};
+        source_ = name == "load" ? SourceSpec::file(scriptInputPath(run.script, c.text))
+                                 : SourceSpec::field(c.text);
         iso_.reset();
         submit();
         return waitFor(ScriptRun::Wait::Loaded);
@@ -120,6 +120,16 @@ bool Viewer::runCommand(const ScriptCommand& c) {
         run.clickTrack = c.text == "ctrl";
         run.wait = ScriptRun::Wait::Click;
         return waitDone();  // clicks now when nothing is being extracted
+    } else if (name == "track") {
+        if (worker_.busy()) {  // as a click does: on the surfaces the worker is making
+            --run.next;
+            return waitFor(ScriptRun::Wait::Idle);
+        }
+        if (!scene_.volume()) throw run.script.error(c, "track: no volume loaded");
+        const Vec3d point{c.numbers[0], c.numbers[1], c.numbers[2]};
+        if (picks_.size() >= kPicksKept) picks_.erase(picks_.begin());
+        picks_.push_back({{"point", point}, {"track", true}, {"hit_surface", nullptr}});
+        trackFrom(point, std::nullopt);
     } else if (name == "frames") {
         const auto frames = static_cast<std::uint64_t>(c.numbers[0]);
         if (frames == 0) return true;

@@ -3,7 +3,9 @@
 #   session_golden.sh ISOTRACK VIEWER_CHECK OUT_DIR NAME
 # Runs tests/viewer/NAME.isotrack with --deterministic in a 960x600 window (run
 # it under xvfb-run), then checks NAME.png against tests/golden/viewer_NAME.png
-# (metric: tests/viewer/viewer_check.cpp) and the --json summary.
+# (metric: tests/viewer/viewer_check.cpp) and the --json summary. When
+# tests/viewer/NAME.expect exists, each of its lines "KEY VALUE" (a summary
+# field as viewer_check field prints it) must hold too.
 set -euo pipefail
 isotrack=$1 check=$2 out=$3 name=$4
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -13,3 +15,15 @@ rm -f "$name.png" "$name.json"
 "$isotrack" --script "$here/$name.isotrack" --deterministic --size 960x600 --json > "$name.json"
 "$check" summary "$name.json"
 "$check" golden "$out/$name.png" "viewer_$name"
+expect="$here/$name.expect"
+if [[ -f $expect ]]; then
+    while read -r key value; do
+        [[ -z $key || $key == \#* ]] && continue
+        got=$("$check" field "$name.json" "$key")
+        if [[ $got != "$value" ]]; then
+            echo "$name.json: $key is $got, expected $value"
+            exit 1
+        fi
+        echo "$key = $got"
+    done < "$expect"
+fi

@@ -6,6 +6,11 @@
 //   viewer_check profile FILE.json --min-frames N
 //   viewer_check soak FILE.json WARM END --max-rss-growth BYTES   (checkpoint name prefixes)
 //   viewer_check field FILE.json KEY        print a number from the summary
+//   viewer_check surfaces FILE.json         one line per surface: index id triangles tracked selected
+//                                           state visible
+//   viewer_check sweep FILE.json PROFILE.json BEFORE STILL SWEPT DONE --min-applied N
+//       (checkpoint names) extractions applied from STILL to DONE must be at least N; prints the
+//       median frame time from STILL to SWEPT (the isovalue moving) against BEFORE to STILL (not)
 //
 // Golden metric: the screenshot (the whole window, panel included, taken with
 // --deterministic so the panel's timings read "--") is reduced 3x by averaging
@@ -191,6 +196,55 @@ int soak(const std::string& path, const std::string& warmPrefix, const std::stri
     return 0;
 }
 
+const json& checkpoint(const json& s, const std::string& name) {
+    for (const json& c : s["checkpoints"]) {
+        if (c["name"] == name) return c;
+    }
+    throw std::runtime_error("no checkpoint named " + name + " in the summary");
+}
+
+double medianFrameMs(const json& trace, long from, long to) {
+    std::vector<double> ms;
+    for (const json& event : trace["traceEvents"]) {
+        if (event.value("name", "") != "frame" || event.value("ph", "") != "X") continue;
+        const long frame = event["args"]["frame"].get<long>();
+        if (frame >= from && frame < to) ms.push_back(event["dur"].get<double>() / 1000.0);
+    }
+    if (ms.empty()) throw std::runtime_error("no frames " + std::to_string(from) + ".." + std::to_string(to));
+    std::sort(ms.begin(), ms.end());
+    return ms[ms.size() / 2];
+}
+
+int sweep(char** argv, long minApplied) {
+    const json s = readJson(argv[2]);
+    const json trace = readJson(argv[3]);
+    const json &before = checkpoint(s, argv[4]), &still = checkpoint(s, argv[5]), &swept = checkpoint(s, argv[6]),
+               &done = checkpoint(s, argv[7]);
+    const long duringSweep = swept["extractions_applied"].get<long>() - still["extractions_applied"].get<long>();
+    const long applied = done["extractions_applied"].get<long>() - still["extractions_applied"].get<long>();
+    const double quiet = medianFrameMs(trace, before["frame"].get<long>(), still["frame"].get<long>());
+    const double moving = medianFrameMs(trace, still["frame"].get<long>(), swept["frame"].get<long>());
+    std::printf("sweep: %ld frames, %ld extractions applied during it and %ld by its end; median frame %.2f ms "
+                "while sweeping, %.2f ms before (%.2fx)\n",
+                swept["frame"].get<long>() - still["frame"].get<long>(), duringSweep, applied, moving, quiet,
+                moving / quiet);
+    if (applied < minApplied) {
+        return fail(std::to_string(applied) + " extractions applied, expected at least " + std::to_string(minApplied));
+    }
+    return 0;
+}
+
+int surfaces(const std::string& path) {
+    const json s = readJson(path);
+    std::size_t index = 0;
+    for (const json& surface : s["surfaces"]) {
+        std::printf("%zu %s %s %d %d %s %d\n", index++, surface["id"].dump().c_str(), surface["triangles"].dump().c_str(),
+                    surface.value("tracked", false) ? 1 : 0, surface.value("selected", false) ? 1 : 0,
+                    surface.value("state", std::string("shown")).c_str(), surface.value("visible", true) ? 1 : 0);
+    }
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -200,6 +254,10 @@ int main(int argc, char** argv) {
         if (what == "summary" && argc >= 3) return summary(argc, argv);
         if (what == "profile" && argc == 5) return profile(argv[2], std::atol(argv[4]));
         if (what == "soak" && argc == 7) return soak(argv[2], argv[3], argv[4], std::atol(argv[6]));
+        if (what == "surfaces" && argc == 3) return surfaces(argv[2]);
+        if (what == "sweep" && argc == 10 && std::string(argv[8]) == "--min-applied") {
+            return sweep(argv, std::atol(argv[9]));
+        }
         if (what == "field" && argc == 4) {
             const json s = readJson(argv[2]);
             json value = s;

@@ -15,7 +15,8 @@
 // for when it comes back.
 //
 // Surfaces without seeds. Each surface's footprint is the set of 4x4x4-cell
-// blocks its vertices lie in. A new surface continues the old surface with
+// blocks its vertices lie in (at most 16,384 vertices looked at, evenly
+// spread, so that a large surface costs little). A new surface continues the old surface with
 // which it shares the most blocks; when it shares blocks with several old
 // surfaces that each have at least a quarter of the best one's share (old
 // surfaces that merged), the largest of those (by triangles) is the one it

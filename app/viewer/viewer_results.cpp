@@ -1,0 +1,181 @@
+// Applying the worker's results so that surfaces keep who they are.
+//
+// A result replaces the scene's meshes, not its surfaces. Tracked surfaces
+// (those with a seed) are matched by seed: the worker followed each seed to the
+// new isovalue and says which result surface holds it; the first tracked
+// surface in the list to claim a result surface shows it, a later one whose
+// seed lies on the same surface is Merged into it, and one whose seed found no
+// surface is Gone; either keeps its seed and style for when the isovalue comes
+// back. The other surfaces are matched by footprint (isotrack/follow.h): each
+// new surface continues the old one it shares the most 4x4x4-cell blocks with.
+// The largest new surface continuing an old one takes its place in the list,
+// its id (and so the selection), colour, visibility and offset; further parts
+// of a split take the same style and new ids, right after it; old surfaces
+// nothing continues are dropped; new surfaces that continue nothing come last,
+// largest first, in fresh colours. So the list does not reshuffle under the
+// cursor while the isovalue moves.
+#include <algorithm>
+#include <map>
+
+#include "render/palette.h"
+#include "viewer/script_run.h"
+#include "viewer/viewer.h"
+
+namespace isotrack::viewer {
+namespace {
+
+const char* requestName(ui::Method method) {
+    switch (method) {
+        case ui::Method::Exhaustive: return "marching cubes";
+        case ui::Method::Track: return "re-track seeds";
+        case ui::Method::All: return "every surface";
+    }
+    return "extract";
+}
+
+using Structures = std::vector<std::unique_ptr<SurfaceStructure>>;
+
+void copyLook(const SurfaceStructure& from, SurfaceStructure& to) {
+    to.style().colour = from.style().colour;
+    to.style().visible = from.style().visible;
+    to.userOffset = from.userOffset;
+}
+
+}  // namespace
+
+void Viewer::takeResult() {
+    std::optional<ExtractionResult> result = worker_.poll();
+    if (!result || result->generation < epoch_) return;
+    Profiler::Scope scope(profiler_, Stage::Upload);
+    applyResult(std::move(*result));
+}
+
+void Viewer::applyResult(ExtractionResult result) {
+    profiler_.addWorkerSpan(requestName(result.method), result.started, result.finished);
+    if (!result.error.empty()) {
+        extractionError_ = result.error;
+        if (script_) {
+            const ScriptCommand* command = script_->jobCommand ? script_->jobCommand : script_->current;
+            throw command ? script_->script.error(*command, result.error) : ScriptError(result.error);
+        }
+        status(result.error);
+        return;
+    }
+    extractionError_.clear();
+    const bool newVolume = scene_.setVolume(result.volume);
+    if (newVolume) {  // a new box, and the default view of it; nothing carries over
+        renderer_->setBounds(scene_.volumeBounds());
+        const render::FrameOptions options = frameOptions();
+        camera_ = render::frameBounds(scene_.volumeBounds(), float(options.width) / float(options.height));
+        scene_.clearSurfaces();
+        nextColour_ = 0;
+    }
+    shownIso_ = result.iso;
+    lastExtractMs_ = result.extractMs;
+    ++extractionsApplied_;
+
+    Structures old = std::move(scene_.surfaces());
+    scene_.surfaces().clear();
+    std::vector<bool> claimed(result.surfaces.size(), false);
+    Structures next;
+    next.reserve(old.size() + result.surfaces.size());
+    placeTracked(result, old, claimed);
+    placeUntracked(result, old, claimed, next);
+    for (auto& surface : next) scene_.add(std::move(surface));
+    if (scene_.selected && !scene_.find(*scene_.selected)) scene_.selected.reset();
+}
+
+// Tracked surfaces get their seed's surface, or become Gone or Merged; they stay where they are in `old`.
+void Viewer::placeTracked(ExtractionResult& result, Structures& old, std::vector<bool>& claimed) {
+    std::map<std::uint32_t, const SeedResult*> seeds;
+    for (const SeedResult& seed : result.seeds) seeds[seed.surface] = &seed;
+    std::map<int, std::uint32_t> owner;  // result surface -> the tracked surface showing it
+    for (auto& surface : old) {
+        if (!surface || !surface->tracked()) continue;
+        const auto found = seeds.find(surface->id());
+        if (found == seeds.end()) continue;  // tracked since the request was made: keeps growing
+        const SeedResult& seed = *found->second;
+        if (!seed.seed || seed.index < 0) {
+            surface->setAbsent(Presence::Gone, result.iso);
+            continue;
+        }
+        surface->setSeed(*seed.seed, result.iso);
+        const auto taken = owner.find(seed.index);
+        if (taken != owner.end()) {
+            surface->setAbsent(Presence::Merged, result.iso, taken->second);
+            continue;
+        }
+        owner[seed.index] = surface->id();
+        claimed[std::size_t(seed.index)] = true;
+        surface->replaceSurface(std::move(result.surfaces[std::size_t(seed.index)]),
+                                std::move(result.footprints[std::size_t(seed.index)]));
+    }
+}
+
+// The result's other surfaces continue the untracked ones by footprint; `next` receives the whole list.
+void Viewer::placeUntracked(ExtractionResult& result, Structures& old, std::vector<bool>& claimed, Structures& next) {
+    std::vector<const SurfaceFootprint*> previous, fresh;
+    std::vector<std::size_t> previousSlot, freshIndex;
+    for (std::size_t i = 0; i < old.size(); ++i) {
+        if (old[i]->tracked()) continue;
+        previous.push_back(&old[i]->footprint());
+        previousSlot.push_back(i);
+    }
+    for (std::size_t j = 0; j < result.surfaces.size(); ++j) {
+        if (claimed[j]) continue;
+        fresh.push_back(&result.footprints[j]);
+        freshIndex.push_back(j);
+    }
+    const std::vector<int> match = matchSurfaces(previous, fresh);
+    // The parts continuing each old surface, largest first (result order is largest first in `all`).
+    std::vector<std::vector<std::size_t>> parts(previous.size());
+    std::vector<std::size_t> unmatched;
+    for (std::size_t k = 0; k < fresh.size(); ++k) {
+        if (match[k] >= 0) {
+            parts[std::size_t(match[k])].push_back(k);
+        } else {
+            unmatched.push_back(k);
+        }
+    }
+    for (auto& list : parts) {
+        std::stable_sort(list.begin(), list.end(),
+                         [&](std::size_t a, std::size_t b) { return fresh[a]->triangles > fresh[b]->triangles; });
+    }
+    std::size_t slot = 0;  // index into previous
+    for (std::size_t i = 0; i < old.size(); ++i) {
+        std::unique_ptr<SurfaceStructure>& surface = old[i];
+        if (surface->tracked()) {
+            next.push_back(std::move(surface));
+            continue;
+        }
+        const std::vector<std::size_t>& continuing = parts[slot++];
+        if (continuing.empty()) {
+            if (scene_.selected == surface->id()) scene_.selected.reset();
+            continue;  // vanished at this isovalue
+        }
+        const std::size_t largest = freshIndex[continuing.front()];
+        surface->replaceSurface(std::move(result.surfaces[largest]), std::move(result.footprints[largest]));
+        const SurfaceStructure& look = *surface;
+        next.push_back(std::move(surface));
+        for (std::size_t p = 1; p < continuing.size(); ++p) {  // the other parts of a split, right after it
+            const std::size_t j = freshIndex[continuing[p]];
+            auto part = std::make_unique<SurfaceStructure>(scene_.newId(), std::move(result.surfaces[j]),
+                                                           std::move(result.footprints[j]), look.style().colour);
+            copyLook(look, *part);
+            next.push_back(std::move(part));
+        }
+    }
+    for (std::size_t k : unmatched) {
+        const std::size_t j = freshIndex[k];
+        std::size_t colour = nextColour_++;
+        if (result.method == ui::Method::Exhaustive && j == 0) {  // the exhaustive mesh keeps the first colour
+            colour = 0;
+            nextColour_ = std::max<std::size_t>(nextColour_ - 1, 1);
+        }
+        next.push_back(std::make_unique<SurfaceStructure>(scene_.newId(), std::move(result.surfaces[j]),
+                                                          std::move(result.footprints[j]),
+                                                          render::surfaceColour(colour)));
+    }
+}
+
+}  // namespace isotrack::viewer
