@@ -50,15 +50,15 @@ Viewer::Viewer(const ViewerOptions& options, std::optional<Script> script)
       window_(options.width, options.height, "isotrack", !options.noVsync && !script && !options.deterministic),
       renderer_(std::make_unique<render::Renderer>()),
       profiler_(gl::timerQueriesAvailable()),
-      worker_(extractionThreads(options.threads)) {
-    table_ = parseTableKind(options.table);
-    method_ = parseMethod(options.method);
-    iso_ = options.iso;
+      extraction_(extractionThreads(options.threads)) {
     if (!options.volumePath.empty()) {
-        source_ = SourceSpec::file(options.volumePath, options.raw);
+        extraction_.setSource(SourceSpec::file(options.volumePath, options.raw));
     } else {
-        source_ = SourceSpec::field(options.fieldSpec.empty() ? kDefaultField : options.fieldSpec);
+        extraction_.setSource(SourceSpec::field(options.fieldSpec.empty() ? kDefaultField : options.fieldSpec));
     }
+    extraction_.setTable(parseTableKind(options.table));
+    extraction_.setMethod(parseMethod(options.method));
+    if (options.iso) extraction_.setIso(*options.iso);
     if (options.deterministic) cellsPerFrame_ = kDeterministicCellsPerFrame;
     if (!options.profile.empty()) profiler_.startRecording(options.profile);
     const bool loadNow = !scriptLoadsFirst(script);
@@ -78,7 +78,7 @@ int Viewer::run() {
         } else if (!idle()) {
             idleFrames_ = 0;
         }
-        if (worker_.busy() && !(scene_.anyGrowing() && playing_)) {
+        if (extraction_.busy() && !(scene_.anyGrowing() && playing_)) {
             std::this_thread::sleep_until(lastFrame + kWaitingFramePeriod);
         }
         lastFrame = Profiler::Clock::now();
@@ -90,7 +90,7 @@ int Viewer::run() {
 }
 
 bool Viewer::idle() const {
-    if (script_ || worker_.busy() || (scene_.anyGrowing() && playing_)) return false;
+    if (script_ || extraction_.busy() || (scene_.anyGrowing() && playing_)) return false;
     const ImGuiIO& io = ImGui::GetIO();
     return !(io.MouseDown[0] || io.MouseDown[1] || io.MouseDown[2]);
 }
@@ -213,12 +213,12 @@ void Viewer::frame() {
         for (const auto& surface : scene_.surfaces()) counters.triangles += surface->mesh().triangleCount();
         counters.grownCells = grownCells_;
         counters.growing = scene_.anyGrowing();
-        counters.extracting = worker_.busy();
+        counters.extracting = extraction_.busy();
         counters.cpuBytes = cpuBytes();
         counters.gpuBytes = gpuBytes();
         counters.isoShown = shownIso();
         counters.isoRequested = currentIso();
-        counters.extractionsApplied = extractionsApplied_;
+        counters.extractionsApplied = extraction_.appliedCount();
     }
     profiler_.endFrame(counters);
 }

@@ -23,7 +23,7 @@
 #include "ui/actions.h"
 #include "ui/panel.h"
 #include "viewer/camera_controller.h"
-#include "viewer/extraction_worker.h"
+#include "viewer/extraction_controller.h"
 #include "viewer/picker.h"
 #include "viewer/profiler.h"
 #include "viewer/scene.h"
@@ -129,18 +129,8 @@ private:
     std::vector<ui::Action> actions_;
 
     // What the user asked for; the worker makes it so.
-    ExtractionWorker worker_;
-    std::uint64_t generation_ = 0;
-    std::uint64_t epoch_ = 0;  // results of requests before this one are for another source, method or table
-    std::optional<ExtractionRequest> lastRequest_;
-    std::optional<double> shownIso_;  // of the last result applied
-    std::size_t extractionsApplied_ = 0;
+    ExtractionController extraction_;
     std::size_t nextColour_ = 0;  // palette rank for the next new surface
-    SourceSpec source_;
-    std::optional<double> iso_;
-    TableKind table_ = TableKind::Consistent;
-    ui::Method method_ = ui::Method::All;
-    double lastExtractMs_ = 0.0;
     std::string extractionError_;
     std::string status_;
 

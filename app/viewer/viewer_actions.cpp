@@ -23,25 +23,24 @@ Overloaded(Ts...) -> Overloaded<Ts...>;
 void Viewer::apply(const ui::Action& action) {
     std::visit(Overloaded{
                    [&](const ui::LoadField& a) {
-                       source_ = SourceSpec::field(a.name + ":" + std::to_string(a.size));
-                       iso_.reset();
+                       extraction_.setSource(SourceSpec::field(a.name + ":" + std::to_string(a.size)));
                        submit();
                    },
                    [&](const ui::LoadFile& a) {
-                       source_ = SourceSpec::file(a.path);
-                       iso_.reset();
+                       extraction_.setSource(SourceSpec::file(a.path));
                        submit();
                    },
                    [&](const ui::SetIso& a) {
-                       iso_ = a.iso;
+                       extraction_.setIso(a.iso);
                        submit();
                    },
                    [&](const ui::SetTable& a) {
-                       table_ = a.table == ui::Table::Classic ? TableKind::Classic : TableKind::Consistent;
+                       extraction_.setTable(a.table == ui::Table::Classic ? TableKind::Classic
+                                                                          : TableKind::Consistent);
                        submit();
                    },
                    [&](const ui::SetMethod& a) {
-                       method_ = a.method;
+                       extraction_.setMethod(a.method);
                        submit();
                    },
                    [&](const ui::Growth& a) {

@@ -46,7 +46,7 @@ nlohmann::json Viewer::memoryJson() const {
             {"gpu_bytes", gpuBytes()},
             {"rss_bytes", residentBytes()},
             {"surfaces", scene_.surfaces().size()},
-            {"extractions_applied", extractionsApplied_},
+            {"extractions_applied", extraction_.appliedCount()},
             {"isovalue_shown", shownIso()},
             {"frame", profiler_.frames()}};
 }
@@ -63,14 +63,14 @@ ui::PanelState Viewer::panelState() const {
     ui::ExtractionState& extraction = state.extraction;
     extraction.iso = currentIso();
     extraction.shownIso = shownIso();
-    extraction.table = table_ == TableKind::Classic ? ui::Table::Classic : ui::Table::Consistent;
-    extraction.method = method_;
-    const WorkerProgress progress = worker_.progress();
+    extraction.table = extraction_.table() == TableKind::Classic ? ui::Table::Classic : ui::Table::Consistent;
+    extraction.method = extraction_.method();
+    const WorkerProgress progress = extraction_.progress();
     extraction.busy = progress.busy;
     extraction.busyWhat = progress.what;
     extraction.busySeconds = progress.seconds;
     extraction.fraction = progress.fraction;
-    extraction.lastMs = lastExtractMs_;
+    extraction.lastMs = extraction_.lastMs();
     extraction.error = extractionError_;
 
     ui::GrowthState& growth = state.growth;
@@ -140,10 +140,10 @@ nlohmann::json Viewer::summary() const {
         {"default_isovalue", scene_.volume() ? scene_.volume()->defaultIso : 0.0},
         {"isovalue", currentIso()},
         {"isovalue_shown", shownIso()},
-        {"extractions_applied", extractionsApplied_},
-        {"extractions_cancelled", worker_.cancelledCount()},
-        {"table", tableKindName(table_)},
-        {"method", ui::methodName(method_)},
+        {"extractions_applied", extraction_.appliedCount()},
+        {"extractions_cancelled", extraction_.cancelledCount()},
+        {"table", tableKindName(extraction_.table())},
+        {"method", ui::methodName(extraction_.method())},
         {"surfaces", surfaces},
         {"cpu_bytes", cpuBytes()},
         {"cpu_bytes_detail",
@@ -158,7 +158,7 @@ nlohmann::json Viewer::summary() const {
         {"rss_bytes", residentBytes()},
         {"frames", profiler_.frames()},
         {"median_frame_ms", profiler_.medianFrameMs()},
-        {"extraction_ms", lastExtractMs_},
+        {"extraction_ms", extraction_.lastMs()},
         {"gpu_timer_queries", profiler_.gpuTimersAvailable()},
         {"renderer", window_.info().renderer},
         {"window", {framebufferWidth_, framebufferHeight_}},

@@ -44,8 +44,8 @@ void copyLook(const SurfaceStructure& from, SurfaceStructure& to) {
 }  // namespace
 
 void Viewer::takeResult() {
-    std::optional<ExtractionResult> result = worker_.poll();
-    if (!result || result->generation < epoch_) return;
+    std::optional<ExtractionResult> result = extraction_.take();
+    if (!result) return;
     Profiler::Scope scope(profiler_, Stage::Upload);
     applyResult(std::move(*result));
 }
@@ -70,9 +70,7 @@ void Viewer::applyResult(ExtractionResult result) {
         scene_.clearSurfaces();
         nextColour_ = 0;
     }
-    shownIso_ = result.iso;
-    lastExtractMs_ = result.extractMs;
-    ++extractionsApplied_;
+    extraction_.applied(result);
 
     Structures old = std::move(scene_.surfaces());
     scene_.surfaces().clear();

@@ -9,11 +9,11 @@
 
 namespace isotrack::viewer {
 double Viewer::currentIso() const {
-    if (iso_) return *iso_;
+    if (extraction_.iso()) return *extraction_.iso();
     return scene_.volume() ? scene_.volume()->defaultIso : 0.0;
 }
 
-double Viewer::shownIso() const { return shownIso_.value_or(currentIso()); }
+double Viewer::shownIso() const { return extraction_.shownIso().value_or(currentIso()); }
 
 std::vector<SeedRequest> Viewer::trackedSeeds() const {
     std::vector<SeedRequest> seeds;
@@ -24,17 +24,7 @@ std::vector<SeedRequest> Viewer::trackedSeeds() const {
 }
 
 void Viewer::submit() {
-    ExtractionRequest request;
-    request.generation = ++generation_;
-    request.source = source_;
-    request.iso = iso_;
-    request.table = table_;
-    request.method = method_;
-    request.seeds = trackedSeeds();
-    if (!lastRequest_ || supersedes(request, *lastRequest_)) epoch_ = request.generation;
-    lastRequest_ = request;
-    lastRequest_->seeds.clear();
-    worker_.submit(std::move(request));
+    extraction_.submit(trackedSeeds());
     if (script_) script_->jobCommand = script_->current;
 }
 
@@ -70,7 +60,7 @@ void Viewer::click(float x, float y, bool track) {
         Profiler::Scope scope(profiler_, Stage::Pick);
         hit = picker_.pickSurface(scene_, *renderer_, view, x, y);
     }
-    const bool tracking = track || method_ == ui::Method::Track;
+    const bool tracking = track || extraction_.method() == ui::Method::Track;
     nlohmann::json pick = {{"view_pixel", {x, y}},
                            {"hit_surface", hit.surface ? nlohmann::json(*hit.surface) : nlohmann::json(nullptr)},
                            {"track", tracking}};
@@ -118,12 +108,14 @@ void Viewer::trackFrom(const Vec3d& point, std::optional<std::uint32_t> hit) {
         }
     }
     SurfaceStructure* clicked = hit ? scene_.find(*hit) : nullptr;
-    if (clicked != nullptr && !clicked->tracked() && method_ == ui::Method::All && clicked->containsEdge(seed)) {
-        clicked->startTracking(volume, iso, table_, seed, point);
+    const TableKind table = extraction_.table();
+    if (clicked != nullptr && !clicked->tracked() && extraction_.method() == ui::Method::All &&
+        clicked->containsEdge(seed)) {
+        clicked->startTracking(volume, iso, table, seed, point);
         scene_.selected = clicked->id();
         picks_.back()["tracked_surface"] = clicked->id();
     } else {
-        auto surface = std::make_unique<SurfaceStructure>(scene_.newId(), volume, iso, table_, seed, point,
+        auto surface = std::make_unique<SurfaceStructure>(scene_.newId(), volume, iso, table, seed, point,
                                                           render::surfaceColour(nextColour_++));
         scene_.selected = surface->id();
         picks_.back()["tracked_surface"] = surface->id();
@@ -132,7 +124,7 @@ void Viewer::trackFrom(const Vec3d& point, std::optional<std::uint32_t> hit) {
     scene_.refreshOffsets();
     playing_ = true;
     // A re-extraction on its way (an isovalue change) must include this seed.
-    if (worker_.busy()) submit();
+    if (extraction_.busy()) submit();
 }
 
 }  // namespace isotrack::viewer

@@ -53,10 +53,10 @@ bool Viewer::waitDone() {
             --run.framesLeft;
             return false;
         case ScriptRun::Wait::Idle:
-            if (worker_.busy() || (scene_.anyGrowing() && playing_)) return false;
+            if (extraction_.busy() || (scene_.anyGrowing() && playing_)) return false;
             break;
         case ScriptRun::Wait::Loaded:
-            if (worker_.busy() || !scene_.volume() || scene_.volume()->source != source_) return false;
+            if (extraction_.busy() || !scene_.volume() || scene_.volume()->source != extraction_.source()) return false;
             break;
         case ScriptRun::Wait::Screenshot:
             if (screenshotPath_) return false;
@@ -69,7 +69,7 @@ bool Viewer::waitDone() {
             return false;
         }
         case ScriptRun::Wait::Click: {
-            if (worker_.busy()) return false;
+            if (extraction_.busy()) return false;
             const render::FrameOptions options = frameOptions();
             const float x = std::min(run.clickX * float(options.width), float(options.width - 1));
             const float y = std::min(run.clickY * float(options.height), float(options.height - 1));
@@ -102,9 +102,8 @@ bool Viewer::runCommand(const ScriptCommand& c) {
     };
     if (name == "load" || name == "field") {
         if (name == "field") parseFieldSpec(c.text);  // a bad spec fails here, on its line
-        source_ = name == "load" ? SourceSpec::file(scriptInputPath(run.script, c.text))
-                                 : SourceSpec::field(c.text);
-        iso_.reset();
+        extraction_.setSource(name == "load" ? SourceSpec::file(scriptInputPath(run.script, c.text))
+                                             : SourceSpec::field(c.text));
         submit();
         return waitFor(ScriptRun::Wait::Loaded);
     }
@@ -121,7 +120,7 @@ bool Viewer::runCommand(const ScriptCommand& c) {
         run.wait = ScriptRun::Wait::Click;
         return waitDone();  // clicks now when nothing is being extracted
     } else if (name == "track") {
-        if (worker_.busy()) {  // as a click does: on the surfaces the worker is making
+        if (extraction_.busy()) {  // as a click does: on the surfaces the worker is making
             --run.next;
             return waitFor(ScriptRun::Wait::Idle);
         }

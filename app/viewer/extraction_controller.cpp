@@ -1,0 +1,35 @@
+#include "viewer/extraction_controller.h"
+
+namespace isotrack::viewer {
+
+void ExtractionController::setSource(SourceSpec source) {
+    source_ = std::move(source);
+    iso_.reset();
+}
+
+void ExtractionController::submit(std::vector<SeedRequest> seeds) {
+    ExtractionRequest request;
+    request.generation = ++generation_;
+    request.source = source_;
+    request.iso = iso_;
+    request.table = table_;
+    request.method = method_;
+    if (!lastRequest_ || supersedes(request, *lastRequest_)) epoch_ = request.generation;
+    lastRequest_ = request;
+    request.seeds = std::move(seeds);
+    worker_.submit(std::move(request));
+}
+
+std::optional<ExtractionResult> ExtractionController::take() {
+    std::optional<ExtractionResult> result = worker_.poll();
+    if (result && result->generation < epoch_) result.reset();
+    return result;
+}
+
+void ExtractionController::applied(const ExtractionResult& result) {
+    shownIso_ = result.iso;
+    lastMs_ = result.extractMs;
+    ++applied_;
+}
+
+}  // namespace isotrack::viewer

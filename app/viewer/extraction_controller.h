@@ -1,0 +1,64 @@
+#pragma once
+// What the user asked to extract, and the worker that makes it so. The viewer
+// says what it wants (source, isovalue, table, method) and submits it with
+// every tracked surface's seed; take() hands back the newest finished result
+// that is still wanted. A request for another source, method or table makes
+// every result of an older request void (the worker cancels the work); one for
+// another isovalue or other seeds does not, so results keep arriving while the
+// isovalue is dragged. It also keeps what is shown: the isovalue of the last
+// result applied and how many results were applied.
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "viewer/extraction_worker.h"
+
+namespace isotrack::viewer {
+
+class ExtractionController {
+public:
+    explicit ExtractionController(int threads) : worker_(threads) {}
+
+    // ---- what is wanted ----
+    const SourceSpec& source() const { return source_; }
+    void setSource(SourceSpec source);  // also back to the source's default isovalue
+    const std::optional<double>& iso() const { return iso_; }  // nullopt: the source's default
+    void setIso(double iso) { iso_ = iso; }
+    TableKind table() const { return table_; }
+    void setTable(TableKind table) { table_ = table; }
+    ui::Method method() const { return method_; }
+    void setMethod(ui::Method method) { method_ = method; }
+
+    // Sends what is wanted, with the tracked surfaces' seeds.
+    void submit(std::vector<SeedRequest> seeds);
+    // The newest finished result that is not void, if one is waiting.
+    std::optional<ExtractionResult> take();
+
+    // ---- what is shown ----
+    void applied(const ExtractionResult& result);  // the viewer shows this result now
+    const std::optional<double>& shownIso() const { return shownIso_; }
+    std::size_t appliedCount() const { return applied_; }
+    double lastMs() const { return lastMs_; }
+
+    WorkerProgress progress() const { return worker_.progress(); }
+    bool busy() const { return worker_.busy(); }
+    std::size_t cancelledCount() const { return worker_.cancelledCount(); }
+
+private:
+    ExtractionWorker worker_;
+    SourceSpec source_;
+    std::optional<double> iso_;
+    TableKind table_ = TableKind::Consistent;
+    ui::Method method_ = ui::Method::All;
+
+    std::uint64_t generation_ = 0;
+    std::uint64_t epoch_ = 0;  // results of requests before this one are void
+    std::optional<ExtractionRequest> lastRequest_;
+
+    std::optional<double> shownIso_;
+    std::size_t applied_ = 0;
+    double lastMs_ = 0.0;
+};
+
+}  // namespace isotrack::viewer
