@@ -6,11 +6,10 @@
 #include <cstdio>
 #include <thread>
 
-#include "gl/framebuffer.h"
-#include "gl/state.h"
 #include "gl/timer_query.h"
 #include "isotrack/errors.h"
 #include "isotrack/io.h"
+#include "render/window_frame.h"
 #include "viewer/script_run.h"
 
 namespace isotrack::viewer {
@@ -135,9 +134,7 @@ void Viewer::drawView() {
         scene_.draw(*renderer_, render::Renderer::frameView(camera_, cached, scene_.drawBounds()), cached);
         profiler_.endGpu();
     }
-    gl::Framebuffer::bindDefault();
-    gl::setViewport(0, 0, framebufferWidth_, framebufferHeight_);
-    gl::clear(glm::vec4(window.background, 1.0f));
+    render::beginWindowFrame(framebufferWidth_, framebufferHeight_, window.background);
     viewCache_.present(window.x, window.y);
 }
 

@@ -1,6 +1,6 @@
 // What the viewer reports: the panel's plain state, memory, the --json summary
 // and screenshots.
-#include "gl/framebuffer.h"
+#include "render/window_frame.h"
 #include "isotrack/fields.h"
 #include "render/image.h"
 #include "viewer/memory.h"
@@ -169,8 +169,7 @@ nlohmann::json Viewer::summary() const {
 }
 
 void Viewer::writeScreenshot(const std::string& path) const {
-    const std::vector<std::uint8_t> pixels = gl::Framebuffer::readDefaultRgba(framebufferWidth_, framebufferHeight_);
-    render::writePng(render::imageFromBottomUp(framebufferWidth_, framebufferHeight_, pixels), path);
+    render::writePng(render::readWindowImage(framebufferWidth_, framebufferHeight_), path);
 }
 
 }  // namespace isotrack::viewer
