@@ -4,7 +4,7 @@
 set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
-packages=(cmake g++ make pkg-config libglfw3-dev libglm-dev libosmesa6-dev catch2 libstb-dev zlib1g-dev
+packages=(cmake g++ make pkg-config libglfw3-dev libglm-dev libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri catch2 libstb-dev zlib1g-dev
           xvfb xauth libcli11-dev nlohmann-json3-dev libbenchmark-dev invesalius-examples
           clang libclang-rt-14-dev)
 missing=()

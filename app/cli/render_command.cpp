@@ -1,10 +1,12 @@
-// isotrack render: a PNG of the isosurfaces, drawn headless through OSMesa.
+// isotrack render: a PNG of the isosurfaces, drawn headless through EGL (a GPU
+// or Mesa's surfaceless platform) or OSMesa; see docs/headless.md.
 #include <CLI/CLI.hpp>
 #include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <vector>
 
@@ -35,6 +37,8 @@ struct RenderOptions {
     bool wireframe = false;
     bool noBox = false;
     std::optional<std::size_t> select;
+    std::string gl = "auto";
+    bool json = false;
 };
 
 using Clock = std::chrono::steady_clock;
@@ -122,23 +126,53 @@ int runRender(const RenderOptions& options) {
             " (0 is the largest)");
     }
 
-    const auto start = Clock::now();
-    const headless::HeadlessContext context;
+    auto start = Clock::now();
+    const headless::HeadlessContext context(headless::parseBackend(options.gl));
+    const double contextMs = millisecondsSince(start);
+    if (!context.fallbackReason().empty()) {
+        std::fprintf(stderr, "isotrack: --gl auto: %s; drawing with OSMesa\n", context.fallbackReason().c_str());
+    }
     std::vector<const Mesh*> surfaces;
     std::size_t triangles = 0;
     for (const Mesh& mesh : meshes) {
         surfaces.push_back(&mesh);
         triangles += mesh.triangleCount();
     }
+    start = Clock::now();
     const render::Snapshot snapshot =
         render::renderSnapshot(surfaces, render::volumeBounds(source.volume), snapshotOptions);
-    const double renderMs = millisecondsSince(start);
+    const double drawMs = millisecondsSince(start);
     render::writePng(snapshot.image, options.out);
 
-    std::printf("%s: %dx%d, %s %s, %zu surface%s, %zu triangles, --camera %s; extract %.1f ms, render %.1f ms (%s)\n",
+    const gl::ContextInfo& info = context.info();
+    const char* backend = headless::backendName(context.backend());
+    if (options.json) {
+        const nlohmann::json report{{"out", options.out},
+                                    {"width", snapshot.image.width},
+                                    {"height", snapshot.image.height},
+                                    {"source", source.name},
+                                    {"method", options.method},
+                                    {"surfaces", meshes.size()},
+                                    {"triangles", triangles},
+                                    {"camera", render::formatCamera(snapshot.camera)},
+                                    {"backend", backend},
+                                    {"platform", context.platform()},
+                                    {"renderer", info.renderer},
+                                    {"version", info.version},
+                                    {"vendor", info.vendor},
+                                    {"extract_ms", extractMs},
+                                    {"context_ms", contextMs},
+                                    {"draw_ms", drawMs}};
+        std::printf("%s\n", report.dump(2).c_str());
+        return 0;
+    }
+    std::printf("%s: %dx%d, %s %s, %zu surface%s, %zu triangles, --camera %s; extract %.1f ms, render %.1f ms "
+                "(context %.1f, draw %.1f)\n",
                 options.out.c_str(), snapshot.image.width, snapshot.image.height, source.name.c_str(),
                 options.method.c_str(), meshes.size(), meshes.size() == 1 ? "" : "s", triangles,
-                render::formatCamera(snapshot.camera).c_str(), extractMs, renderMs, context.info().renderer.c_str());
+                render::formatCamera(snapshot.camera).c_str(), extractMs, contextMs + drawMs, contextMs, drawMs);
+    std::printf("gl: %s, %s: %s, OpenGL %s\n", backend, context.platform().c_str(), info.renderer.c_str(),
+                info.version.c_str());
     return 0;
 }
 
@@ -147,7 +181,7 @@ int runRender(const RenderOptions& options) {
 RunCommand addRenderCommand(CLI::App& app) {
     auto options = std::make_shared<RenderOptions>();
     CLI::App* command =
-        app.add_subcommand("render", "Draw the isosurfaces into a PNG, headless (OSMesa, no display needed)");
+        app.add_subcommand("render", "Draw the isosurfaces into a PNG, headless (EGL or OSMesa, no display needed)");
     addSourceOptions(*command, options->source);
     command
         ->add_option("--method", options->method,
@@ -166,6 +200,14 @@ RunCommand addRenderCommand(CLI::App& app) {
     command->add_flag("--wireframe", options->wireframe, "Draw triangle edges over the surfaces");
     command->add_flag("--no-box", options->noBox, "Leave out the volume's bounding box");
     command->add_option("--select", options->select, "Highlight surface INDEX (0 = the largest)");
+    command
+        ->add_option("--gl", options->gl,
+                     "auto: an EGL GPU device if there is one, else OSMesa; egl: an EGL device, else Mesa's "
+                     "surfaceless EGL (no display either way); osmesa: Mesa on the CPU, the golden images' "
+                     "reference (default auto)")
+        ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
+    command->add_flag("--json", options->json,
+                      "Print one JSON object on stdout: sizes, triangles, GL backend, renderer, version, timings");
     return [options] { return runRender(*options); };
 }
 

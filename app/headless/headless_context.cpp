@@ -1,66 +1,93 @@
 #include "headless/headless_context.h"
 
-#include <array>
-#include <cstdint>
-
-#ifdef ISOTRACK_HAVE_OSMESA
-#include <GL/osmesa.h>
-#endif
+#include "headless/egl_context.h"
+#include "headless/osmesa_context.h"
 
 namespace isotrack::headless {
 
-#ifdef ISOTRACK_HAVE_OSMESA
-
-struct HeadlessContext::Impl {
-    OSMesaContext context = nullptr;
-    std::array<std::uint8_t, 4> buffer{};  // 1x1 RGBA; rendering goes to framebuffer objects
-    gl::ContextInfo info;
-};
-
-HeadlessContext::HeadlessContext() : impl_(std::make_unique<Impl>()) {
-    const int attributes[] = {OSMESA_FORMAT,
-                              OSMESA_RGBA,
-                              OSMESA_DEPTH_BITS,
-                              24,
-                              OSMESA_STENCIL_BITS,
-                              8,
-                              OSMESA_PROFILE,
-                              OSMESA_CORE_PROFILE,
-                              OSMESA_CONTEXT_MAJOR_VERSION,
-                              3,
-                              OSMESA_CONTEXT_MINOR_VERSION,
-                              3,
-                              0};
-    impl_->context = OSMesaCreateContextAttribs(attributes, nullptr);
-    if (impl_->context == nullptr) throw gl::Error("OSMesa could not create an OpenGL 3.3 core context");
-    if (!OSMesaMakeCurrent(impl_->context, impl_->buffer.data(), GL_UNSIGNED_BYTE, 1, 1)) {
-        OSMesaDestroyContext(impl_->context);
-        throw gl::Error("OSMesa could not make its context current");
+const char* backendName(Backend backend) {
+    switch (backend) {
+        case Backend::Auto: return "auto";
+        case Backend::Egl: return "egl";
+        case Backend::OSMesa: return "osmesa";
     }
-    try {
-        impl_->info = gl::loadFunctions(OSMesaGetProcAddress);
-    } catch (...) {
-        OSMesaDestroyContext(impl_->context);
-        throw;
-    }
+    return "?";
 }
 
-HeadlessContext::~HeadlessContext() { OSMesaDestroyContext(impl_->context); }
+Backend parseBackend(const std::string& text) {
+    for (Backend backend : {Backend::Auto, Backend::Egl, Backend::OSMesa}) {
+        if (text == backendName(backend)) return backend;
+    }
+    throw gl::Error("GL backend \"" + text + "\": expected auto, egl or osmesa");
+}
 
-#else
+bool isSoftwareRenderer(const std::string& renderer) {
+    for (const char* name : {"llvmpipe", "softpipe", "swrast", "SwiftShader"}) {
+        if (renderer.find(name) != std::string::npos) return true;
+    }
+    return false;
+}
 
 struct HeadlessContext::Impl {
+    // At most one of the two is set; `info` describes it.
+    std::unique_ptr<EglContext> egl;
+    std::unique_ptr<OsmesaContext> osmesa;
     gl::ContextInfo info;
+    std::string platform, fallbackReason;
+
+    void useEgl(EglChoice choice) {
+        egl = std::make_unique<EglContext>(choice);
+        info = gl::loadFunctions(EglContext::procAddress);
+        platform = egl->platform();
+    }
+
+    void useOsmesa() {
+        osmesa = std::make_unique<OsmesaContext>();
+        info = gl::loadFunctions(OsmesaContext::procAddress);
+        platform = "OSMesa";
+    }
+
+    // An EGL hardware context, or the reason there is none.
+    std::string tryEglHardware() {
+        try {
+            useEgl(EglChoice::HardwareOnly);
+        } catch (const gl::Error& error) {
+            egl.reset();
+            return error.what();
+        }
+        // A device that is not flagged as software may still rasterise on the CPU.
+        if (!isSoftwareRenderer(info.renderer)) return {};
+        std::string why = platform + " renders with " + info.renderer;
+        egl.reset();
+        info = {};
+        return why;
+    }
 };
 
-HeadlessContext::HeadlessContext() {
-    throw gl::Error("headless rendering is unavailable: isotrack was built without OSMesa (libosmesa6-dev)");
+HeadlessContext::HeadlessContext(Backend requested) : impl_(std::make_unique<Impl>()) {
+    switch (requested) {
+        case Backend::Egl: impl_->useEgl(EglChoice::HardwareOrSoftware); break;
+        case Backend::OSMesa: impl_->useOsmesa(); break;
+        case Backend::Auto:
+            impl_->fallbackReason = impl_->tryEglHardware();
+            if (impl_->fallbackReason.empty()) break;
+            try {
+                impl_->useOsmesa();
+            } catch (const gl::Error& error) {
+                throw gl::Error(std::string(error.what()) + "; and no EGL hardware context: " + impl_->fallbackReason);
+            }
+            break;
+    }
 }
 
 HeadlessContext::~HeadlessContext() = default;
 
-#endif
-
 const gl::ContextInfo& HeadlessContext::info() const { return impl_->info; }
+
+Backend HeadlessContext::backend() const { return impl_->egl ? Backend::Egl : Backend::OSMesa; }
+
+const std::string& HeadlessContext::platform() const { return impl_->platform; }
+
+const std::string& HeadlessContext::fallbackReason() const { return impl_->fallbackReason; }
 
 }  // namespace isotrack::headless

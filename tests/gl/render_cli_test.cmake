@@ -1,10 +1,10 @@
-# `isotrack render` writes byte-identical PNGs for identical inputs, and refuses
+# `isotrack render --gl osmesa` writes byte-identical PNGs for identical inputs, and refuses
 # bad sizes with a one-line message and exit status 1.
 #   cmake -DISOTRACK=<isotrack> -DOUT_DIR=<dir> -P render_cli_test.cmake
 file(MAKE_DIRECTORY ${OUT_DIR})
 foreach(run a b)
   execute_process(
-    COMMAND ${ISOTRACK} render --field blobs:32 --method all --size 160x120 --wireframe --out ${OUT_DIR}/${run}.png
+    COMMAND ${ISOTRACK} render --gl osmesa --field blobs:32 --method all --size 160x120 --wireframe --out ${OUT_DIR}/${run}.png
     RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT status EQUAL 0)
     message(FATAL_ERROR "isotrack render failed (${status}): ${out}${err}")
