@@ -42,11 +42,11 @@ struct GoldenTolerance {
 // Under EGL on llvmpipe (Mesa's surfaceless platform) the golden images match
 // OSMesa's exactly, so each test keeps its own tolerance. On a GPU the
 // baselines are still OSMesa's and the GPU rasterises edges and lines by its
-// own rules: every test's tolerance is raised to at least these. They are a
-// starting value, not yet measured on a GPU; scripts/gpu_check.sh prints the
-// differences (ISOTRACK_GOLDEN_REPORT=1) to set them from. See docs/headless.md.
+// own rules: every test's tolerance is raised to at least these. On an NVIDIA
+// H100 (driver 580) at most 0.008% of a golden image's pixels differed by more
+// than 8/255 (docs/headless.md); 0.5% leaves sixty times that.
 constexpr int kGpuChannelTolerance = 8;
-constexpr double kGpuDifferentFraction = 0.02;
+constexpr double kGpuDifferentFraction = 0.005;
 
 // `tolerance` as used with the current context's backend (above).
 GoldenTolerance forCurrentBackend(GoldenTolerance tolerance);
