@@ -475,14 +475,14 @@ PYBIND11_MODULE(isotrack, m) {
     bindSurface(m);
     const Zyx ones{1, 1, 1}, zeros{0, 0, 0};
     m.def("marching_cubes", &marchingCubesPy, kMarchingCubesDoc, py::arg("volume"), py::arg("level") = py::none(),
-          py::kw_only(), py::arg("spacing") = ones, py::arg("method") = "mc", py::arg("table") = "consistent",
-          py::arg("threads") = 0, py::arg("origin") = zeros);
+          py::kw_only(), py::arg_v("spacing", ones, "(1.0, 1.0, 1.0)"), py::arg("method") = "mc", py::arg("table") = "consistent",
+          py::arg("threads") = 0, py::arg_v("origin", zeros, "(0.0, 0.0, 0.0)"));
     m.def("track", &trackPy, kTrackDoc, py::arg("volume"), py::arg("level"), py::kw_only(),
-          py::arg("seed") = py::none(), py::arg("seed_edge") = py::none(), py::arg("spacing") = ones,
-          py::arg("table") = "consistent", py::arg("threads") = 0, py::arg("origin") = zeros);
+          py::arg("seed") = py::none(), py::arg("seed_edge") = py::none(), py::arg_v("spacing", ones, "(1.0, 1.0, 1.0)"),
+          py::arg("table") = "consistent", py::arg("threads") = 0, py::arg_v("origin", zeros, "(0.0, 0.0, 0.0)"));
     m.def("surfaces", &surfacesPy, kSurfacesDoc, py::arg("volume"), py::arg("level"), py::kw_only(),
-          py::arg("spacing") = ones, py::arg("table") = "consistent", py::arg("threads") = 0,
-          py::arg("origin") = zeros);
+          py::arg_v("spacing", ones, "(1.0, 1.0, 1.0)"), py::arg("table") = "consistent", py::arg("threads") = 0,
+          py::arg_v("origin", zeros, "(0.0, 0.0, 0.0)"));
     m.def("load", &loadPy, kLoadDoc, py::arg("path"));
     m.def("write_ply", &writePy<writePlyMesh>, "Writes a Surface as binary little-endian PLY (x, y, z order, as files have it).",
           py::arg("surface"), py::arg("path"));
