@@ -38,8 +38,11 @@ std::size_t scalarTypeSize(ScalarType type) {
     return 0;
 }
 
-Volume::Volume(Dims dims, ScalarType type, Vec3d spacing, Vec3d origin)
-    : dims_(dims), type_(type), spacing_(spacing), origin_(origin) {
+namespace {
+
+// The byte size of dims samples of `type`; throws InputError when a dimension is
+// out of range or the size would exceed kMaxVolumeBytes.
+std::size_t checkedByteSize(const Dims& dims, ScalarType type) {
     const std::string dimsText =
         std::to_string(dims[0]) + " x " + std::to_string(dims[1]) + " x " + std::to_string(dims[2]);
     if (dims[0] < 1 || dims[1] < 1 || dims[2] < 1)
@@ -52,8 +55,26 @@ Volume::Volume(Dims dims, ScalarType type, Vec3d spacing, Vec3d origin)
     if (nx > maxSamples || ny > maxSamples / nx || nz > maxSamples / (nx * ny))
         throw InputError("volume: " + dimsText + " " + scalarTypeName(type) + " samples exceed the " +
                          std::to_string(kMaxVolumeBytes >> 30) + " GiB limit");
+    return std::size_t(nx * ny * nz) * scalarTypeSize(type);
+}
+
+}  // namespace
+
+Volume::Volume(Dims dims, ScalarType type, Vec3d spacing, Vec3d origin)
+    : dims_(dims), type_(type), spacing_(spacing), origin_(origin) {
     // Zeroed samples, on huge pages where the kernel offers them (huge_pages.h).
-    detail::resizeOnHugePages(bytes_, std::size_t(nx * ny * nz) * scalarTypeSize(type));
+    detail::resizeOnHugePages(bytes_, checkedByteSize(dims, type));
+}
+
+Volume Volume::view(Dims dims, ScalarType type, const void* samples, Vec3d spacing, Vec3d origin) {
+    Volume volume;
+    volume.viewBytes_ = checkedByteSize(dims, type);
+    volume.dims_ = dims;
+    volume.type_ = type;
+    volume.spacing_ = spacing;
+    volume.origin_ = origin;
+    volume.view_ = static_cast<const std::byte*>(samples);
+    return volume;
 }
 
 namespace {
@@ -93,7 +114,7 @@ void Volume::setValue(int x, int y, int z, double v) {
 }
 
 std::array<double, 2> Volume::range() const {
-    const std::size_t n = bytes_.empty() ? 0 : sampleCount();
+    const std::size_t n = byteSize() == 0 ? 0 : sampleCount();
     return visitSamples(*this, [n](const auto* samples) {
         double lo = std::numeric_limits<double>::infinity();
         double hi = -lo;

@@ -120,3 +120,24 @@ TEST_CASE("sample histogram: finite samples in equal bins, the ends clamped", "[
     CHECK(sampleHistogram(volume, {1.0, 3.0}, 2) == std::vector<std::uint64_t>{3, 2});
     CHECK(sampleHistogram(volume, {2.0, 2.0}, 3) == std::vector<std::uint64_t>{5, 0, 0});
 }
+
+TEST_CASE("a view reads the caller's samples in place", "[core][volume]") {
+    Volume owned({5, 4, 3}, ScalarType::Int16, {0.5, 1, 2}, {1, 2, 3});
+    for (int z = 0; z < 3; ++z)
+        for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 5; ++x) owned.setValue(x, y, z, x - 2 * y + 7 * z);
+    const Volume view = Volume::view(owned.dims(), owned.type(), owned.bytes(), owned.spacing(), owned.origin());
+    CHECK(view.isView());
+    CHECK_FALSE(owned.isView());
+    CHECK(view.bytes() == owned.bytes());  // the same memory, not a copy
+    CHECK(view.byteSize() == owned.byteSize());
+    CHECK(view.spacing() == owned.spacing());
+    CHECK(view.origin() == owned.origin());
+    CHECK(view.range() == owned.range());
+    CHECK(view.value(4, 3, 2) == owned.value(4, 3, 2));
+    const Volume copy = view;  // copies of a view still read the caller's samples
+    CHECK(copy.bytes() == owned.bytes());
+    const std::int16_t sample = 0;
+    CHECK_THROWS_AS(Volume::view({0, 4, 3}, ScalarType::Int16, &sample), InputError);
+    CHECK_THROWS_AS(Volume::view({kMaxDimension + 1, 1, 1}, ScalarType::Int16, &sample), InputError);
+}

@@ -4,6 +4,7 @@
 // Samples are stored x-fastest: index = x + nx * (y + ny * z). World position of
 // sample (i, j, k) is origin + (i * sx, j * sy, k * sz).
 #include <array>
+#include <cassert>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -31,6 +32,14 @@ public:
     // Allocates dims[0]*dims[1]*dims[2] zeroed samples. Throws InputError when a
     // dimension is not positive or the sample count would overflow.
     Volume(Dims dims, ScalarType type, Vec3d spacing = {1, 1, 1}, Vec3d origin = {0, 0, 0});
+    // A Volume over samples it does not own (a numpy array, a mapped file), laid
+    // out as above: nothing is copied, so the caller keeps them alive and
+    // unchanged while this Volume or a copy of it is in use. Dimensions are
+    // checked as by the constructor. A view is read-only: its non-const
+    // accessors are not to be called.
+    static Volume view(Dims dims, ScalarType type, const void* samples, Vec3d spacing = {1, 1, 1},
+                       Vec3d origin = {0, 0, 0});
+    bool isView() const { return view_ != nullptr; }
 
     const Dims& dims() const { return dims_; }
     ScalarType type() const { return type_; }
@@ -42,18 +51,21 @@ public:
     std::size_t sampleCount() const {
         return std::size_t(dims_[0]) * std::size_t(dims_[1]) * std::size_t(dims_[2]);
     }
-    std::size_t byteSize() const { return bytes_.size(); }
+    std::size_t byteSize() const { return view_ ? viewBytes_ : bytes_.size(); }
     std::size_t index(int x, int y, int z) const {
         return std::size_t(x) + std::size_t(dims_[0]) * (std::size_t(y) + std::size_t(dims_[1]) * std::size_t(z));
     }
 
-    std::byte* bytes() { return bytes_.data(); }
-    const std::byte* bytes() const { return bytes_.data(); }
+    std::byte* bytes() {
+        assert(!view_ && "a view's samples are read-only");
+        return bytes_.data();
+    }
+    const std::byte* bytes() const { return view_ ? view_ : bytes_.data(); }
 
     template <class T>
-    T* data() { return reinterpret_cast<T*>(bytes_.data()); }
+    T* data() { return reinterpret_cast<T*>(bytes()); }
     template <class T>
-    const T* data() const { return reinterpret_cast<const T*>(bytes_.data()); }
+    const T* data() const { return reinterpret_cast<const T*>(bytes()); }
 
     // Sample as double, whatever the native type. For tests and tools, not inner loops.
     double value(int x, int y, int z) const;
@@ -68,6 +80,8 @@ private:
     Vec3d spacing_{1, 1, 1};
     Vec3d origin_{0, 0, 0};
     std::vector<std::byte> bytes_;
+    const std::byte* view_ = nullptr;  // the samples of a view, bytes_ then empty
+    std::size_t viewBytes_ = 0;
 };
 
 // Calls fn(const T* samples) with the volume's samples in their native type.

@@ -1,0 +1,62 @@
+"""The module gives the same triangles and measures as the isotrack command line."""
+import json
+
+import numpy as np
+import pytest
+
+import isotrack
+from conftest import read_ply
+
+
+@pytest.fixture(scope="module")
+def blobs(cli, tmp_path_factory):
+    path = tmp_path_factory.mktemp("blobs") / "blobs.nrrd"
+    cli("field", "blobs:32", "--out", path)
+    return path
+
+
+def extract_json(cli, *args):
+    return json.loads(cli("extract", "--json", *args))
+
+
+def test_marching_cubes_matches_cli_vertex_for_vertex(cli, blobs, tmp_path):
+    report = extract_json(cli, "--volume", blobs, "--iso", "0.5", "--threads", "1", "--out", tmp_path / "cli.ply")
+    samples, spacing, origin = isotrack.load(str(blobs))
+    verts, faces, normals, values = isotrack.marching_cubes(samples, 0.5, spacing=spacing, origin=origin, threads=1)
+    assert report["triangles"] > 1000
+    assert (len(faces), len(verts)) == (report["triangles"], report["vertices"])
+    cli_positions, cli_faces = read_ply(tmp_path / "cli.ply")
+    # One thread: the same vertices in the same order; the module's are (z, y, x).
+    np.testing.assert_array_equal(verts[:, ::-1], cli_positions)
+    np.testing.assert_array_equal(faces, cli_faces)
+
+
+def test_surfaces_match_cli_method_all(cli, blobs):
+    report = extract_json(cli, "--volume", blobs, "--iso", "0.5", "--method", "all")
+    samples, spacing, origin = isotrack.load(str(blobs))
+    surfaces = isotrack.surfaces(samples, 0.5, spacing=spacing, origin=origin)
+    assert len(surfaces) == report["components"] > 1
+    for surface, expected in zip(surfaces, report["surfaces"]):
+        assert surface.triangle_count == expected["triangles"]
+        assert surface.vertex_count == expected["vertices"]
+        assert surface.closed == expected["closed"]
+        assert surface.area == pytest.approx(expected["area"], rel=1e-9)
+        lo, hi = expected["bounds"]
+        assert surface.bounds[0] == pytest.approx(lo[::-1]) and surface.bounds[1] == pytest.approx(hi[::-1])
+        if expected["enclosed_volume"] is None:
+            assert surface.volume is None
+        else:
+            assert surface.volume == pytest.approx(expected["enclosed_volume"], rel=1e-9)
+
+
+def test_track_matches_cli_method_track(cli, blobs):
+    samples, spacing, origin = isotrack.load(str(blobs))
+    largest = isotrack.surfaces(samples, 0.5, spacing=spacing, origin=origin)[0]
+    seed_zyx = largest.vertices[0]
+    x, y, z = (float(c) for c in seed_zyx[::-1])
+    report = extract_json(cli, "--volume", blobs, "--iso", "0.5", "--method", "track", "--seed", f"{x!r},{y!r},{z!r}")
+    surface = isotrack.track(samples, 0.5, seed=tuple(float(c) for c in seed_zyx), spacing=spacing, origin=origin)
+    expected = report["surfaces"][0]
+    assert surface.triangle_count == expected["triangles"] == largest.triangle_count
+    assert surface.cells_visited == expected["cells_visited"]
+    assert surface.area == pytest.approx(expected["area"], rel=1e-6)
