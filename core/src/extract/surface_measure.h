@@ -9,7 +9,7 @@
 #include <emmintrin.h>
 #endif
 
-#include "flat_hash.h"
+#include "support/flat_hash.h"
 #include "isotrack/mesh.h"
 #include "isotrack/tracking.h"
 #include "isotrack/volume.h"

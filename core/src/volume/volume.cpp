@@ -5,7 +5,7 @@
 #include <limits>
 #include <string>
 
-#include "huge_pages.h"
+#include "support/huge_pages.h"
 #include "isotrack/errors.h"
 
 namespace isotrack {

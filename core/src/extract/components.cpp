@@ -17,10 +17,10 @@
 #include <numeric>
 #include <type_traits>
 
-#include "huge_pages.h"
+#include "support/huge_pages.h"
 #include "isotrack/tracking.h"
 #include "labelled_march.h"
-#include "parallel.h"
+#include "support/parallel.h"
 #include "surface_measure.h"
 
 namespace isotrack {

@@ -44,11 +44,11 @@
 #include <vector>
 
 #include "edge_vertex.h"
-#include "huge_pages.h"
+#include "support/huge_pages.h"
 #include "isotrack/continuation.h"
 #include "isotrack/cube.h"
 #include "labelled_march.h"
-#include "parallel.h"
+#include "support/parallel.h"
 #include "surface_measure.h"
 
 namespace isotrack {

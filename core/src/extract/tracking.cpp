@@ -36,9 +36,9 @@
 #include <thread>
 
 #include "edge_vertex.h"
-#include "flat_hash.h"
-#include "huge_pages.h"
-#include "parallel.h"
+#include "support/flat_hash.h"
+#include "support/huge_pages.h"
+#include "support/parallel.h"
 #include "sparse_blocks.h"
 #include "surface_measure.h"
 #include "isotrack/continuation.h"
