@@ -11,7 +11,7 @@
 
 #include "support/flat_hash.h"
 #include "isotrack/mesh.h"
-#include "isotrack/tracking.h"
+#include "isotrack/surface.h"
 #include "isotrack/volume.h"
 
 namespace isotrack::detail {
