@@ -20,6 +20,7 @@
 #include <numeric>
 #include <type_traits>
 
+#include "cancel.h"
 #include "support/huge_pages.h"
 #include "isotrack/tracking.h"
 #include "labelled_march.h"
@@ -501,7 +502,13 @@ std::vector<Surface> sortedBySize(Split& s) {
 }  // namespace
 
 std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableKind table, int threads) {
+    return detail::extractAllSurfaces(volume, iso, table, threads, nullptr);
+}
+
+std::vector<Surface> detail::extractAllSurfaces(const Volume& volume, double iso, TableKind table, int threads,
+                                                const std::atomic<bool>* cancel) {
     detail::LabelledMesh labelled = detail::marchLabelled(volume, iso, table, threads);
+    if (detail::cancelled(cancel)) return {};
     Split split(labelled, volume, table, threads);
     numberSurfaces(split);
     placeShares(split);
