@@ -21,9 +21,9 @@
 #include <type_traits>
 
 #include "cancel.h"
-#include "support/huge_pages.h"
 #include "isotrack/tracking.h"
 #include "labelled_march.h"
+#include "support/huge_pages.h"
 #include "support/parallel.h"
 #include "surface_measure.h"
 

@@ -38,12 +38,12 @@
 #include <vector>
 
 #include "edge_vertex.h"
-#include "support/huge_pages.h"
 #include "isotrack/continuation.h"
 #include "isotrack/cube.h"
 #include "labelled_march.h"
-#include "surface_labels.h"
+#include "support/huge_pages.h"
 #include "support/parallel.h"
+#include "surface_labels.h"
 #include "surface_measure.h"
 
 namespace isotrack {
