@@ -130,7 +130,8 @@ template <bool OneRange>
 void numberRange(Split& s, const Range& part, std::size_t r) {
     const std::uint32_t* parent = s.labelled.parent.data();
     std::vector<std::uint32_t>& roots = s.roots;
-    Buffer<Label>& labels = s.labels;
+    Label* const labels = s.labels.data();
+    const std::uint8_t* const tallies = s.labelled.tally.data();
     auto numberOf = [&](std::uint32_t root) {
         return static_cast<std::uint32_t>(std::lower_bound(roots.begin(), roots.end(), root) - roots.begin());
     };
@@ -166,7 +167,7 @@ void numberRange(Split& s, const Range& part, std::size_t r) {
             counter = share[k].vertices, triangles = share[k].triangles, pieces = share[k].pieces;
         }
         labels[v] = {k, counter++};
-        const unsigned tally = s.labelled.tally[v];
+        const unsigned tally = tallies[v];
         triangles += tally & detail::kTalliedTriangles;
         pieces += tally / detail::kTalliedPiece;
     }
@@ -367,7 +368,7 @@ void splitRangeVertices(Split& s, const Range& part, std::size_t r) {
     std::vector<Surface>& surfaces = s.surfaces;
     const std::size_t largest = s.largest;
     const bool compact = s.compact;
-    const Buffer<Label>& labels = s.labels;
+    const Label* const labels = s.labels.data();
     std::size_t to = part.vertexBegin;
     std::uint32_t runSurface = kNone;
     float x0 = 0, y0 = 0, z0 = 0, x1 = 0, y1 = 0, z1 = 0;
