@@ -23,6 +23,9 @@
 #include "cli/timed_extraction.h"
 #include "isotrack/continuation.h"
 #include "isotrack/errors.h"
+#include "isotrack/extract.h"
+#include "isotrack/marching_cubes.h"
+#include "isotrack/tracking.h"
 
 namespace isotrack::cli {
 namespace {
@@ -66,10 +69,10 @@ int runBench(const BenchOptions& options) {
                     secondsOf([&] { config.samplesAbove = countSamplesAbove(source.volume, source.iso, config.threads); }));
                 continue;
             }
-            const TimedExtraction run =
-                extractTimed(source.volume, source.iso, config.method, table, config.threads, options.seed);
+            const TimedExtraction run = extractTimed(
+                source.volume, extractRequest(parseMethod(config.method), source.iso, table, config.threads, options.seed));
             config.seconds.push_back(run.seconds);
-            config.triangles = run.mesh.triangleCount(), config.vertices = run.mesh.vertices.size();
+            config.triangles = 0, config.vertices = 0;
             config.surfaces = run.surfaces.size();
             for (const Surface& surface : run.surfaces) {
                 config.triangles += surface.mesh.triangleCount();

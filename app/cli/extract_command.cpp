@@ -18,6 +18,7 @@
 #include "cli/source.h"
 #include "cli/timed_extraction.h"
 #include "isotrack/continuation.h"
+#include "isotrack/extract.h"
 #include "isotrack/io.h"
 #include "isotrack/marching_cubes.h"
 #include "isotrack/tables.h"
@@ -106,15 +107,16 @@ void countMesh(Extraction& out) {
 
 // One run of the chosen method; only extraction is timed.
 Extraction extractOnce(const ExtractOptions& options, const Source& source, TableKind table) {
-    TimedExtraction run = extractTimed(source.volume, source.iso, options.method, table, options.threads, options.seed);
+    const Method method = parseMethod(options.method);
+    TimedExtraction run = extractTimed(source.volume, extractRequest(method, source.iso, table, options.threads, options.seed));
     Extraction out;
     out.seconds.push_back(run.seconds);
-    if (options.method == "mc") {
-        out.mesh = std::move(run.mesh);
+    if (method == Method::Exhaustive) {
+        out.mesh = std::move(run.surfaces.front().mesh);
         countMesh(out);
         return out;
     }
-    if (options.method == "track") {
+    if (method == Method::Track) {
         Surface& surface = run.surfaces.front();
         out.components = 1;
         out.cellsVisited = surface.stats.cellsVisited;

@@ -15,9 +15,8 @@
 #include "cli/timed_extraction.h"
 #include "headless/headless_context.h"
 #include "isotrack/errors.h"
-#include "isotrack/marching_cubes.h"
+#include "isotrack/extract.h"
 #include "isotrack/tables.h"
-#include "isotrack/tracking.h"
 #include "render/image.h"
 #include "render/snapshot.h"
 
@@ -92,15 +91,15 @@ Vec3d volumeCentre(const Volume& volume) {
 // The meshes to draw, largest first for "all", on one thread (a tracked
 // surface's vertex order is then the same from run to run); seconds in *seconds.
 std::vector<Mesh> extractSurfaces(const RenderOptions& options, const Source& source, TableKind table, double* seconds) {
+    const Method method = parseMethod(options.method);
     std::vector<double> seed;
-    if (options.method == "track") {
+    if (method == Method::Track) {
         const Vec3d point = options.seed.empty() ? volumeCentre(source.volume) : parsePoint(options.seed);
         seed.assign(point.begin(), point.end());
     }
-    TimedExtraction run = extractTimed(source.volume, source.iso, options.method, table, 1, seed);
+    TimedExtraction run = extractTimed(source.volume, extractRequest(method, source.iso, table, 1, seed));
     *seconds = run.seconds;
     std::vector<Mesh> meshes;
-    if (options.method == "mc") meshes.push_back(std::move(run.mesh));
     for (Surface& surface : run.surfaces) meshes.push_back(std::move(surface.mesh));
     return meshes;
 }

@@ -3,10 +3,12 @@
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <map>
+#include <utility>
 
 #include "isotrack/errors.h"
 #include "isotrack/fields.h"
 #include "isotrack/io.h"
+#include "isotrack/source.h"
 
 namespace isotrack::cli {
 
@@ -68,36 +70,47 @@ void addSourceOptions(CLI::App& command, SourceOptions& options) {
     addRawOptions(command, options.raw, volume);
 }
 
-Volume loadVolumeFile(const std::string& path, const RawOptions& raw) {
-    if (raw.dims.empty()) return loadVolume(path);
+namespace {
+
+// The layout --dims, --type, --spacing and --endian give.
+RawLayout rawLayout(const RawOptions& raw) {
     RawLayout layout;
     for (std::size_t a = 0; a < 3; ++a) layout.dims[a] = raw.dims.at(a);
     layout.type = rawScalarType(raw.type);
     if (!raw.spacing.empty()) layout.spacing = {raw.spacing.at(0), raw.spacing.at(1), raw.spacing.at(2)};
     layout.bigEndian = raw.endian == "big";
-    return loadRaw(path, layout);
+    return layout;
+}
+
+}  // namespace
+
+Volume loadVolumeFile(const std::string& path, const RawOptions& raw) {
+    if (raw.dims.empty()) return loadVolume(path);
+    return loadRaw(path, rawLayout(raw));
 }
 
 Source loadSource(const SourceOptions& options) {
     if (options.volumePath.empty() == options.fieldSpec.empty()) {
         throw InputError("give exactly one of --volume FILE or --field NAME[:N]");
     }
-    Source source;
+    VolumeSource spec;
     if (!options.fieldSpec.empty()) {
-        const FieldSpec spec = parseFieldSpec(options.fieldSpec);
-        source.volume = makeField(spec);
-        source.name = spec.name + ":" + std::to_string(spec.size);
-        source.iso = options.iso.value_or(fieldDefaultIso(spec.name));
+        spec.text = options.fieldSpec;
     } else {
-        source.volume = loadVolumeFile(options.volumePath, options.raw);
-        source.name = options.volumePath;
-        if (options.iso) {
-            source.iso = *options.iso;
-        } else {
-            const auto range = source.volume.range();
-            if (!std::isfinite(range[0])) throw InputError(options.volumePath + ": no finite samples, give --iso");
-            source.iso = (range[0] + range[1]) / 2.0;
-        }
+        spec.kind = VolumeSource::Kind::File;
+        spec.text = options.volumePath;
+        if (!options.raw.dims.empty()) spec.raw = rawLayout(options.raw);
+    }
+    LoadedSource loaded = isotrack::loadSource(spec);
+    Source source;
+    source.volume = std::move(loaded.volume);
+    source.name = std::move(loaded.name);
+    if (options.iso) {
+        source.iso = *options.iso;
+    } else if (loaded.defaultIso) {
+        source.iso = *loaded.defaultIso;
+    } else {
+        throw InputError(options.volumePath + ": no finite samples, give --iso");
     }
     if (!std::isfinite(source.iso)) throw InputError("--iso: must be a finite number");
     return source;

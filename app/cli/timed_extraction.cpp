@@ -6,21 +6,20 @@
 
 namespace isotrack::cli {
 
-TimedExtraction extractTimed(const Volume& volume, double iso, const std::string& method, TableKind table, int threads,
-                             const std::vector<double>& seed) {
-    if (method == "track" && seed.size() != 3) throw InputError("--method track needs --seed X,Y,Z (world coordinates)");
-    if (method != "mc" && method != "track" && method != "all") throw InputError("unknown method " + method + " (mc, all or track)");
+ExtractRequest extractRequest(Method method, double iso, TableKind table, int threads, const std::vector<double>& seed) {
+    if (method == Method::Track && seed.size() != 3) throw InputError("--method track needs --seed X,Y,Z (world coordinates)");
+    ExtractRequest request;
+    request.method = method;
+    request.iso = iso;
+    request.table = table;
+    request.threads = threads;
+    if (method == Method::Track) request.seeds.push_back({seed[0], seed[1], seed[2]});
+    return request;
+}
+
+TimedExtraction extractTimed(const Volume& volume, const ExtractRequest& request) {
     TimedExtraction out;
-    out.seconds = secondsOf([&] {
-        if (method == "mc") {
-            out.mesh = marchingCubes(volume, iso, table, threads);
-        } else if (method == "track") {
-            const GridEdge edge = nearestCrossedEdge(volume, iso, {seed[0], seed[1], seed[2]});
-            out.surfaces.push_back(trackSurface(volume, iso, edge, table, threads));
-        } else {
-            out.surfaces = extractAllSurfaces(volume, iso, table, threads);
-        }
-    });
+    out.seconds = secondsOf([&] { out.surfaces = extract(volume, request); });
     return out;
 }
 

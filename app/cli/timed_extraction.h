@@ -1,20 +1,16 @@
 #pragma once
-// One timed extraction by method name, shared by `extract`, `bench` and `render`.
+// One timed extraction, shared by `extract`, `bench` and `render`.
 #include <chrono>
-#include <string>
 #include <vector>
 
-#include "isotrack/marching_cubes.h"
-#include "isotrack/tables.h"
-#include "isotrack/tracking.h"
+#include "isotrack/extract.h"
 #include "isotrack/volume.h"
 
 namespace isotrack::cli {
 
 struct TimedExtraction {
     double seconds = 0.0;           // extraction only
-    Mesh mesh;                      // mc: the one mesh
-    std::vector<Surface> surfaces;  // track: the one surface; all: every surface, largest first
+    std::vector<Surface> surfaces;  // as isotrack::extract gives them (mc: one, unmeasured)
 };
 
 // The seconds fn() takes, on a steady clock.
@@ -25,10 +21,12 @@ double secondsOf(Fn&& fn) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// method "mc", "all" or "track" (from the crossed edge nearest `seed`, a world
-// point, which must then hold 3 values; finding that edge is timed too).
-TimedExtraction extractTimed(const Volume& volume, double iso, const std::string& method, TableKind table, int threads,
-                             const std::vector<double>& seed);
+// The request for `method` at `iso`; for track, `seed` (a world point, given as
+// --seed) must hold 3 values, and finding the crossed edge nearest it is timed too.
+ExtractRequest extractRequest(Method method, double iso, TableKind table, int threads, const std::vector<double>& seed);
+
+// isotrack::extract, timed.
+TimedExtraction extractTimed(const Volume& volume, const ExtractRequest& request);
 
 // The median of `values` (the mean of the middle two for an even count); 0 when empty.
 double median(std::vector<double> values);

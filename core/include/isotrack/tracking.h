@@ -5,10 +5,10 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
-#include <optional>
 #include <vector>
 
 #include "isotrack/mesh.h"
+#include "isotrack/surface.h"
 #include "isotrack/tables.h"
 #include "isotrack/volume.h"
 
@@ -26,30 +26,6 @@ GridEdge nearestCrossedEdge(const Volume& volume, double iso, const Vec3d& world
 // nearest to a world-space point on it.
 GridEdge edgeOfVertex(const Mesh& mesh, std::uint32_t vertex);
 GridEdge edgeOfTriangle(const Mesh& mesh, std::size_t triangle, const Vec3d& worldPoint);
-
-struct SurfaceStats {
-    std::size_t triangles = 0;
-    std::size_t vertices = 0;
-    std::size_t cellsVisited = 0;  // (cell, piece) visits
-    std::size_t bytes = 0;         // vertex and index buffers
-    double seconds = 0.0;
-    Vec3d boundsMin{0, 0, 0}, boundsMax{0, 0, 0};
-    double area = 0.0;
-    bool closed = false;                   // every mesh edge has exactly two triangles
-    std::optional<double> enclosedVolume;  // for closed surfaces
-    bool touchesBorder = false;            // reaches a boundary cell of the volume
-};
-
-struct Surface {
-    Mesh mesh;
-    SurfaceStats stats;
-};
-
-// Computes area, bounds, closedness and enclosed volume of a mesh. With
-// `closedUnlessOnBorder`, for meshes of the consistent table, which have no holes,
-// the mesh counts as closed exactly when no vertex lies on the volume's border,
-// instead of checking every edge.
-SurfaceStats measureSurface(const Mesh& mesh, const Volume& volume, bool closedUnlessOnBorder = false);
 
 // One connected surface, the one through `seed`, measured as it is walked (the
 // figures equal measureSurface's). Throws InputError when the seed edge is

@@ -9,10 +9,10 @@
 #include <emmintrin.h>
 #endif
 
-#include "flat_hash.h"
 #include "isotrack/mesh.h"
-#include "isotrack/tracking.h"
+#include "isotrack/surface.h"
 #include "isotrack/volume.h"
+#include "support/flat_hash.h"
 
 namespace isotrack::detail {
 

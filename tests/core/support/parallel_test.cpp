@@ -7,7 +7,7 @@
 #include <thread>
 #include <vector>
 
-#include "parallel.h"
+#include "support/parallel.h"
 
 using namespace isotrack;
 

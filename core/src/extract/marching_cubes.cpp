@@ -23,15 +23,9 @@
 // Temporaries are a few slices of flags and ids per thread, kept from chunk to
 // chunk, and the counting pass's classification (a bit per voxel at most).
 //
-// Labelled (for extractAllSurfaces), the writing pass also joins the vertices of
-// each cell piece in a union-find over the chunk's own vertex range, while they
-// are in cache (looking up only the vertices that earlier cells have not joined
-// already, see PieceUnions), and tallies the piece and its triangles at one vertex;
-// cells on the volume's border list their vertices on it (so that the split
-// need not test every vertex). A seam is joined (stitch) by the thread that
-// writes the second of its two chunks, while other chunks are marched. The
-// forest is handed on as it is: extractAllSurfaces walks each vertex to its root
-// while it numbers the surfaces.
+// Labelled (for extractAllSurfaces), the writing pass also joins each cell
+// piece's vertices in a union-find and tallies the piece; surface_labels.h
+// describes it.
 #include "isotrack/marching_cubes.h"
 
 #include <algorithm>
@@ -44,101 +38,19 @@
 #include <vector>
 
 #include "edge_vertex.h"
-#include "huge_pages.h"
 #include "isotrack/continuation.h"
 #include "isotrack/cube.h"
 #include "labelled_march.h"
-#include "parallel.h"
+#include "support/huge_pages.h"
+#include "support/parallel.h"
+#include "surface_labels.h"
 #include "surface_measure.h"
 
 namespace isotrack {
 namespace {
 
 constexpr std::uint32_t kNoVertex = std::numeric_limits<std::uint32_t>::max();
-constexpr std::uint32_t kSeamBit = 1u << 31;  // placeholder: a vertex on the next chunk's first slice
-
-// Union-find over vertex ids, roots being each set's smallest id (parents are
-// never above their children).
-std::uint32_t findRoot(std::uint32_t* parent, std::uint32_t v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-}
-
-std::uint32_t linkRoots(std::uint32_t* parent, std::uint32_t a, std::uint32_t b) {
-    return a < b ? (parent[b] = a) : (parent[a] = b);
-}
-
-// Which vertices of a cell piece the labelled march looks up in the union-find.
-// A cell's crossed edges on its low faces (-x, -y, -z) were met by the cells
-// before it. Where such a face is crossed at exactly two edges, the cell across
-// it holds both in one piece (every configuration does; tables_test checks it),
-// so they are joined already and one of them stands for both. The three edges at
-// the cell's high corner are met first by the cell itself: their vertices are
-// new, each its own root, and are looked up (in one step). A piece so looks up
-// one vertex per group of its low-face edges instead of every vertex.
-struct PieceUnions {
-    // [config][low faces with a marched cell across them: bit 0 -x, 1 -y, 2 -z][piece]
-    std::array<std::array<std::array<std::uint16_t, kMaxPieces>, 8>, 256> lookups{};
-};
-
-PieceUnions pieceUnionsFor(TableKind kind) {
-    const auto& table = continuationTable(kind);
-    // Per low face (-x, -y, -z), its edges; and the x- and y-edges of the cell's
-    // upper slice, placeholders in a seam slab, which stand in for a group only when alone.
-    std::array<unsigned, 3> lowFace{};
-    unsigned upperSlice = 0;
-    for (int e = 0; e < cube::kEdgeCount; ++e) {
-        for (int f = 0; f < 3; ++f) lowFace[std::size_t(f)] |= unsigned(cube::edgeOnFace(e, 2 * f)) << e;
-        if (cube::edgeOrigin(e)[2] == 1 && cube::edgeAxis(e) != 2) upperSlice |= 1u << e;
-    }
-    const unsigned newEdges = ((1u << cube::kEdgeCount) - 1) & ~(lowFace[0] | lowFace[1] | lowFace[2]);
-    PieceUnions out;
-    auto onUpperSlice = [&](int e) { return (upperSlice >> e & 1) != 0; };
-    for (int config = 0; config < 256; ++config) {
-        const CaseContinuation& cased = table[std::size_t(config)];
-        unsigned crossed = 0;
-        for (int e = 0; e < cube::kEdgeCount; ++e) crossed |= unsigned(cased.pieceOfEdge[std::size_t(e)] >= 0) << e;
-        for (int across = 0; across < 8; ++across) {
-            for (int p = 0; p < cased.pieceCount; ++p) {
-                const unsigned old = cased.pieces[p].edgeMask & ~newEdges;
-                std::array<int, cube::kEdgeCount> group;
-                for (int e = 0; e < cube::kEdgeCount; ++e) group[std::size_t(e)] = e;
-                auto find = [&](int e) {
-                    while (group[std::size_t(e)] != e) e = group[std::size_t(e)];
-                    return e;
-                };
-                for (int f = 0; f < 3; ++f) {
-                    const unsigned onFace = crossed & lowFace[std::size_t(f)];
-                    if (!(across >> f & 1) || __builtin_popcount(onFace) != 2 || (onFace & old) != onFace) continue;
-                    group[std::size_t(find(__builtin_ctz(onFace)))] = find(31 - __builtin_clz(onFace));
-                }
-                // Each group's stand-in: its first edge off the upper slice, else its only edge.
-                std::array<int, cube::kEdgeCount> standIn;
-                standIn.fill(-1);
-                for (int e = 0; e < cube::kEdgeCount; ++e) {
-                    if (!(old >> e & 1)) continue;
-                    int& chosen = standIn[std::size_t(find(e))];
-                    if (chosen < 0 || (onUpperSlice(chosen) && !onUpperSlice(e))) chosen = e;
-                }
-                unsigned lookups = cased.pieces[p].edgeMask & newEdges;
-                for (int chosen : standIn) {
-                    if (chosen >= 0) lookups |= 1u << chosen;
-                }
-                out.lookups[std::size_t(config)][std::size_t(across)][std::size_t(p)] = static_cast<std::uint16_t>(lookups);
-            }
-        }
-    }
-    return out;
-}
-
-const PieceUnions& pieceUnions(TableKind kind) {
-    if (kind == TableKind::Consistent) {
-        static const PieceUnions consistent = pieceUnionsFor(kind);
-        return consistent;
-    }
-    static const PieceUnions classic = pieceUnionsFor(kind);
-    return classic;
-}
+using detail::kSeamBit;  // placeholder: a vertex on the next chunk's first slice
 
 struct RowSpan {
     int lo, hi;               // x-edges [lo, hi) hold every change of flag along the row
@@ -225,10 +137,10 @@ const std::array<std::uint64_t, 256>& flagExpansion() {
 template <class T>
 class ChunkMarcher {
 public:
-    // With `parent`, the writing pass labels surfaces in it (one entry per vertex of the mesh).
+    // With labels.parent, the writing pass labels surfaces in it (surface_labels.h).
     ChunkMarcher(const detail::SampleGrid<T>& grid, const std::array<CaseContinuation, 256>& table, const EdgeSlots& slots,
-                 const PieceUnions* unions, std::uint32_t* parent, std::uint8_t* tally, Mesh& mesh)
-        : grid_(grid), table_(table), slots_(slots), unions_(unions), parent_(parent), tally_(tally), mesh_(mesh), nx_(grid.nx()), ny_(grid.ny()), nz_(grid.nz()),
+                 const detail::SurfaceLabels& labels, Mesh& mesh)
+        : grid_(grid), table_(table), slots_(slots), labels_(labels), mesh_(mesh), nx_(grid.nx()), ny_(grid.ny()), nz_(grid.nz()),
           sliceSize_(std::size_t(grid.nx()) * std::size_t(grid.ny())), rowBytes_(std::size_t(grid.nx() + 7) / 8) {
         for (int s = 0; s < 2; ++s) {
             flags_[s].assign(sliceSize_ + 8, 0);  // rows are packed and unpacked 8 flags at a time
@@ -492,7 +404,7 @@ private:
                 ids[e] = vertexOnEdge<SeamSlab>(x, y, z, cell, e, bottom, top, onBorder);
             }
             const CaseContinuation& cased = table_[config];
-            if (parent_) unitePieces(config, cased, ids, unsigned(x > 0) | unsigned(y > 0) << 1 | unsigned(z > chunk_->zBegin) << 2);
+            if (labels_.parent) labels_.unitePieces(config, cased, ids, unsigned(x > 0) | unsigned(y > 0) << 1 | unsigned(z > chunk_->zBegin) << 2);
             const int triangles = triangleCount_[config];
             const std::size_t at = chunk_->indexBase + chunk_->indexCursor;
             std::uint32_t* out = mesh_.indices.data() + at;
@@ -507,31 +419,6 @@ private:
                 }
             }
             chunk_->indexCursor += 3 * std::size_t(triangles);
-        }
-    }
-
-    // Joins the vertices of each piece of the cell, a connected patch of surface,
-    // and tallies the piece and its triangles at one of its vertices of this chunk
-    // (every piece has one: no piece crosses only edges of the next chunk's slice).
-    // Only one vertex per group of low-face edges already joined is looked up
-    // (PieceUnions); `across` says which low faces have a cell of this chunk across.
-    // Placeholders for the next chunk's slice are joined in stitch, through their triangles.
-    void unitePieces(unsigned config, const CaseContinuation& cased, const std::array<std::uint32_t, 12>& ids, unsigned across) {
-        const std::array<std::uint16_t, kMaxPieces>& lookups = unions_->lookups[config][across];
-        for (int p = 0; p < cased.pieceCount; ++p) {
-            std::uint32_t root = kNoVertex, counted = kNoVertex;
-            for (unsigned mask = lookups[std::size_t(p)]; mask != 0; mask &= mask - 1) {
-                const std::uint32_t id = ids[std::size_t(__builtin_ctz(mask))];
-                if (id & kSeamBit) continue;
-                const std::uint32_t r = findRoot(parent_, id);
-                if (root == kNoVertex) {
-                    root = r;
-                    counted = id;
-                } else if (r != root) {
-                    root = linkRoots(parent_, root, r);
-                }
-            }
-            tally_[counted] = static_cast<std::uint8_t>(tally_[counted] + detail::kTalliedPiece + cased.pieces[p].triangleCount);
         }
     }
 
@@ -556,9 +443,8 @@ private:
         *slot = static_cast<std::uint32_t>(id);
         const auto& o = slots_.origin[edge];
         const GridEdge gridEdge{x + o[0], y + o[1], z + o[2], axis};
-        if (parent_) {
-            parent_[id] = *slot;
-            tally_[id] = 0;
+        if (labels_.parent) {
+            labels_.addVertex(*slot);
             if (onBorder && detail::edgeOnVolumeBorder(gridEdge, Dims{nx_, ny_, nz_})) chunk_->borderVertices.push_back(*slot);
         }
         grid_.edgeVertex(gridEdge.x, gridEdge.y, gridEdge.z, axis, mesh_.vertices[id]);
@@ -569,9 +455,7 @@ private:
     const detail::SampleGrid<T>& grid_;
     const std::array<CaseContinuation, 256>& table_;
     const EdgeSlots& slots_;
-    const PieceUnions* const unions_;  // with parent_
-    std::uint32_t* const parent_;
-    std::uint8_t* const tally_;
+    const detail::SurfaceLabels labels_;
     Chunk* chunk_ = nullptr;  // the chunk being marched
     Mesh& mesh_;
     const int nx_, ny_, nz_;
@@ -607,26 +491,6 @@ void resolveSeam(std::vector<Chunk>& chunks, std::size_t c, Mesh& mesh) {
     for (std::size_t at : chunks[c].seamIndices) mesh.indices[at] = next[mesh.indices[at] & ~kSeamBit];
 }
 
-// Joins the surfaces across the seam between `chunk` and the next one, for
-// labelling, once its placeholders are resolved: each triangle with a placeholder
-// joins its three corners, once (seam indices come in order, a triangle's
-// together). It reads and writes the forest of the two chunks and of the chunks
-// below joined to them already, all written; the caller joins one seam at a time.
-void stitch(const Chunk& chunk, const Mesh& mesh, std::uint32_t* parent) {
-    std::size_t joined = ~std::size_t(0);
-    for (std::size_t at : chunk.seamIndices) {
-        const std::size_t first = at - at % 3;
-        if (first == joined) continue;
-        joined = first;
-        const std::uint32_t* triangle = &mesh.indices[first];
-        std::uint32_t root = findRoot(parent, triangle[0]);
-        for (int k = 1; k < 3; ++k) {
-            const std::uint32_t other = findRoot(parent, triangle[k]);
-            if (other != root) root = linkRoots(parent, root, other);
-        }
-    }
-}
-
 // The exhaustive pass on `threads` threads; labels surfaces in *parent and tallies
 // cell pieces in *tally (both resized to one entry per vertex) when given.
 std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int threads, Mesh& mesh,
@@ -650,18 +514,14 @@ std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int 
         const detail::SampleGrid<T> grid(volume, samples, iso);
         // A marcher per thread, its slices of flags and ids reused from chunk to chunk.
         detail::parallelForWithState(
-            chunkCount, threads, [&] { return ChunkMarcher<T>(grid, continuation, slots, nullptr, nullptr, nullptr, mesh); },
+            chunkCount, threads, [&] { return ChunkMarcher<T>(grid, continuation, slots, detail::SurfaceLabels{}, mesh); },
             [&](ChunkMarcher<T>& marcher, int c) { marcher.count(chunks[std::size_t(c)]); });
         allocate(chunks, mesh);
-        std::uint32_t* parents = nullptr;
-        std::uint8_t* tallies = nullptr;
-        const PieceUnions* unions = nullptr;
+        detail::SurfaceLabels labels;
         if (parent) {
-            unions = &pieceUnions(table);
             detail::resizeOnHugePages(*parent, mesh.vertices.size());
             detail::resizeOnHugePages(*tally, mesh.vertices.size());
-            parents = parent->data();
-            tallies = tally->data();
+            labels = {&detail::pieceUnions(table), parent->data(), tally->data()};
         }
         // A seam is resolved, and joined when labelling, by whichever of its two
         // chunks is written last, on its thread, while other chunks are marched.
@@ -670,13 +530,13 @@ std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int 
         auto chunkWritten = [&](std::size_t seam) {
             if (written[seam].fetch_add(1) != 1) return;
             resolveSeam(chunks, seam, mesh);
-            if (parents) {
+            if (labels.parent) {
                 const std::lock_guard<std::mutex> lock(joining);
-                stitch(chunks[seam], mesh, parents);
+                detail::stitchSeam(chunks[seam].seamIndices, mesh, labels.parent);
             }
         };
         detail::parallelForWithState(
-            chunkCount, threads, [&] { return ChunkMarcher<T>(grid, continuation, slots, unions, parents, tallies, mesh); },
+            chunkCount, threads, [&] { return ChunkMarcher<T>(grid, continuation, slots, labels, mesh); },
             [&](ChunkMarcher<T>& marcher, int index) {
                 const std::size_t c = std::size_t(index);
                 marcher.run(chunks[c]);
@@ -708,49 +568,5 @@ LabelledMesh marchLabelled(const Volume& volume, double iso, TableKind table, in
 }
 
 }  // namespace detail
-
-std::size_t countCrossedEdges(const Volume& volume, double iso) {
-    return visitSamples(volume, [&](const auto* samples) {
-        using T = std::remove_cv_t<std::remove_pointer_t<decltype(samples)>>;
-        const detail::SampleGrid<T> grid(volume, samples, iso);
-        std::size_t crossed = 0;
-        for (int z = 0; z < grid.nz(); ++z)
-            for (int y = 0; y < grid.ny(); ++y)
-                for (int x = 0; x < grid.nx(); ++x) {
-                    const std::size_t i = grid.index(x, y, z);
-                    const bool a = grid.above(i);
-                    if (x + 1 < grid.nx()) crossed += a != grid.above(i + 1);
-                    if (y + 1 < grid.ny()) crossed += a != grid.above(i + grid.strideY());
-                    if (z + 1 < grid.nz()) crossed += a != grid.above(i + grid.strideZ());
-                }
-        return crossed;
-    });
-}
-
-std::size_t countSamplesAbove(const Volume& volume, double iso, int threads) {
-    return visitSamples(volume, [&](const auto* samples) -> std::size_t {
-        using T = std::remove_cv_t<std::remove_pointer_t<decltype(samples)>>;
-        const detail::NativeThreshold<T> threshold(iso);
-        const std::size_t total = volume.sampleCount();
-        if (threshold.all || threshold.none) return threshold.all ? total : 0;
-        // Equal contiguous parts, one per thread, each a loop the compiler vectorises.
-        const int parts = std::max(1, threads);
-        std::vector<std::size_t> counts(std::size_t(parts), 0);
-        const T t = threshold.value;
-        detail::parallelFor(parts, parts, [&](int p) {
-            const std::size_t begin = total * std::size_t(p) / std::size_t(parts), end = total * std::size_t(p + 1) / std::size_t(parts);
-            std::size_t count = 0;
-            for (std::size_t block = begin; block < end; block += 65536) {
-                std::uint32_t inBlock = 0;  // narrow sums keep the vector lanes wide
-                for (std::size_t i = block, stop = std::min(end, block + 65536); i < stop; ++i) inBlock += samples[i] >= t;
-                count += inBlock;
-            }
-            counts[std::size_t(p)] = count;
-        });
-        std::size_t count = 0;
-        for (const std::size_t c : counts) count += c;
-        return count;
-    });
-}
 
 }  // namespace isotrack

@@ -13,7 +13,7 @@
 #include "isotrack/io.h"
 #include "isotrack/marching_cubes.h"
 #include "isotrack/tracking.h"
-#include "mesh_checks.h"
+#include "core/mesh_checks.h"
 
 using namespace isotrack;
 using isotrack::testing::triangleSet;

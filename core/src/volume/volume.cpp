@@ -5,8 +5,8 @@
 #include <limits>
 #include <string>
 
-#include "huge_pages.h"
 #include "isotrack/errors.h"
+#include "support/huge_pages.h"
 
 namespace isotrack {
 

@@ -6,7 +6,7 @@
 #include "isotrack/fields.h"
 #include "isotrack/io.h"
 #include "isotrack/marching_cubes.h"
-#include "mesh_checks.h"
+#include "core/mesh_checks.h"
 
 using namespace isotrack;
 using isotrack::testing::topology;

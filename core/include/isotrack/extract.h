@@ -1,0 +1,46 @@
+#pragma once
+// One entry point for isotrack's three extractions, and the names they go by on
+// the command line and in reports.
+#include <atomic>
+#include <string>
+#include <vector>
+
+#include "isotrack/surface.h"
+#include "isotrack/tables.h"
+#include "isotrack/volume.h"
+
+namespace isotrack {
+
+// Exhaustive ("mc"): every cell, one mesh (marchingCubes). Track ("track"): the
+// surface through each seed (trackSurface). All ("all"): every surface
+// separately (extractAllSurfaces).
+enum class Method { Exhaustive, Track, All };
+
+// "mc", "track" or "all"; throws InputError naming the text otherwise.
+Method parseMethod(const std::string& name);
+// "mc", "track" or "all".
+const char* methodName(Method method);
+
+struct ExtractRequest {
+    Method method = Method::Exhaustive;
+    double iso = 0.0;
+    TableKind table = TableKind::Consistent;
+    int threads = 1;  // track: at most kMaxTrackThreads are used
+    // Track: world points; each is tracked from the crossed grid edge nearest to it.
+    std::vector<Vec3d> seeds;
+    // Exhaustive: also measure the mesh (area, bounds, closed, enclosed volume).
+    // Off, its stats hold only its counts and bytes: measuring costs a pass over it.
+    bool measure = false;
+    // When another thread sets it, the extraction stops at its next check and
+    // returns what it finished; the caller that set it discards the result.
+    // Checked between passes and between seeds only, never in their loops.
+    const std::atomic<bool>* cancel = nullptr;
+};
+
+// Exhaustive: one surface, the whole mesh. Track: one surface per seed, in the
+// seeds' order (two seeds on one surface give it twice). All: every surface,
+// largest first. Throws InputError for a track without seeds, and as
+// nearestCrossedEdge and trackSurface do.
+std::vector<Surface> extract(const Volume& volume, const ExtractRequest& request);
+
+}  // namespace isotrack

@@ -1,0 +1,67 @@
+// extract: the one place that turns a method and its settings into surfaces.
+#include "isotrack/extract.h"
+
+#include <utility>
+
+#include "cancel.h"
+#include "isotrack/errors.h"
+#include "isotrack/marching_cubes.h"
+#include "isotrack/tracking.h"
+
+namespace isotrack {
+namespace {
+
+Surface exhaustiveSurface(const Volume& volume, const ExtractRequest& request) {
+    Surface surface;
+    surface.mesh = marchingCubes(volume, request.iso, request.table, request.threads);
+    if (request.measure && !detail::cancelled(request.cancel)) {
+        surface.stats = measureSurface(surface.mesh, volume, request.table == TableKind::Consistent);
+    } else {
+        surface.stats.triangles = surface.mesh.triangleCount();
+        surface.stats.vertices = surface.mesh.vertices.size();
+        surface.stats.bytes = surface.mesh.byteSize();
+    }
+    return surface;
+}
+
+}  // namespace
+
+Method parseMethod(const std::string& name) {
+    if (name == "mc") return Method::Exhaustive;
+    if (name == "track") return Method::Track;
+    if (name == "all") return Method::All;
+    throw InputError("unknown method \"" + name + "\" (mc, track or all)");
+}
+
+const char* methodName(Method method) {
+    switch (method) {
+        case Method::Exhaustive: return "mc";
+        case Method::Track: return "track";
+        case Method::All: return "all";
+    }
+    return "mc";
+}
+
+std::vector<Surface> extract(const Volume& volume, const ExtractRequest& request) {
+    std::vector<Surface> surfaces;
+    if (detail::cancelled(request.cancel)) return surfaces;
+    switch (request.method) {
+        case Method::Exhaustive:
+            surfaces.push_back(exhaustiveSurface(volume, request));
+            break;
+        case Method::All:
+            surfaces = detail::extractAllSurfaces(volume, request.iso, request.table, request.threads, request.cancel);
+            break;
+        case Method::Track:
+            if (request.seeds.empty()) throw InputError("method track needs a seed (a world point near the surface)");
+            for (const Vec3d& point : request.seeds) {
+                if (detail::cancelled(request.cancel)) break;
+                const GridEdge edge = nearestCrossedEdge(volume, request.iso, point);
+                surfaces.push_back(trackSurface(volume, request.iso, edge, request.table, request.threads));
+            }
+            break;
+    }
+    return surfaces;
+}
+
+}  // namespace isotrack
