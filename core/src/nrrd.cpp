@@ -311,7 +311,7 @@ Volume loadNrrd(const std::string& path) {
 
 void writeNrrd(const Volume& volume, const std::string& path) {
     if (volume.byteSize() == 0) throw InputError(path + ": cannot write an empty volume");
-    FilePtr f = openForWriting(path);
+    SafeWriter f(path);
     char buf[256];
     std::string header = "NRRD0004\n# written by isotrack\n";
     header += std::string("type: ") + nrrdTypeName(volume.type()) + "\ndimension: 3\nspace dimension: 3\n";
@@ -325,12 +325,12 @@ void writeNrrd(const Volume& volume, const std::string& path) {
     std::snprintf(buf, sizeof buf, "space origin: (%.17g,%.17g,%.17g)\n", o[0], o[1], o[2]);
     header += buf;
     header += "endian: little\nencoding: raw\n\n";
-    bool ok = std::fwrite(header.data(), 1, header.size(), f.get()) == header.size();
+    f.write(header);
 
     const std::size_t width = scalarTypeSize(volume.type());
     const bool swap = hostIsBigEndian() && width > 1;
     std::vector<std::byte> chunk;
-    for (std::size_t done = 0; ok && done < volume.byteSize();) {
+    for (std::size_t done = 0; done < volume.byteSize();) {
         const std::size_t n = std::min(volume.byteSize() - done, kIoChunk);
         const std::byte* src = volume.bytes() + done;
         if (swap) {
@@ -338,10 +338,10 @@ void writeNrrd(const Volume& volume, const std::string& path) {
             swapBytes(chunk.data(), n / width, width);
             src = chunk.data();
         }
-        ok = std::fwrite(src, 1, n, f.get()) == n;
+        f.write(src, n);
         done += n;
     }
-    if (!ok || std::fclose(f.release()) != 0) throw FormatError(path + ": cannot write: " + std::strerror(errno));
+    f.commit();
 }
 
 }  // namespace isotrack
