@@ -58,6 +58,7 @@ int runBench(const BenchOptions& options) {
             configs.push_back({method, method == "track" ? std::min(threads, kMaxTrackThreads) : threads, {}, 0, 0, 0});
         }
     }
+    const std::vector<double> gridSeed = seedInGrid(source.volume, options.seed, WorldFrame::Lps);  // a world point
     for (int pass = 0; pass < options.repeat; ++pass) {
         for (std::size_t i = 0; i < configs.size(); ++i) {
             Config& config = configs[pass % 2 ? configs.size() - 1 - i : i];
@@ -67,7 +68,7 @@ int runBench(const BenchOptions& options) {
                 continue;
             }
             const TimedExtraction run =
-                extractTimed(source.volume, source.iso, config.method, table, config.threads, options.seed);
+                extractTimed(source.volume, source.iso, config.method, table, config.threads, gridSeed);
             config.seconds.push_back(run.seconds);
             config.triangles = run.mesh.triangleCount(), config.vertices = run.mesh.vertices.size();
             config.surfaces = run.surfaces.size();

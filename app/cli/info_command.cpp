@@ -14,6 +14,7 @@
 #include "cli/commands.h"
 #include "cli/source.h"
 #include "isotrack/io.h"
+#include "isotrack/orientation.h"
 #include "isotrack/volume.h"
 
 namespace isotrack::cli {
@@ -79,6 +80,10 @@ nlohmann::json infoJson(const InfoOptions& options, const Volume& volume, const 
         {"spacing", volume.spacing()},
         {"origin", volume.origin()},
         {"extent", {(d[0] - 1) * volume.spacing()[0], (d[1] - 1) * volume.spacing()[1], (d[2] - 1) * volume.spacing()[2]}},
+        {"frame", "lps"},
+        {"direction", volume.direction()},  // the index axes' unit vectors
+        {"orientation", orientationCode(volume.direction())},
+        {"world_bounds", worldBounds(volume)},
         {"memory_bytes", volume.byteSize()},
         {"non_finite", h.nonFinite},
     };
@@ -103,6 +108,14 @@ void printInfo(const InfoOptions& options, const Volume& volume, const Histogram
     std::printf("  spacing   %.10g %.10g %.10g\n", s[0], s[1], s[2]);
     std::printf("  origin    %.10g %.10g %.10g\n", o[0], o[1], o[2]);
     std::printf("  extent    %g x %g x %g\n", (d[0] - 1) * s[0], (d[1] - 1) * s[1], (d[2] - 1) * s[2]);
+    // World frame LPS; each row is an index axis's unit vector, as NRRD's space directions.
+    const Mat3d& m = volume.direction();
+    for (std::size_t a = 0; a < 3; ++a)
+        std::printf("  %-9s %.10g %.10g %.10g (%c axis)\n", a == 0 ? "direction" : "", m[a][0], m[a][1], m[a][2], "ijk"[a]);
+    std::printf("  orient    %s (world frame LPS)\n", orientationCode(m).c_str());
+    const auto box = worldBounds(volume);
+    std::printf("  world box %.10g %.10g %.10g .. %.10g %.10g %.10g\n", box[0][0], box[0][1], box[0][2], box[1][0],
+                box[1][1], box[1][2]);
     if (h.empty())
         std::printf("  range     none: no finite samples\n");
     else

@@ -99,4 +99,11 @@ Source loadSource(const SourceOptions& options) {
     return source;
 }
 
+std::vector<double> seedInGrid(const Volume& volume, const std::vector<double>& seed, WorldFrame frame) {
+    const FrameTransform transform = gridToFrame(volume, frame);
+    if (seed.size() != 3 || transform.identity()) return seed;
+    const Vec3d grid = transform.toGrid({seed[0], seed[1], seed[2]});
+    return {grid[0], grid[1], grid[2]};
+}
+
 }  // namespace isotrack::cli

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "isotrack/orientation.h"
 #include "isotrack/volume.h"
 
 namespace CLI {
@@ -50,5 +51,9 @@ struct Source {
 
 // Loads the file or builds the field. Throws isotrack's typed errors.
 Source loadSource(const SourceOptions& options);
+
+// A --seed point given in `frame` (the LPS world unless --frame says otherwise)
+// in the grid coordinates the extractors work in; an empty seed stays empty.
+std::vector<double> seedInGrid(const Volume& volume, const std::vector<double>& seed, WorldFrame frame);
 
 }  // namespace isotrack::cli

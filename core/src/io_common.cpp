@@ -222,6 +222,7 @@ Volume readSamples(const VolumeHeader& header, const SampleData& data) {
         if (afterSkip > needed && !data.trailingBytesAllowed)
             refuse(holder + " has " + std::to_string(afterSkip) + " (the sizes disagree)");
         Volume volume(header.dims, header.type, header.spacing, header.origin);
+        volume.setDirection(header.direction);
         seekTo(f, data.offset + data.skip, where);
         readExact(f, volume.bytes(), needed, where);
         if (data.bigEndian != hostIsBigEndian()) swapBytes(volume.bytes(), volume.sampleCount(), scalarTypeSize(header.type));
@@ -250,6 +251,7 @@ Volume readSamples(const VolumeHeader& header, const SampleData& data) {
                               " bytes field \"" + header.sizeField + "\" describes");
     }
     Volume volume(header.dims, header.type, header.spacing, header.origin);
+    volume.setDirection(header.direction);
     seekTo(f, data.offset, where);
     Inflater reader(f, data.compression, where);
     reader.skip(data.skip);

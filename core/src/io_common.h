@@ -59,6 +59,7 @@ struct VolumeHeader {
     ScalarType type = ScalarType::UInt8;
     Vec3d spacing{1, 1, 1};
     Vec3d origin{0, 0, 0};
+    Mat3d direction = kIdentityDirection;  // world (LPS) axes, see isotrack/volume.h
 };
 
 // The sample buffer size, or a FormatError naming sizeField when a dimension is

@@ -127,7 +127,8 @@ TEST_CASE("NIfTI-1 origin: sform, else qoffset, else zero; extra dims of 1 and e
     h.qformCode = 1;
     h.qoffset[0] = 1.5f, h.qoffset[1] = -2.0f, h.qoffset[2] = 3.25f;
     writeFile(dir.file("q.nii"), niftiFile(h, samples));
-    CHECK(loadNifti(dir.file("q.nii")).origin() == Vec3d{1.5, -2.0, 3.25});
+    // NIfTI's RAS qoffset, in isotrack's LPS world.
+    CHECK(loadNifti(dir.file("q.nii")).origin() == Vec3d{-1.5, 2.0, 3.25});
 
     h.qformCode = 0;
     writeFile(dir.file("none.nii"), niftiFile(h, samples));

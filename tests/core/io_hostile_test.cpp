@@ -183,9 +183,14 @@ TEST_CASE("hostile NIfTI-1 files are refused", "[core][io][hostile]") {
     refuseHeader("datatype.nii", [](NiftiHeader& h) { h.datatype = 999; }, "unknown datatype 999");
     refuseHeader("complex.nii", [](NiftiHeader& h) { h.datatype = 32, h.bitpix = 64; }, "complex64");
     refuseHeader("bitpix.nii", [](NiftiHeader& h) { h.bitpix = 8; }, "\"bitpix\"");
-    refuseHeader("pixdim.nii", [](NiftiHeader& h) { h.pixdim[2] = 0; }, "\"pixdim\"");
-    refuseHeader("pixnan.nii", [](NiftiHeader& h) { h.pixdim[3] = std::nanf(""); }, "\"pixdim\"");
-    refuseHeader("pixneg.nii", [](NiftiHeader& h) { h.pixdim[1] = -1; }, "\"pixdim\"");
+    // pixdim is the spacing of a qform (with a sform, the sform's columns are).
+    const auto qform = [](NiftiHeader& h) { h.sformCode = 0, h.qformCode = 1; };
+    refuseHeader("pixdim.nii", [&](NiftiHeader& h) { qform(h), h.pixdim[2] = 0; }, "\"pixdim\"");
+    refuseHeader("pixnan.nii", [&](NiftiHeader& h) { qform(h), h.pixdim[3] = std::nanf(""); }, "\"pixdim\"");
+    refuseHeader("pixneg.nii", [&](NiftiHeader& h) { qform(h), h.pixdim[1] = -1; }, "\"pixdim\"");
+    refuseHeader("srow0.nii", [](NiftiHeader& h) { h.srow[0][0] = h.srow[1][0] = h.srow[2][0] = 0; }, "\"srow\"");
+    refuseHeader("srownan.nii", [](NiftiHeader& h) { h.srow[1][1] = std::nanf(""); }, "\"srow\"");
+    refuseHeader("quatern.nii", [&](NiftiHeader& h) { qform(h), h.quatern[0] = 2; }, "\"quatern_b\"");
     refuseHeader("voxoffset.nii", [](NiftiHeader& h) { h.voxOffset = 100; }, "\"vox_offset\"");
     refuseHeader("voxfraction.nii", [](NiftiHeader& h) { h.voxOffset = 352.5f; }, "\"vox_offset\"");
     refuseHeader("voxinf.nii", [](NiftiHeader& h) { h.voxOffset = INFINITY; }, "\"vox_offset\"");
@@ -193,7 +198,7 @@ TEST_CASE("hostile NIfTI-1 files are refused", "[core][io][hostile]") {
     refuseHeader("slope.nii", [](NiftiHeader& h) { h.sclSlope = INFINITY; }, "\"scl_slope\"");
     refuseHeader("inter.nii", [](NiftiHeader& h) { h.sclSlope = 2, h.sclInter = NAN; }, "\"scl_inter\"");
     refuseHeader("far.nii", [](NiftiHeader& h) { h.srow[0][3] = 1e38f; }, "beyond float range");
-    refuseHeader("spread.nii", [](NiftiHeader& h) { h.pixdim[1] = 1e37f; }, "beyond float range");
+    refuseHeader("spread.nii", [](NiftiHeader& h) { h.srow[0][0] = -1e37f; }, "beyond float range");
     refuse("truncated.nii", file.substr(0, file.size() - 8), "has only 40");
     const std::string packed = gzipBytes(file);
     refuse("corrupt.nii.gz", corrupted(packed), "gzip data");
