@@ -6,7 +6,7 @@ repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
 packages=(cmake g++ make pkg-config libglfw3-dev libglm-dev libosmesa6-dev catch2 libstb-dev zlib1g-dev
           xvfb xauth libcli11-dev nlohmann-json3-dev libbenchmark-dev invesalius-examples
-          clang libclang-rt-14-dev)
+          clang libclang-rt-14-dev libgdcm-dev python3-pydicom python3-numpy)
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -13,6 +13,7 @@
 
 #include "cli/commands.h"
 #include "cli/source.h"
+#include "isotrack/dicom.h"
 #include "isotrack/io.h"
 #include "isotrack/orientation.h"
 #include "isotrack/volume.h"
@@ -67,6 +68,23 @@ std::string formatName(const std::string& path, const RawOptions& raw) {
     if (!raw.dims.empty()) return std::string("raw (") + raw.endian + " endian)";
     const auto format = volumeFormatOf(path);
     return format ? volumeFormatName(*format) : "unknown";
+}
+
+// The series of a DICOM folder, DICOMDIR or file; empty for other formats.
+std::vector<DicomSeries> dicomSeries(const InfoOptions& options) {
+    if (!options.raw.dims.empty() || volumeFormatOf(options.path) != VolumeFormat::Dicom) return {};
+    return listDicomSeries(options.path);
+}
+
+nlohmann::json seriesJson(const std::vector<DicomSeries>& list) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const DicomSeries& s : list)
+        out.push_back({{"uid", s.uid},
+                       {"description", s.description},
+                       {"modality", s.modality},
+                       {"images", s.images},
+                       {"dims", {s.dims[0], s.dims[1], s.dims[2]}}});
+    return out;
 }
 
 nlohmann::json infoJson(const InfoOptions& options, const Volume& volume, const Histogram& h) {
@@ -138,13 +156,27 @@ void printInfo(const InfoOptions& options, const Volume& volume, const Histogram
     }
 }
 
+void printSeries(const std::vector<DicomSeries>& list) {
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const DicomSeries& s = list[i];
+        std::printf("  %-9s %zu: %s %s\"%s\" %d x %d x %d, %zu file%s\n", i == 0 ? "series" : "", i + 1, s.uid.c_str(),
+                    s.modality.empty() ? "" : (s.modality + " ").c_str(), s.description.c_str(), s.dims[0], s.dims[1],
+                    s.dims[2], s.images, s.images == 1 ? "" : "s");
+    }
+}
+
 int runInfo(const InfoOptions& options) {
     const Volume volume = loadVolumeFile(options.path, options.raw);
     const Histogram h = histogram(volume, options.bins);
-    if (options.json)
-        std::printf("%s\n", infoJson(options, volume, h).dump().c_str());
-    else
+    const std::vector<DicomSeries> series = dicomSeries(options);
+    if (options.json) {
+        nlohmann::json j = infoJson(options, volume, h);
+        if (!series.empty()) j["series"] = seriesJson(series);
+        std::printf("%s\n", j.dump().c_str());
+    } else {
         printInfo(options, volume, h);
+        printSeries(series);
+    }
     return 0;
 }
 
@@ -154,7 +186,7 @@ RunCommand addInfoCommand(CLI::App& app) {
     auto options = std::make_shared<InfoOptions>();
     CLI::App* command = app.add_subcommand("info", "Describe a volume file: format, size, type, geometry, values");
     auto* volume = command->add_option("--volume", options->path,
-                                       "Volume file (.nrrd .nhdr .nii .nii.gz .mhd .mha .vtk; raw with --dims)")
+                                       "Volume file (.nrrd .nhdr .nii .nii.gz .mhd .mha .vtk .dcm, a DICOM folder or DICOMDIR; raw with --dims)")
                        ->required();
     addRawOptions(*command, options->raw, volume);
     command->add_option("--bins", options->bins, "Histogram bins (default 16)")->check(CLI::Range(1, 256));

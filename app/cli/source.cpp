@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include "isotrack/dicom.h"
 #include "isotrack/errors.h"
 #include "isotrack/fields.h"
 #include "isotrack/io.h"
@@ -43,6 +44,10 @@ void addRawOptions(CLI::App& command, RawOptions& raw, CLI::Option* volume) {
                         ->check(CLI::PositiveNumber);
     auto* endian = command.add_option("--endian", raw.endian, "Raw byte order: little (default) or big")
                        ->check(CLI::IsMember({"little", "big"}));
+    command.add_option("--series", raw.series,
+                       "DICOM folder or DICOMDIR: the series to read, by SeriesInstanceUID or number in `info` (default: the largest)")
+        ->needs(volume)
+        ->excludes(dims);
     dims->needs(volume);
     dims->needs(type);
     type->needs(dims);
@@ -54,7 +59,7 @@ void addSourceOptions(CLI::App& command, SourceOptions& options) {
     std::string names;
     for (const FieldInfo& field : builtinFields()) names += std::string(names.empty() ? "" : ", ") + field.name;
     auto* volume = command.add_option("--volume", options.volumePath,
-                                      "Volume file (.nrrd .nhdr .nii .nii.gz .mhd .mha .vtk; raw with --dims)");
+                                      "Volume file (.nrrd .nhdr .nii .nii.gz .mhd .mha .vtk .dcm, a DICOM folder or DICOMDIR; raw with --dims)");
     auto* field = command.add_option("--field", options.fieldSpec, "Built-in field NAME[:N] (" + names + ")");
     volume->excludes(field);
     field->excludes(volume);
@@ -63,6 +68,7 @@ void addSourceOptions(CLI::App& command, SourceOptions& options) {
 }
 
 Volume loadVolumeFile(const std::string& path, const RawOptions& raw) {
+    if (!raw.series.empty()) return loadDicom(path, raw.series);
     if (raw.dims.empty()) return loadVolume(path);
     RawLayout layout;
     for (std::size_t a = 0; a < 3; ++a) layout.dims[a] = raw.dims.at(a);

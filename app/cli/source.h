@@ -16,12 +16,14 @@ class Option;
 
 namespace isotrack::cli {
 
-// --dims NX,NY,NZ --type T [--spacing SX,SY,SZ] [--endian little|big]
+// --dims NX,NY,NZ --type T [--spacing SX,SY,SZ] [--endian little|big]; and for a
+// DICOM folder or DICOMDIR, --series UID|N.
 struct RawOptions {
     std::vector<int> dims;  // empty: the file has a header, the extension picks the loader
     std::string type;
     std::vector<double> spacing;
     std::string endian = "little";
+    std::string series;  // DICOM: --series UID|N, empty for the largest
 };
 
 struct SourceOptions {

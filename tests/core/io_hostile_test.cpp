@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "dicom_test_files.h"
 #include "io_test_files.h"
 #include "isotrack/errors.h"
 #include "isotrack/fields.h"
@@ -338,7 +339,66 @@ TEST_CASE("every loader refuses missing files, directories, empty files and nois
         }
     }
     writeFile(dir.file("scan.dcm"), kSamples);
-    expectRefused(dir.file("scan.dcm"), "unsupported volume file extension \".dcm\"");
+    expectRefused(dir.file("scan.dcm"), "not a DICOM file");
+    writeFile(dir.file("scan.img"), kSamples);
+    expectRefused(dir.file("scan.img"), "unsupported volume file extension \".img\"");
+}
+
+TEST_CASE("hostile DICOM files are refused", "[core][io][hostile][dicom]") {
+    TempDir dir;
+    const std::string good = DicomSlice(16, 12, 0).bytes();
+    writeFile(dir.file("good.dcm"), good);
+    REQUIRE(loadVolume(dir.file("good.dcm")).dims() == Dims{16, 12, 1});
+
+    expectRefused(dir.file("absent.dcm"), "cannot open");
+    writeFile(dir.file("empty.dcm"), "");
+    expectRefused(dir.file("empty.dcm"), "not a DICOM file");
+    for (unsigned seed = 40; seed < 60; ++seed) {
+        writeFile(dir.file("noise.dcm"), std::string(128, '\0') + "DICM" + randomBytes(1 + seed * 37, seed));
+        expectRefused(dir.file("noise.dcm"), "");
+    }
+    // Cut anywhere: in the header, in an element, in the pixel data.
+    for (std::size_t keep : {std::size_t(100), std::size_t(200), std::size_t(300), good.size() - 200, good.size() - 1}) {
+        CAPTURE(keep);
+        writeFile(dir.file("truncated.dcm"), good.substr(0, keep));
+        expectRefused(dir.file("truncated.dcm"), "");
+    }
+    DicomSlice lying(16, 12, 0);
+    lying.raw(0x7fe0, 0x0010, "OW", std::string(64, '\1'), 0xfffffff0u);
+    writeFile(dir.file("lying_pixels.dcm"), lying.bytes());
+    expectRefused(dir.file("lying_pixels.dcm"), "");
+    DicomSlice lyingHeader(16, 12, 0);
+    lyingHeader.raw(0x0009, 0x1010, "OB", std::string(8, '\1'), 0x7ffffff0u);
+    writeFile(dir.file("lying_header.dcm"), lyingHeader.bytes());
+    expectRefused(dir.file("lying_header.dcm"), "");
+    DicomSlice noPixels(16, 12, 0);
+    noPixels.erase(0x7fe0, 0x0010);
+    writeFile(dir.file("no_pixels.dcm"), noPixels.bytes());
+    expectRefused(dir.file("no_pixels.dcm"), "no pixel data");
+    DicomSlice absurd(16, 12, 0);
+    absurd.us(0x0028, 0x0010, 65535);
+    absurd.us(0x0028, 0x0011, 65535);
+    writeFile(dir.file("absurd.dcm"), absurd.bytes());
+    expectRefused(dir.file("absurd.dcm"), "pixel data holds 384");
+    DicomSlice colour(16, 12, 0);
+    colour.us(0x0028, 0x0002, 3);
+    writeFile(dir.file("colour.dcm"), colour.bytes());
+    expectRefused(dir.file("colour.dcm"), "SamplesPerPixel");
+    DicomSlice badOrientation(16, 12, 0);
+    badOrientation.text(0x0020, 0x0037, "DS", "1\\1\\0\\0\\1\\0");
+    writeFile(dir.file("bad_orientation.dcm"), badOrientation.bytes());
+    expectRefused(dir.file("bad_orientation.dcm"), "ImageOrientationPatient");
+
+    // Folders: mixed sizes within one series, nothing DICOM at all.
+    std::filesystem::create_directories(dir.file("mixed_sizes"));
+    writeFile(dir.file("mixed_sizes/a.dcm"), DicomSlice(16, 12, 0).bytes());
+    writeFile(dir.file("mixed_sizes/b.dcm"), DicomSlice(16, 13, 1).bytes());
+    expectRefused(dir.file("mixed_sizes"), "mixed sizes");
+    std::filesystem::create_directories(dir.file("not_dicom"));
+    writeFile(dir.file("not_dicom/x.txt"), "hello");
+    expectRefused(dir.file("not_dicom"), "no DICOM images");
+    writeFile(dir.file("DICOMDIR"), randomBytes(500, 3));
+    expectRefused(dir.file("DICOMDIR"), "DICOMDIR");
 }
 
 namespace {

@@ -20,16 +20,18 @@ namespace isotrack {
 
 // ---- Volumes ---------------------------------------------------------------
 
-enum class VolumeFormat : std::uint8_t { Nrrd, Nifti, MetaImage, VtkLegacy, Raw };
+enum class VolumeFormat : std::uint8_t { Nrrd, Nifti, MetaImage, VtkLegacy, Raw, Dicom };
 
 const char* volumeFormatName(VolumeFormat format);
 
 // The format loadVolume reads `path` as, from its extension (case-insensitive):
-// .nrrd .nhdr, .nii .nii.gz, .mhd .mha, .vtk, .raw; nullopt for anything else.
+// .nrrd .nhdr, .nii .nii.gz, .mhd .mha, .vtk, .raw; DICOM (isotrack/dicom.h) for
+// a folder, a file named DICOMDIR, .dcm or .dicom; nullopt for anything else.
 std::optional<VolumeFormat> volumeFormatOf(const std::string& path);
 
 // Chooses a loader by extension. A .raw file (or any other) needs loadRaw and
 // its layout; asking loadVolume for one is a FormatError listing the formats.
+// DICOM gives the largest series (loadDicom picks another).
 Volume loadVolume(const std::string& path);
 
 // 3D NRRD, attached (.nrrd) or detached (.nhdr + "data file:") header; raw or
