@@ -10,6 +10,8 @@
 
 #include <gdcmDataElement.h>
 #include <gdcmDataSet.h>
+#include <gdcmDicts.h>
+#include <gdcmGlobal.h>
 #include <gdcmImage.h>
 #include <gdcmImageReader.h>
 #include <gdcmReader.h>
@@ -18,10 +20,12 @@
 #include <gdcmStringFilter.h>
 #include <gdcmTag.h>
 #include <gdcmTrace.h>
+#include <gdcmVR.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <map>
@@ -125,6 +129,25 @@ private:
     std::string path_;
 };
 
+// GDCM asserts when a standard element it reads carries a VR the dictionary
+// does not allow, so such a file is refused first.
+void checkVrs(const std::string& path, const detail::DicomStructure& structure) {
+    const gdcm::Dicts& dicts = gdcm::Global::GetInstance().GetDicts();
+    for (const auto& [tagBits, spelled] : structure.explicitVrs) {
+        const gdcm::Tag tag(std::uint16_t(tagBits >> 16), std::uint16_t(tagBits & 0xffff));
+        if (tag.IsPrivate() || tag.GetElement() == 0) continue;
+        const gdcm::VR expected = dicts.GetDictEntry(tag).GetVR();
+        if (expected == gdcm::VR::INVALID) continue;
+        const gdcm::VR found = gdcm::VR::GetVRType(spelled.c_str());
+        if (found == gdcm::VR::INVALID || !expected.Compatible(found)) {
+            char name[16];
+            std::snprintf(name, sizeof name, "(%04X,%04X)", unsigned(tag.GetGroup()), unsigned(tag.GetElement()));
+            throw FormatError(path + ": element " + name + " has VR " + printable(spelled) + ", the standard gives it " +
+                              gdcm::VR::GetVRString(expected));
+        }
+    }
+}
+
 // The header of one file, up to its pixel data; nullopt for a file that is not
 // DICOM, or holds no image, when `required` is false.
 std::optional<Image> readImageHeader(const std::string& path, bool required) {
@@ -142,6 +165,7 @@ std::optional<Image> readImageHeader(const std::string& path, bool required) {
         if (!required) return std::nullopt;
         throw FormatError(path + ": not a DICOM file (no \"DICM\" after a 128-byte preamble, nor a dataset without one)");
     }
+    checkVrs(path, image.structure);
     gdcm::Reader reader;
     reader.SetFileName(path.c_str());
     bool read = false;
@@ -150,6 +174,9 @@ std::optional<Image> readImageHeader(const std::string& path, bool required) {
     } catch (const std::exception&) {
         read = false;
     }
+    // A file with the DICM preamble that GDCM cannot read is an error even in a
+    // folder: skipping it could silently drop the first or last slice.
+    if (!read && image.structure.hasMagic) throw FormatError(path + ": its DICOM header cannot be read");
     if (!read) return refuse("not a DICOM file, or its header is damaged or truncated");
     const HeaderFields f(reader.GetFile(), path);
     if (!f.has(0x0028, 0x0010) || !f.has(0x0028, 0x0011)) return refuse("holds no image (no Rows or Columns)");
@@ -202,7 +229,7 @@ std::string stringValue(const gdcm::DataSet& ds, const gdcm::Tag& tag) {
 // The files a DICOMDIR's IMAGE records name, relative to its folder.
 std::vector<std::string> dicomdirFiles(const std::string& path) {
     if (!detail::hasDicomMagic(path)) throw FormatError(path + ": not a DICOMDIR (no \"DICM\" after a 128-byte preamble)");
-    detail::checkDicomStructure(path);
+    checkVrs(path, detail::checkDicomStructure(path));
     gdcm::Reader reader;
     reader.SetFileName(path.c_str());
     bool read = false;

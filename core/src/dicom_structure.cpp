@@ -153,6 +153,7 @@ std::uint64_t Walker::dataset(std::uint64_t at, std::uint64_t end, bool delimite
             length = u32(h + 4);
         } else {
             vr.assign(reinterpret_cast<const char*>(h + 4), 2);
+            out_.explicitVrs.emplace_back(tag, vr);
             if (kLongVrs.count(vr)) {
                 readAt(at, h, 12, end, "an element");
                 length = u32(h + 8), header = 12;

@@ -9,6 +9,8 @@
 // holds it and that the file ends where its last element does.
 #include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace isotrack::detail {
 
@@ -18,6 +20,9 @@ struct DicomStructure {
     bool hasPixelData = false;
     bool encapsulated = false;         // compressed: fragments in items
     std::uint64_t pixelDataBytes = 0;  // native: the value's length; encapsulated: the fragments'
+    // Every element's tag and VR as an explicit-VR file spells it (none for implicit VR),
+    // for checking against the dictionary GDCM reads them by.
+    std::vector<std::pair<std::uint32_t, std::string>> explicitVrs;
 };
 
 // Returns the structure; a FormatError naming the file, the element and the

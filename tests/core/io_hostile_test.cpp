@@ -371,6 +371,11 @@ TEST_CASE("hostile DICOM files are refused", "[core][io][hostile][dicom]") {
     lyingHeader.raw(0x0009, 0x1010, "OB", std::string(8, '\1'), 0x7ffffff0u);
     writeFile(dir.file("lying_header.dcm"), lyingHeader.bytes());
     expectRefused(dir.file("lying_header.dcm"), "");
+    // A standard element with a VR the dictionary does not allow (GDCM would assert on it).
+    DicomSlice wrongVr(16, 12, 0);
+    wrongVr.text(0x0028, 0x0009, "AS", "0018");  // FrameIncrementPointer is AT
+    writeFile(dir.file("wrong_vr.dcm"), wrongVr.bytes());
+    expectRefused(dir.file("wrong_vr.dcm"), "(0028,0009) has VR AS");
     DicomSlice noPixels(16, 12, 0);
     noPixels.erase(0x7fe0, 0x0010);
     writeFile(dir.file("no_pixels.dcm"), noPixels.bytes());
