@@ -55,6 +55,11 @@ private:
     }
     std::uint32_t tagAt(const unsigned char* b) const { return std::uint32_t(u16(b)) << 16 | u16(b + 2); }
 
+    // A delimitation item's length must be 0 (GDCM would size a buffer by it).
+    std::uint64_t delimiterEnd(std::uint64_t at, std::uint32_t length) const {
+        if (length != 0) fail("a delimitation item declares " + std::to_string(length) + " bytes, not 0");
+        return at;
+    }
     std::uint64_t metaGroup(std::uint64_t at);
     // Walks elements from `at` to `end` (or, when `delimited`, up to the item's end tag); returns where it stopped.
     std::uint64_t dataset(std::uint64_t at, std::uint64_t end, bool delimited, int depth);
@@ -107,7 +112,7 @@ std::uint64_t Walker::fragments(std::uint64_t at, std::uint64_t end) {
         readAt(at, h, 8, end, "an encapsulated pixel data item");
         const std::uint32_t tag = tagAt(h), length = u32(h + 4);
         at += 8;
-        if (tag == kSequenceEnd) return at;
+        if (tag == kSequenceEnd) return delimiterEnd(at, length);
         if (tag != kItem) fail("encapsulated pixel data holds " + tagText(tag) + ", not an item");
         if (length == kUndefined || at + length > end)
             fail("truncated: a pixel data fragment declares " + std::to_string(length) + " bytes, " +
@@ -126,7 +131,7 @@ std::uint64_t Walker::sequence(std::uint64_t at, std::uint64_t length, std::uint
         readAt(at, h, 8, stop, "a sequence item");
         const std::uint32_t tag = tagAt(h), itemLength = u32(h + 4);
         at += 8;
-        if (delimited && tag == kSequenceEnd) return at;
+        if (delimited && tag == kSequenceEnd) return delimiterEnd(at, itemLength);
         if (tag != kItem) fail("a sequence holds " + tagText(tag) + ", not an item");
         if (itemLength == kUndefined) {
             at = dataset(at, stop, true, depth + 1);
@@ -146,7 +151,7 @@ std::uint64_t Walker::dataset(std::uint64_t at, std::uint64_t end, bool delimite
         unsigned char h[12];
         readAt(at, h, 8, end, "an element");
         const std::uint32_t tag = tagAt(h);
-        if (delimited && tag == kItemEnd) return at + 8;
+        if (delimited && tag == kItemEnd) return delimiterEnd(at + 8, u32(h + 4));
         std::string vr;
         std::uint64_t length = 0, header = 8;
         if (!explicitVr_ || (tag >> 16) == 0xfffe) {

@@ -376,6 +376,14 @@ TEST_CASE("hostile DICOM files are refused", "[core][io][hostile][dicom]") {
     wrongVr.text(0x0028, 0x0009, "AS", "0018");  // FrameIncrementPointer is AT
     writeFile(dir.file("wrong_vr.dcm"), wrongVr.bytes());
     expectRefused(dir.file("wrong_vr.dcm"), "(0028,0009) has VR AS");
+    // Encapsulated pixel data whose closing delimiter claims 2.3 GB (GDCM would allocate them).
+    DicomSlice delimiter(16, 12, 0);
+    const auto item = [](std::uint16_t element, std::uint32_t length) {
+        return encode(std::uint16_t(0xfffe), false) + encode(element, false) + encode(length, false);
+    };
+    delimiter.raw(0x7fe0, 0x0010, "OB", item(0xe000, 0) + item(0xe000, 4) + "abcd" + item(0xe0dd, 0x89000000u), 0xffffffffu);
+    writeFile(dir.file("delimiter.dcm"), delimiter.bytes());
+    expectRefused(dir.file("delimiter.dcm"), "delimitation item declares 2298478592 bytes");
     DicomSlice noPixels(16, 12, 0);
     noPixels.erase(0x7fe0, 0x0010);
     writeFile(dir.file("no_pixels.dcm"), noPixels.bytes());
