@@ -91,8 +91,8 @@ def nifti_big_endian(sizes, spacings, raw):
         b"\0" * 24,                                  # aux_file
         struct.pack(">hh", 1, 1),                    # qform_code, sform_code
         struct.pack(">6f", 0, 0, 0, 0, 0, 0),        # quatern_b..d, qoffset_x..z
-        struct.pack(">4f", sx, 0, 0, 0),             # srow_x
-        struct.pack(">4f", 0, sy, 0, 0),             # srow_y
+        struct.pack(">4f", -sx, 0, 0, 0),            # srow_x: NIfTI is RAS, so the NRRD's
+        struct.pack(">4f", 0, -sy, 0, 0),            # srow_y  i and j (LPS) point to -x, -y
         struct.pack(">4f", 0, 0, sz, 0),             # srow_z
         b"\0" * 16,                                  # intent_name
         b"n+1\0",

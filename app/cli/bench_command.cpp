@@ -61,6 +61,7 @@ int runBench(const BenchOptions& options) {
             configs.push_back({method, method == "track" ? std::min(threads, kMaxTrackThreads) : threads, {}, 0, 0, 0});
         }
     }
+    const std::vector<double> gridSeed = seedInGrid(source.volume, options.seed, WorldFrame::Lps);  // a world point
     for (int pass = 0; pass < options.repeat; ++pass) {
         for (std::size_t i = 0; i < configs.size(); ++i) {
             Config& config = configs[pass % 2 ? configs.size() - 1 - i : i];
@@ -70,7 +71,7 @@ int runBench(const BenchOptions& options) {
                 continue;
             }
             const TimedExtraction run = extractTimed(
-                source.volume, extractRequest(parseMethod(config.method), source.iso, table, config.threads, options.seed));
+                source.volume, extractRequest(parseMethod(config.method), source.iso, table, config.threads, gridSeed));
             config.seconds.push_back(run.seconds);
             config.triangles = 0, config.vertices = 0;
             config.surfaces = run.surfaces.size();

@@ -21,6 +21,7 @@
 #include "isotrack/extract.h"
 #include "isotrack/io.h"
 #include "isotrack/marching_cubes.h"
+#include "isotrack/orientation.h"
 #include "isotrack/tables.h"
 #include "isotrack/tracking.h"
 
@@ -39,6 +40,7 @@ struct ExtractOptions {
     std::string out;
     std::string outDir;     // --method all: one file per surface
     std::string outFormat;  // of the --out-dir files: ply, obj or stl
+    std::string frame = "lps";  // of the written meshes, the seed and the bounds
     bool json = false;
 };
 
@@ -99,6 +101,19 @@ std::vector<std::string> writeSurfaces(const ExtractOptions& options, const std:
     return files;
 }
 
+// A surface in the --frame: its mesh, and the bounds the summary reports (area
+// and enclosed volume stay in world units).
+void surfaceToFrame(Surface& surface, const FrameTransform& transform) {
+    if (transform.identity()) return;
+    transformMesh(surface.mesh, transform);
+    for (std::size_t v = 0; v < surface.mesh.vertices.size(); ++v)
+        for (std::size_t a = 0; a < 3; ++a) {
+            const double c = surface.mesh.vertices[v].position[a];
+            surface.stats.boundsMin[a] = v == 0 ? c : std::min(surface.stats.boundsMin[a], c);
+            surface.stats.boundsMax[a] = v == 0 ? c : std::max(surface.stats.boundsMax[a], c);
+        }
+}
+
 void countMesh(Extraction& out) {
     out.triangles = out.mesh.triangleCount();
     out.vertices = out.mesh.vertices.size();
@@ -108,9 +123,14 @@ void countMesh(Extraction& out) {
 // One run of the chosen method; only extraction is timed.
 Extraction extractOnce(const ExtractOptions& options, const Source& source, TableKind table) {
     const Method method = parseMethod(options.method);
-    TimedExtraction run = extractTimed(source.volume, extractRequest(method, source.iso, table, options.threads, options.seed));
+    const WorldFrame frame = parseWorldFrame(options.frame);
+    const std::vector<double> seed = seedInGrid(source.volume, options.seed, frame);
+    TimedExtraction run = extractTimed(source.volume, extractRequest(method, source.iso, table, options.threads, seed));
     Extraction out;
     out.seconds.push_back(run.seconds);
+    // Meshes leave the grid for the --frame here, after the timing.
+    const FrameTransform transform = gridToFrame(source.volume, frame);
+    for (Surface& surface : run.surfaces) surfaceToFrame(surface, transform);
     if (method == Method::Exhaustive) {
         out.mesh = std::move(run.surfaces.front().mesh);
         countMesh(out);
@@ -206,6 +226,7 @@ int runExtract(const ExtractOptions& options) {
             {"isovalue", source.iso},
             {"dims", {dims[0], dims[1], dims[2]}},
             {"spacing", source.volume.spacing()},
+            {"frame", worldFrameName(parseWorldFrame(options.frame))},
             {"scalar_type", scalarTypeName(source.volume.type())},
             {"triangles", result.triangles},
             {"vertices", result.vertices},
@@ -249,7 +270,8 @@ RunCommand addExtractCommand(CLI::App& app) {
     command->add_option("--method", options->method,
                         "mc: every cell, one mesh; track: the one surface through --seed; all: every surface separately")
         ->check(CLI::IsMember({"mc", "track", "all"}));
-    command->add_option("--seed", options->seed, "World point X,Y,Z: tracking starts at the crossed edge nearest to it")
+    command->add_option("--seed", options->seed,
+                        "Point X,Y,Z in --frame: tracking starts at the crossed edge nearest to it")
         ->delimiter(',')
         ->expected(3);
     command->add_option("--threads", options->threads, "Threads (default: all cores)")
@@ -264,6 +286,9 @@ RunCommand addExtractCommand(CLI::App& app) {
                         "Format of the --out-dir files: ply, obj or stl (default: --out's extension, else ply)")
         ->check(CLI::IsMember({"ply", "obj", "stl"}))
         ->needs(outDir);
+    command->add_option("--frame", options->frame,
+                        "Frame of the written meshes, --seed and bounds: lps (world, default), ras, or voxel (indices)")
+        ->check(CLI::IsMember({"lps", "ras", "voxel"}, CLI::ignore_case));
     command->add_flag("--json", options->json, "Print one JSON object on stdout");
     return [options] { return runExtract(*options); };
 }

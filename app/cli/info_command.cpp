@@ -13,7 +13,9 @@
 
 #include "cli/commands.h"
 #include "cli/source.h"
+#include "isotrack/dicom.h"
 #include "isotrack/io.h"
+#include "isotrack/orientation.h"
 #include "isotrack/volume.h"
 
 namespace isotrack::cli {
@@ -68,6 +70,23 @@ std::string formatName(const std::string& path, const RawOptions& raw) {
     return format ? volumeFormatName(*format) : "unknown";
 }
 
+// The series of a DICOM folder, DICOMDIR or file; empty for other formats.
+std::vector<DicomSeries> dicomSeries(const InfoOptions& options) {
+    if (!options.raw.dims.empty() || volumeFormatOf(options.path) != VolumeFormat::Dicom) return {};
+    return listDicomSeries(options.path);
+}
+
+nlohmann::json seriesJson(const std::vector<DicomSeries>& list) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const DicomSeries& s : list)
+        out.push_back({{"uid", s.uid},
+                       {"description", s.description},
+                       {"modality", s.modality},
+                       {"images", s.images},
+                       {"dims", {s.dims[0], s.dims[1], s.dims[2]}}});
+    return out;
+}
+
 nlohmann::json infoJson(const InfoOptions& options, const Volume& volume, const Histogram& h) {
     const Dims& d = volume.dims();
     nlohmann::json j{
@@ -79,6 +98,10 @@ nlohmann::json infoJson(const InfoOptions& options, const Volume& volume, const 
         {"spacing", volume.spacing()},
         {"origin", volume.origin()},
         {"extent", {(d[0] - 1) * volume.spacing()[0], (d[1] - 1) * volume.spacing()[1], (d[2] - 1) * volume.spacing()[2]}},
+        {"frame", "lps"},
+        {"direction", volume.direction()},  // the index axes' unit vectors
+        {"orientation", orientationCode(volume.direction())},
+        {"world_bounds", worldBounds(volume)},
         {"memory_bytes", volume.byteSize()},
         {"non_finite", h.nonFinite},
     };
@@ -103,6 +126,14 @@ void printInfo(const InfoOptions& options, const Volume& volume, const Histogram
     std::printf("  spacing   %.10g %.10g %.10g\n", s[0], s[1], s[2]);
     std::printf("  origin    %.10g %.10g %.10g\n", o[0], o[1], o[2]);
     std::printf("  extent    %g x %g x %g\n", (d[0] - 1) * s[0], (d[1] - 1) * s[1], (d[2] - 1) * s[2]);
+    // World frame LPS; each row is an index axis's unit vector, as NRRD's space directions.
+    const Mat3d& m = volume.direction();
+    for (std::size_t a = 0; a < 3; ++a)
+        std::printf("  %-9s %.10g %.10g %.10g (%c axis)\n", a == 0 ? "direction" : "", m[a][0], m[a][1], m[a][2], "ijk"[a]);
+    std::printf("  orient    %s (world frame LPS)\n", orientationCode(m).c_str());
+    const auto box = worldBounds(volume);
+    std::printf("  world box %.10g %.10g %.10g .. %.10g %.10g %.10g\n", box[0][0], box[0][1], box[0][2], box[1][0],
+                box[1][1], box[1][2]);
     if (h.empty())
         std::printf("  range     none: no finite samples\n");
     else
@@ -125,13 +156,27 @@ void printInfo(const InfoOptions& options, const Volume& volume, const Histogram
     }
 }
 
+void printSeries(const std::vector<DicomSeries>& list) {
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const DicomSeries& s = list[i];
+        std::printf("  %-9s %zu: %s %s\"%s\" %d x %d x %d, %zu file%s\n", i == 0 ? "series" : "", i + 1, s.uid.c_str(),
+                    s.modality.empty() ? "" : (s.modality + " ").c_str(), s.description.c_str(), s.dims[0], s.dims[1],
+                    s.dims[2], s.images, s.images == 1 ? "" : "s");
+    }
+}
+
 int runInfo(const InfoOptions& options) {
     const Volume volume = loadVolumeFile(options.path, options.raw);
     const Histogram h = histogram(volume, options.bins);
-    if (options.json)
-        std::printf("%s\n", infoJson(options, volume, h).dump().c_str());
-    else
+    const std::vector<DicomSeries> series = dicomSeries(options);
+    if (options.json) {
+        nlohmann::json j = infoJson(options, volume, h);
+        if (!series.empty()) j["series"] = seriesJson(series);
+        std::printf("%s\n", j.dump().c_str());
+    } else {
         printInfo(options, volume, h);
+        printSeries(series);
+    }
     return 0;
 }
 
@@ -141,7 +186,7 @@ RunCommand addInfoCommand(CLI::App& app) {
     auto options = std::make_shared<InfoOptions>();
     CLI::App* command = app.add_subcommand("info", "Describe a volume file: format, size, type, geometry, values");
     auto* volume = command->add_option("--volume", options->path,
-                                       "Volume file (.nrrd .nhdr .nii .nii.gz .mhd .mha .vtk; raw with --dims)")
+                                       "Volume file (.nrrd .nhdr .nii .nii.gz .mhd .mha .vtk .dcm, a DICOM folder or DICOMDIR; raw with --dims)")
                        ->required();
     addRawOptions(*command, options->raw, volume);
     command->add_option("--bins", options->bins, "Histogram bins (default 16)")->check(CLI::Range(1, 256));

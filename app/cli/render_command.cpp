@@ -96,6 +96,7 @@ std::vector<Mesh> extractSurfaces(const RenderOptions& options, const Source& so
     if (method == Method::Track) {
         const Vec3d point = options.seed.empty() ? volumeCentre(source.volume) : parsePoint(options.seed);
         seed.assign(point.begin(), point.end());
+        if (!options.seed.empty()) seed = seedInGrid(source.volume, seed, WorldFrame::Lps);  // a world point
     }
     TimedExtraction run = extractTimed(source.volume, extractRequest(method, source.iso, table, 1, seed));
     *seconds = run.seconds;

@@ -5,6 +5,7 @@
 #include <map>
 #include <utility>
 
+#include "isotrack/dicom.h"
 #include "isotrack/errors.h"
 #include "isotrack/fields.h"
 #include "isotrack/io.h"
@@ -51,6 +52,10 @@ void addRawOptions(CLI::App& command, RawOptions& raw, CLI::Option* volume) {
                         ->check(CLI::PositiveNumber);
     auto* endian = command.add_option("--endian", raw.endian, "Raw byte order: little (default) or big")
                        ->check(CLI::IsMember({"little", "big"}));
+    command.add_option("--series", raw.series,
+                       "DICOM folder or DICOMDIR: the series to read, by SeriesInstanceUID or number in `info` (default: the largest)")
+        ->needs(volume)
+        ->excludes(dims);
     dims->needs(volume);
     dims->needs(type);
     type->needs(dims);
@@ -62,11 +67,11 @@ void addSourceOptions(CLI::App& command, SourceOptions& options) {
     std::string names;
     for (const FieldInfo& field : builtinFields()) names += std::string(names.empty() ? "" : ", ") + field.name;
     auto* volume = command.add_option("--volume", options.volumePath,
-                                      "Volume file (.nrrd .nhdr .nii .nii.gz .mhd .mha .vtk; raw with --dims)");
+                                      "Volume file (.nrrd .nhdr .nii .nii.gz .mhd .mha .vtk .dcm, a DICOM folder or DICOMDIR; raw with --dims)");
     auto* field = command.add_option("--field", options.fieldSpec, "Built-in field NAME[:N] (" + names + ")");
     volume->excludes(field);
     field->excludes(volume);
-    command.add_option("--iso", options.iso, "Isovalue (default: the field's own, or the middle of the data range)");
+    command.add_option("--iso", options.iso, "Isovalue (default: the field's own, or from a file's histogram)");
     addRawOptions(command, options.raw, volume);
 }
 
@@ -85,6 +90,7 @@ RawLayout rawLayout(const RawOptions& raw) {
 }  // namespace
 
 Volume loadVolumeFile(const std::string& path, const RawOptions& raw) {
+    if (!raw.series.empty()) return loadDicom(path, raw.series);
     if (raw.dims.empty()) return loadVolume(path);
     return loadRaw(path, rawLayout(raw));
 }
@@ -100,6 +106,7 @@ Source loadSource(const SourceOptions& options) {
         spec.kind = VolumeSource::Kind::File;
         spec.text = options.volumePath;
         if (!options.raw.dims.empty()) spec.raw = rawLayout(options.raw);
+        spec.series = options.raw.series;
     }
     LoadedSource loaded = isotrack::loadSource(spec);
     Source source;
@@ -114,6 +121,13 @@ Source loadSource(const SourceOptions& options) {
     }
     if (!std::isfinite(source.iso)) throw InputError("--iso: must be a finite number");
     return source;
+}
+
+std::vector<double> seedInGrid(const Volume& volume, const std::vector<double>& seed, WorldFrame frame) {
+    const FrameTransform transform = gridToFrame(volume, frame);
+    if (seed.size() != 3 || transform.identity()) return seed;
+    const Vec3d grid = transform.toGrid({seed[0], seed[1], seed[2]});
+    return {grid[0], grid[1], grid[2]};
 }
 
 }  // namespace isotrack::cli

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "isotrack/orientation.h"
 #include "isotrack/volume.h"
 
 namespace CLI {
@@ -15,12 +16,14 @@ class Option;
 
 namespace isotrack::cli {
 
-// --dims NX,NY,NZ --type T [--spacing SX,SY,SZ] [--endian little|big]
+// --dims NX,NY,NZ --type T [--spacing SX,SY,SZ] [--endian little|big]; and for a
+// DICOM folder or DICOMDIR, --series UID|N.
 struct RawOptions {
     std::vector<int> dims;  // empty: the file has a header, the extension picks the loader
     std::string type;
     std::vector<double> spacing;
     std::string endian = "little";
+    std::string series;  // DICOM: --series UID|N, empty for the largest
 };
 
 struct SourceOptions {
@@ -53,5 +56,9 @@ struct Source {
 
 // Loads the file or builds the field. Throws isotrack's typed errors.
 Source loadSource(const SourceOptions& options);
+
+// A --seed point given in `frame` (the LPS world unless --frame says otherwise)
+// in the grid coordinates the extractors work in; an empty seed stays empty.
+std::vector<double> seedInGrid(const Volume& volume, const std::vector<double>& seed, WorldFrame frame);
 
 }  // namespace isotrack::cli

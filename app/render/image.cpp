@@ -5,6 +5,9 @@
 
 #include <cstring>
 #include <memory>
+#include <string>
+
+#include "isotrack/safe_write.h"
 
 namespace isotrack::render {
 
@@ -21,9 +24,15 @@ Image imageFromBottomUp(int width, int height, const std::vector<std::uint8_t>& 
 void writePng(const Image& image, const std::string& path) {
     std::vector<std::uint8_t> rgb(std::size_t(image.width) * std::size_t(image.height) * 3);
     for (std::size_t i = 0, n = rgb.size() / 3; i < n; ++i) std::memcpy(&rgb[i * 3], &image.rgba[i * 4], 3);
-    if (stbi_write_png(path.c_str(), image.width, image.height, 3, rgb.data(), image.width * 3) == 0) {
-        throw ImageError(path + ": cannot write PNG");
+    // Encoded in memory, then written through the safe writer (an existing file survives a failure).
+    std::string png;
+    const auto append = [](void* context, void* data, int size) {
+        static_cast<std::string*>(context)->append(static_cast<const char*>(data), std::size_t(size));
+    };
+    if (stbi_write_png_to_func(append, &png, image.width, image.height, 3, rgb.data(), image.width * 3) == 0) {
+        throw ImageError(path + ": cannot encode PNG");
     }
+    writeFileSafely(path, png);
 }
 
 Image readPng(const std::string& path) {

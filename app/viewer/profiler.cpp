@@ -5,6 +5,8 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "isotrack/safe_write.h"
+
 namespace isotrack::viewer {
 namespace {
 
@@ -190,9 +192,7 @@ void Profiler::writeTrace() {
     }
     for (const WorkerSpan& span : workerSpans_) events.push_back(complete(span.name, "worker", 3, span.startUs, span.durationUs));
     const json trace = {{"traceEvents", events}, {"displayTimeUnit", "ms"}};
-    std::ofstream file(tracePath_);
-    file << trace.dump() << '\n';
-    if (!file) throw std::runtime_error(tracePath_ + ": cannot write the profile");
+    writeFileSafely(tracePath_, trace.dump() + '\n');
     tracePath_.clear();
     records_.clear();
     workerSpans_.clear();

@@ -5,6 +5,7 @@
 set -uo pipefail
 isotrack=$1
 work=$2
+corpus=$(cd "$(dirname "${BASH_SOURCE[0]}")/../fuzz/corpus" && pwd) || exit 2
 rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 2
 
 nrrd_head='NRRD0004\ntype: short\ndimension: 3\nsizes: 4 3 2\nendian: little\nencoding: raw\n'
@@ -25,6 +26,30 @@ printf 'NRRD0004\ntype: float\ndimension: 3\nsizes: 2 2 2\nendian: little\nencod
 for _ in 1 2 3 4 5 6 7 8; do printf '\x00\x00\xc0\x7f' >> all_nan.nrrd; done
 mkdir -p folder.nrrd
 printf 'abc' > scan.dcm
+# DICOM, from the fuzz corpus's 8 x 6 slice: cut in the pixel data, cut before it,
+# a pixel data length past the end, 65535 x 65535 samples, and a folder holding a
+# series whose second file is another size.
+dicom=$corpus/dicom/explicit.dcm
+head -c 600 "$dicom" > truncated.dcm
+head -c 500 "$dicom" > no_pixels.dcm
+/usr/bin/python3 - "$dicom" <<'PY'
+import struct, sys
+good = open(sys.argv[1], "rb").read()
+pixels = good.rindex(b"\xe0\x7f\x10\x00OW")  # (7FE0,0010) OW, then 2 reserved bytes and the length
+open("lying_length.dcm", "wb").write(good[:pixels + 8] + struct.pack("<I", 0x7ffffff0) + good[pixels + 12:])
+absurd = good
+for tag in (b"\x28\x00\x10\x00US", b"\x28\x00\x11\x00US"):  # Rows, Columns
+    at = absurd.index(tag) + 8
+    absurd = absurd[:at] + b"\xff\xff" + absurd[at + 2:]
+open("absurd.dcm", "wb").write(absurd)
+rows = good.index(b"\x28\x00\x10\x00US") + 8
+bigger = good[:rows] + struct.pack("<H", 7) + good[rows + 2:]
+import os
+os.makedirs("mixed_series", exist_ok=True)
+open("mixed_series/a.dcm", "wb").write(good)
+position = b"1\\2\\3"
+open("mixed_series/b.dcm", "wb").write(bigger.replace(position, b"1\\2\\4"))
+PY
 
 failures=0
 check() {  # check FILE [extra isotrack args...]
@@ -54,6 +79,17 @@ check() {  # check FILE [extra isotrack args...]
 for f in truncated.nrrd zero_dims.nrrd absurd.nrrd unknown_type.nrrd corrupt_gzip.nrrd missing_data.nhdr \
          random.nii random.nii.gz short.mha truncated_ascii.vtk all_nan.nrrd folder.nrrd scan.dcm absent.vtk; do
     check "$f"
+done
+# The DICOM cases also say what is wrong.
+for case in "truncated.dcm|declares 96 bytes, 34 remain" "no_pixels.dcm|no pixel data" \
+            "lying_length.dcm|declares 2147483632 bytes" "absurd.dcm|65535 x 65535 x 1 samples need" \
+            "mixed_series|mixed sizes in one series"; do
+    expect=${case#*|}
+    check "${case%%|*}"
+    if ! grep -q "$expect" stderr.txt; then
+        echo "FAIL ${case%%|*}: stderr lacks \"$expect\": $(cat stderr.txt)"
+        failures=$((failures + 1))
+    fi
 done
 check short.mha --method all
 check all_nan.nrrd --method all

@@ -6,8 +6,8 @@
 // the value. They validate sizes against the bytes actually available (for
 // compressed data, the inflated size, measured first) before allocating, so
 // hostile files fail fast instead of exhausting memory. Samples keep their
-// native type; spacing and origin are kept, orientation is dropped (a Volume is
-// axis-aligned).
+// native type; spacing, origin and direction are kept, in the LPS world frame
+// (isotrack/orientation.h; docs/formats.md lists what each format declares).
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -20,38 +20,48 @@ namespace isotrack {
 
 // ---- Volumes ---------------------------------------------------------------
 
-enum class VolumeFormat : std::uint8_t { Nrrd, Nifti, MetaImage, VtkLegacy, Raw };
+enum class VolumeFormat : std::uint8_t { Nrrd, Nifti, MetaImage, VtkLegacy, Raw, Dicom };
 
 const char* volumeFormatName(VolumeFormat format);
 
 // The format loadVolume reads `path` as, from its extension (case-insensitive):
-// .nrrd .nhdr, .nii .nii.gz, .mhd .mha, .vtk, .raw; nullopt for anything else.
+// .nrrd .nhdr, .nii .nii.gz, .mhd .mha, .vtk, .raw; DICOM (isotrack/dicom.h) for
+// a folder, a file named DICOMDIR, .dcm or .dicom; nullopt for anything else.
 std::optional<VolumeFormat> volumeFormatOf(const std::string& path);
 
 // Chooses a loader by extension. A .raw file (or any other) needs loadRaw and
 // its layout; asking loadVolume for one is a FormatError listing the formats.
+// DICOM gives the largest series (loadDicom picks another).
 Volume loadVolume(const std::string& path);
 
 // 3D NRRD, attached (.nrrd) or detached (.nhdr + "data file:") header; raw or
 // gzip encoding; either endian; any scalar type Volume can hold. Spacing comes
-// from "spacings:" or the lengths of "space directions:"; origin from "space origin:".
+// from "spacings:" or the lengths of "space directions:", the direction from the
+// vectors themselves; origin from "space origin:". "space:" RAS or LAS is turned
+// into LPS; LPS, a space without anatomical meaning, or none is taken as given.
 Volume loadNrrd(const std::string& path);
 
-// Attached header, raw, little endian; keeps spacing and origin exactly.
+// Attached header, raw, little endian; keeps spacing and origin exactly. A volume
+// with a direction other than the identity is written with "space:
+// left-posterior-superior" and its turned "space directions".
 void writeNrrd(const Volume& volume, const std::string& path);
 
 // NIfTI-1 single file (.nii, or gzip-compressed .nii.gz), either endian (told by
 // sizeof_hdr), datatypes uint8/int8/int16/uint16/int32/uint32/float32/float64.
-// 3D only: dim[0] == 3, or more with every extra dimension 1. Spacing is
-// pixdim[1..3]; origin the sform translation when sform_code > 0, else qoffset
-// when qform_code > 0. When scl_slope is non-zero and (slope, inter) is not
-// (1, 0) the samples become float32 slope * v + inter; otherwise they stay native.
+// 3D only: dim[0] == 3, or more with every extra dimension 1. The transform is
+// the sform when sform_code > 0 (spacing from its columns' lengths; a sheared
+// sform is refused), else the qform when qform_code > 0 (quaternion, qfac,
+// pixdim, qoffset), else pixdim alone, taken as given; NIfTI's RAS becomes LPS.
+// When scl_slope is non-zero and (slope, inter) is not (1, 0) the samples become
+// float32 slope * v + inter; otherwise they stay native.
 Volume loadNifti(const std::string& path);
 
 // MetaImage: .mhd with a detached ElementDataFile (relative to the header) or
 // .mha with LOCAL data; MET_UCHAR/CHAR/SHORT/USHORT/INT/UINT/FLOAT/DOUBLE, one
 // channel; BinaryDataByteOrderMSB; ElementSpacing; Offset (or Origin, Position);
-// HeaderSize; CompressedData True (a zlib stream).
+// HeaderSize; CompressedData True (a zlib stream). The direction comes from
+// TransformMatrix (each axis's LPS vector in turn, as ITK writes it), else from
+// AnatomicalOrientation (ITK's letters: "RAI" is the identity).
 Volume loadMetaImage(const std::string& path);
 
 // VTK legacy STRUCTURED_POINTS, BINARY (big-endian, per the VTK spec) or ASCII:

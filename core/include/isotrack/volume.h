@@ -1,8 +1,13 @@
 #pragma once
 // A regular scalar grid kept in its native sample type.
 //
-// Samples are stored x-fastest: index = x + nx * (y + ny * z). World position of
-// sample (i, j, k) is origin + (i * sx, j * sy, k * sz).
+// Samples are stored x-fastest: index = x + nx * (y + ny * z). The extractors
+// work on the axis-aligned grid: sample (i, j, k) is at origin + (i * sx, j * sy, k * sz)
+// ("grid coordinates"). Its world position (LPS, as DICOM and ITK) also turns
+// about the origin by the direction matrix D:
+//     world = origin + D * (i * sx, j * sy, k * sz)
+// D's columns (direction()[a]) are unit vectors, orthogonal, det +1 or -1; they
+// are the identity for an axis-aligned volume. isotrack/orientation.h applies it.
 #include <array>
 #include <cassert>
 #include <cstddef>
@@ -25,6 +30,9 @@ inline constexpr int kMaxDimension = 1 << 20;
 
 using Dims = std::array<int, 3>;
 using Vec3d = std::array<double, 3>;
+// Three columns: m[a] is column a.
+using Mat3d = std::array<Vec3d, 3>;
+inline constexpr Mat3d kIdentityDirection{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
 
 class Volume {
 public:
@@ -47,6 +55,9 @@ public:
     const Vec3d& origin() const { return origin_; }
     void setSpacing(const Vec3d& spacing) { spacing_ = spacing; }
     void setOrigin(const Vec3d& origin) { origin_ = origin; }
+    // World (LPS) unit vector of each index axis; see the top of this file.
+    const Mat3d& direction() const { return direction_; }
+    void setDirection(const Mat3d& direction) { direction_ = direction; }
 
     std::size_t sampleCount() const {
         return std::size_t(dims_[0]) * std::size_t(dims_[1]) * std::size_t(dims_[2]);
@@ -79,6 +90,7 @@ private:
     ScalarType type_ = ScalarType::Float32;
     Vec3d spacing_{1, 1, 1};
     Vec3d origin_{0, 0, 0};
+    Mat3d direction_ = kIdentityDirection;
     std::vector<std::byte> bytes_;
     const std::byte* view_ = nullptr;  // the samples of a view, bytes_ then empty
     std::size_t viewBytes_ = 0;

@@ -63,14 +63,6 @@ FilePtr openForReading(const std::string& path, const std::string& where) {
 
 FilePtr openForReading(const std::string& path) { return openForReading(path, path); }
 
-FilePtr openForWriting(const std::string& path) {
-    std::error_code ec;
-    if (fs::is_directory(path, ec)) throw FormatError(path + ": cannot open: " + std::strerror(EISDIR));
-    FilePtr f(std::fopen(path.c_str(), "wb"));
-    if (!f) throw FormatError(path + ": cannot open: " + std::strerror(errno));
-    return f;
-}
-
 std::uint64_t fileSizeOf(const std::string& path, const std::string& where) {
     std::error_code ec;
     const std::uint64_t size = fs::file_size(path, ec);
@@ -230,6 +222,7 @@ Volume readSamples(const VolumeHeader& header, const SampleData& data) {
         if (afterSkip > needed && !data.trailingBytesAllowed)
             refuse(holder + " has " + std::to_string(afterSkip) + " (the sizes disagree)");
         Volume volume(header.dims, header.type, header.spacing, header.origin);
+        volume.setDirection(header.direction);
         seekTo(f, data.offset + data.skip, where);
         readExact(f, volume.bytes(), needed, where);
         if (data.bigEndian != hostIsBigEndian()) swapBytes(volume.bytes(), volume.sampleCount(), scalarTypeSize(header.type));
@@ -258,6 +251,7 @@ Volume readSamples(const VolumeHeader& header, const SampleData& data) {
                               " bytes field \"" + header.sizeField + "\" describes");
     }
     Volume volume(header.dims, header.type, header.spacing, header.origin);
+    volume.setDirection(header.direction);
     seekTo(f, data.offset, where);
     Inflater reader(f, data.compression, where);
     reader.skip(data.skip);
@@ -357,16 +351,15 @@ void checkMesh(const std::string& path, const Mesh& mesh, const std::vector<std:
                          std::to_string(mesh.triangleCount()) + " triangles");
 }
 
-BufferedOutput::BufferedOutput(const std::string& path) : path_(path), file_(openForWriting(path)) { buf_.reserve(kFlushBytes + 256); }
+BufferedOutput::BufferedOutput(const std::string& path) : file_(path) { buf_.reserve(kFlushBytes + 256); }
 
 void BufferedOutput::close() {
     flush();
-    if (std::fclose(file_.release()) != 0) throw FormatError(path_ + ": cannot write: " + std::strerror(errno));
+    file_.commit();
 }
 
 void BufferedOutput::flush() {
-    if (std::fwrite(buf_.data(), 1, buf_.size(), file_.get()) != buf_.size())
-        throw FormatError(path_ + ": cannot write: " + std::strerror(errno));
+    file_.write(buf_);
     buf_.clear();
 }
 

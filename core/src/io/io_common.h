@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "isotrack/mesh.h"
+#include "isotrack/safe_write.h"
 #include "isotrack/volume.h"
 
 namespace isotrack::detail {
@@ -29,7 +30,6 @@ using FilePtr = std::unique_ptr<std::FILE, FileCloser>;
 // `where` names the file in messages (a detached data file also names its header).
 FilePtr openForReading(const std::string& path, const std::string& where);
 FilePtr openForReading(const std::string& path);
-FilePtr openForWriting(const std::string& path);
 std::uint64_t fileSizeOf(const std::string& path, const std::string& where);
 
 // Text quoted in a message: at most maxChars characters, non-printables as '?'.
@@ -59,6 +59,7 @@ struct VolumeHeader {
     ScalarType type = ScalarType::UInt8;
     Vec3d spacing{1, 1, 1};
     Vec3d origin{0, 0, 0};
+    Mat3d direction = kIdentityDirection;  // world (LPS) axes, see isotrack/volume.h
 };
 
 // The sample buffer size, or a FormatError naming sizeField when a dimension is
@@ -92,7 +93,8 @@ Volume readSamples(const VolumeHeader& header, const SampleData& data);
 // component per triangle when given; else an InputError naming `path`.
 void checkMesh(const std::string& path, const Mesh& mesh, const std::vector<std::int32_t>* faceComponent);
 
-// A file written through a buffer that goes out a few MiB at a time.
+// A file written through a buffer that goes out a few MiB at a time, safely
+// (isotrack/safe_write.h): until close() the target is untouched.
 class BufferedOutput {
 public:
     explicit BufferedOutput(const std::string& path);
@@ -100,14 +102,13 @@ public:
     void maybeFlush() {
         if (buf_.size() >= kFlushBytes) flush();
     }
-    // Writes what is left and closes the file; a FormatError when either fails.
+    // Writes what is left and puts the file in place; a FormatError when either fails.
     void close();
 
 private:
     static constexpr std::size_t kFlushBytes = std::size_t(4) << 20;
     void flush();
-    const std::string& path_;
-    FilePtr file_;
+    SafeWriter file_;
     std::string buf_;
 };
 

@@ -4,6 +4,7 @@
 // the data file (relative to the header) or says LOCAL: the data follows the
 // header in the same file, as .mha files have it.
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
@@ -17,6 +18,7 @@
 #include "io_common.h"
 #include "isotrack/errors.h"
 #include "isotrack/io.h"
+#include "isotrack/orientation.h"
 
 namespace isotrack {
 
@@ -95,6 +97,7 @@ private:
     bool flag(const std::string& field, bool otherwise) const;
     Vec3d numbers(const std::string& field, Vec3d otherwise, bool positive) const;
     void parseGeometry();
+    void parseDirection();
     SampleData locateData() const;
 
     Header header_;
@@ -146,7 +149,52 @@ void MetaImageReader::parseGeometry() {
     for (const char* name : {"Offset", "Origin", "Position"})
         if (find(name)) originField = name;
     geometry_.origin = numbers(originField, {0, 0, 0}, false);
+    parseDirection();
     checkGeometry(geometry_, spacingField, originField);
+}
+
+// TransformMatrix (or its older names) lists each index axis's LPS vector in
+// turn, as ITK writes it; without one, AnatomicalOrientation's letters name the
+// side each axis comes from (ITK's "RAI" is the identity).
+void MetaImageReader::parseDirection() {
+    for (const char* field : {"TransformMatrix", "Rotation", "Orientation"}) {
+        const std::string* text = find(field);
+        if (!text) continue;
+        const std::vector<std::string> words = splitWords(*text);
+        Mat3d axes{};
+        bool ok = words.size() == 9;
+        for (std::size_t k = 0; ok && k < 9; ++k) {
+            const auto v = parseFinite(words[k]);
+            ok = v.has_value();
+            if (ok) axes[k / 3][k % 3] = *v;
+        }
+        const auto direction = ok ? directionFromAxes(axes) : std::nullopt;
+        if (!direction) fail(field, "expected 9 numbers making 3 orthogonal unit vectors, got \"" + printable(*text) + "\"");
+        geometry_.direction = *direction;
+        return;
+    }
+    const std::string* code = find("AnatomicalOrientation");
+    if (!code || lowerCase(*code) == "?" || code->empty()) return;
+    // The LPS axis and sign of each letter, pointing away from that side.
+    Mat3d direction{};
+    bool used[3] = {false, false, false};
+    bool ok = code->size() == 3;
+    for (std::size_t a = 0; ok && a < 3; ++a) {
+        const char letter = char(std::toupper(static_cast<unsigned char>((*code)[a])));
+        const char* from = "RAILPS";
+        const char* at = std::strchr(from, letter);
+        ok = letter != '\0' && at != nullptr;
+        if (!ok) break;
+        const auto k = std::size_t(at - from);
+        const std::size_t axis = k % 3;
+        ok = !used[axis];
+        used[axis] = true;
+        direction[a] = {0, 0, 0};
+        direction[a][axis] = k < 3 ? 1.0 : -1.0;
+    }
+    if (!ok)
+        fail("AnatomicalOrientation", "expected three letters, one from each of R/L, A/P, I/S, got \"" + printable(*code) + "\"");
+    geometry_.direction = direction;
 }
 
 SampleData MetaImageReader::locateData() const {

@@ -12,6 +12,7 @@
 #include "io_common.h"
 #include "isotrack/errors.h"
 #include "isotrack/io.h"
+#include "isotrack/orientation.h"
 
 namespace isotrack {
 
@@ -23,8 +24,8 @@ constexpr std::size_t kHeaderBytes = 348;
 
 // Offsets into the header, from nifti1.h.
 constexpr std::size_t kSizeofHdr = 0, kDim = 40, kDatatype = 70, kBitpix = 72, kPixdim = 76, kVoxOffset = 108,
-                      kSclSlope = 112, kSclInter = 116, kQformCode = 252, kSformCode = 254, kQoffset = 268,
-                      kSrow = 280, kMagic = 344;
+                      kSclSlope = 112, kSclInter = 116, kQformCode = 252, kSformCode = 254, kQuatern = 256,
+                      kQoffset = 268, kSrow = 280, kMagic = 344;
 
 struct Datatype {
     int code;
@@ -78,6 +79,14 @@ void readHeaderBytes(const std::string& path, bool gzip, unsigned char (&bytes)[
                           std::to_string(kHeaderBytes) + "-byte header");
 }
 
+// Row by row, as srow_x..z write it.
+std::string matrixText(const Mat3d& columns) {
+    std::string text;
+    for (std::size_t r = 0; r < 3; ++r)
+        for (std::size_t c = 0; c < 3; ++c) text += (r + c ? " " : "") + numberText(columns[c][r]);
+    return text;
+}
+
 class NiftiHeader {
 public:
     NiftiHeader(std::string path, const unsigned char* bytes);
@@ -93,6 +102,7 @@ private:
     void readDims(const HeaderBytes& h);
     void readType(const HeaderBytes& h);
     void readGeometry(const HeaderBytes& h);
+    Mat3d qformRotation(const HeaderBytes& h) const;
     void readScaling(const HeaderBytes& h);
 };
 
@@ -162,16 +172,52 @@ void NiftiHeader::readType(const HeaderBytes& h) {
 }
 
 void NiftiHeader::readGeometry(const HeaderBytes& h) {
+    // NIfTI's world is RAS; isotrack's is LPS (isotrack/orientation.h). Without
+    // sform or qform (method 1) the grid is taken as given, as ANALYZE files are.
     for (std::size_t a = 0; a < 3; ++a) geometry.spacing[a] = double(h.f32(kPixdim + 4 * (a + 1)));
-    // Orientation is dropped; the translation of the chosen transform is the origin.
+    const char* spacingField = "pixdim";
     const char* originField = "qoffset";
     if (h.i16(kSformCode) > 0) {
-        for (std::size_t a = 0; a < 3; ++a) geometry.origin[a] = double(h.f32(kSrow + 16 * a + 12));
-        originField = "srow";
+        spacingField = originField = "srow";
+        Mat3d axes{};
+        Vec3d translation{};
+        for (std::size_t r = 0; r < 3; ++r) {
+            for (std::size_t c = 0; c < 3; ++c) axes[c][r] = double(h.f32(kSrow + 16 * r + 4 * c));
+            translation[r] = double(h.f32(kSrow + 16 * r + 12));
+        }
+        const auto direction = directionFromAxes(axes, &geometry.spacing);
+        if (!direction)
+            fail("srow", "the sform's columns must be non-zero and orthogonal (no shear), got " + matrixText(axes));
+        geometry.direction = flipRasLps(*direction);
+        geometry.origin = flipRasLps(translation);
     } else if (h.i16(kQformCode) > 0) {
-        for (std::size_t a = 0; a < 3; ++a) geometry.origin[a] = double(h.f32(kQoffset + 4 * a));
+        geometry.direction = flipRasLps(qformRotation(h));
+        Vec3d offset{};
+        for (std::size_t a = 0; a < 3; ++a) offset[a] = double(h.f32(kQoffset + 4 * a));
+        geometry.origin = flipRasLps(offset);
     }
-    checkGeometry(geometry, "pixdim", originField);
+    checkGeometry(geometry, spacingField, originField);
+}
+
+// The qform's rotation (quatern_b..d, a from the unit norm) with pixdim[0]'s
+// qfac = -1 mirroring k, as nifti1.h defines it.
+Mat3d NiftiHeader::qformRotation(const HeaderBytes& h) const {
+    const double b = double(h.f32(kQuatern)), c = double(h.f32(kQuatern + 4)), d = double(h.f32(kQuatern + 8));
+    if (!std::isfinite(b) || !std::isfinite(c) || !std::isfinite(d))
+        fail("quatern_b", "the quaternion must be finite, got " + numberText(b) + " " + numberText(c) + " " + numberText(d));
+    const double sum = b * b + c * c + d * d;
+    if (sum > 1.0 + 1e-6)
+        fail("quatern_b", "the quaternion's (b, c, d) must have length <= 1, got " + numberText(b) + " " +
+                              numberText(c) + " " + numberText(d));
+    const double a = sum >= 1.0 ? 0.0 : std::sqrt(1.0 - sum);
+    const double qfac = h.f32(kPixdim) < 0 ? -1.0 : 1.0;
+    Mat3d r{};  // columns
+    r[0] = {a * a + b * b - c * c - d * d, 2 * (b * c + a * d), 2 * (b * d - a * c)};
+    r[1] = {2 * (b * c - a * d), a * a + c * c - b * b - d * d, 2 * (c * d + a * b)};
+    r[2] = {qfac * 2 * (b * d + a * c), qfac * 2 * (c * d - a * b), qfac * (a * a + d * d - b * b - c * c)};
+    const auto direction = directionFromAxes(r);
+    if (!direction) fail("quatern_b", "the quaternion does not make a rotation");
+    return *direction;
 }
 
 void NiftiHeader::readScaling(const HeaderBytes& h) {
@@ -209,6 +255,7 @@ Volume loadNifti(const std::string& path) {
     Volume native = readSamples(header.geometry, header.data);
     if (!scaled) return native;
     Volume scaledVolume(native.dims(), ScalarType::Float32, native.spacing(), native.origin());
+    scaledVolume.setDirection(native.direction());
     visitSamples(native, [&](const auto* samples) {
         scaleInto(samples, scaledVolume.data<float>(), native.sampleCount(), header.slope, header.inter);
     });

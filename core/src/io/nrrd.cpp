@@ -18,6 +18,7 @@
 #include "io_common.h"
 #include "isotrack/errors.h"
 #include "isotrack/io.h"
+#include "isotrack/orientation.h"
 
 namespace isotrack {
 
@@ -171,13 +172,32 @@ private:
         return *v;
     }
     long long skipField(const std::string& field, long long minimum) const;
+    void parseSpace();
     void parseGeometry();
+    Vec3d toLps(const Vec3d& v) const { return {v[0] * toLps_[0], v[1] * toLps_[1], v[2] * toLps_[2]}; }
+    Mat3d toLps(const Mat3d& m) const { return {toLps(m[0]), toLps(m[1]), toLps(m[2])}; }
     std::uint64_t skipLines(long long lines, const SampleData& data, std::FILE* headerFile) const;
 
     std::string path_;
     Header header_;
     VolumeHeader geometry_;
+    Vec3d toLps_{1, 1, 1};  // signs that take "space" to LPS
 };
+
+// The anatomical spaces isotrack knows; others (scanner-xyz, 3D-right-handed...)
+// and no "space" at all are taken as given.
+void NrrdReader::parseSpace() {
+    const std::string* space = find("space");
+    if (!space) return;
+    const std::string name = lowerCase(*space);
+    if (name == "right-anterior-superior" || name == "ras") {
+        toLps_ = {-1, -1, 1};
+    } else if (name == "left-anterior-superior" || name == "las") {
+        toLps_ = {1, -1, 1};
+    } else if (name.find("time") != std::string::npos) {
+        fail("space", "\"" + printable(*space) + "\" has a time axis; only 3D spaces are supported");
+    }
+}
 
 long long NrrdReader::skipField(const std::string& field, long long minimum) const {
     const std::string* text = find(field);
@@ -189,6 +209,7 @@ long long NrrdReader::skipField(const std::string& field, long long minimum) con
 }
 
 void NrrdReader::parseGeometry() {
+    parseSpace();
     const std::string& dimension = require("dimension");
     if (dimension != "3") fail("dimension", "expected 3, got \"" + printable(dimension) + "\"");
 
@@ -210,13 +231,10 @@ void NrrdReader::parseGeometry() {
         const auto vectors = parseVectors(*dirs);
         if (!vectors || vectors->size() != 3)
             fail("space directions", "expected 3 vectors like (1,0,0), got \"" + printable(*dirs) + "\"");
-        // Only the lengths survive: Volume is axis-aligned.
-        for (std::size_t a = 0; a < 3; ++a) {
-            const Vec3d& v = (*vectors)[a];
-            spacing[a] = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-        }
-        if (std::any_of(spacing.begin(), spacing.end(), [](double s) { return !(s > 0) || !std::isfinite(s); }))
-            fail("space directions", "expected 3 non-zero vectors, got \"" + printable(*dirs) + "\"");
+        const auto direction = directionFromAxes({(*vectors)[0], (*vectors)[1], (*vectors)[2]}, &spacing);
+        if (!direction)
+            fail("space directions", "expected 3 non-zero, orthogonal vectors, got \"" + printable(*dirs) + "\"");
+        geometry_.direction = toLps(*direction);
     } else if (const std::string* spacings = find("spacings")) {
         const auto parsed = parseVec3(splitWords(*spacings), true);
         if (!parsed) fail("spacings", "expected 3 positive numbers, got \"" + printable(*spacings) + "\"");
@@ -227,7 +245,7 @@ void NrrdReader::parseGeometry() {
         const auto vectors = parseVectors(*originText);
         if (!vectors || vectors->size() != 1)
             fail("space origin", "expected one vector like (0,0,0), got \"" + printable(*originText) + "\"");
-        geometry_.origin = vectors->front();
+        geometry_.origin = toLps(vectors->front());
     }
     checkGeometry(geometry_, find("space directions") ? "space directions" : "spacings", "space origin");
 }
@@ -311,26 +329,39 @@ Volume loadNrrd(const std::string& path) {
 
 void writeNrrd(const Volume& volume, const std::string& path) {
     if (volume.byteSize() == 0) throw InputError(path + ": cannot write an empty volume");
-    FilePtr f = openForWriting(path);
+    SafeWriter f(path);
     char buf[256];
     std::string header = "NRRD0004\n# written by isotrack\n";
-    header += std::string("type: ") + nrrdTypeName(volume.type()) + "\ndimension: 3\nspace dimension: 3\n";
+    // An axis-aligned volume keeps the header it always had; a turned one says its space.
+    const bool aligned = isIdentity(volume.direction());
+    header += std::string("type: ") + nrrdTypeName(volume.type()) + "\ndimension: 3\n" +
+              (aligned ? "space dimension: 3\n" : "space: left-posterior-superior\n");
     header += "sizes: " + std::to_string(volume.dims()[0]) + " " + std::to_string(volume.dims()[1]) + " " +
               std::to_string(volume.dims()[2]) + "\n";
     const Vec3d& s = volume.spacing();
     const Vec3d& o = volume.origin();
     // %.17g so spacing and origin read back bit-exact.
-    std::snprintf(buf, sizeof buf, "space directions: (%.17g,0,0) (0,%.17g,0) (0,0,%.17g)\n", s[0], s[1], s[2]);
-    header += buf;
+    if (aligned) {
+        std::snprintf(buf, sizeof buf, "space directions: (%.17g,0,0) (0,%.17g,0) (0,0,%.17g)\n", s[0], s[1], s[2]);
+        header += buf;
+    } else {
+        header += "space directions:";
+        for (std::size_t a = 0; a < 3; ++a) {
+            const Vec3d& d = volume.direction()[a];
+            std::snprintf(buf, sizeof buf, " (%.17g,%.17g,%.17g)", s[a] * d[0], s[a] * d[1], s[a] * d[2]);
+            header += buf;
+        }
+        header += "\n";
+    }
     std::snprintf(buf, sizeof buf, "space origin: (%.17g,%.17g,%.17g)\n", o[0], o[1], o[2]);
     header += buf;
     header += "endian: little\nencoding: raw\n\n";
-    bool ok = std::fwrite(header.data(), 1, header.size(), f.get()) == header.size();
+    f.write(header);
 
     const std::size_t width = scalarTypeSize(volume.type());
     const bool swap = hostIsBigEndian() && width > 1;
     std::vector<std::byte> chunk;
-    for (std::size_t done = 0; ok && done < volume.byteSize();) {
+    for (std::size_t done = 0; done < volume.byteSize();) {
         const std::size_t n = std::min(volume.byteSize() - done, kIoChunk);
         const std::byte* src = volume.bytes() + done;
         if (swap) {
@@ -338,10 +369,10 @@ void writeNrrd(const Volume& volume, const std::string& path) {
             swapBytes(chunk.data(), n / width, width);
             src = chunk.data();
         }
-        ok = std::fwrite(src, 1, n, f.get()) == n;
+        f.write(src, n);
         done += n;
     }
-    if (!ok || std::fclose(f.release()) != 0) throw FormatError(path + ": cannot write: " + std::strerror(errno));
+    f.commit();
 }
 
 }  // namespace isotrack

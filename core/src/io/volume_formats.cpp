@@ -2,6 +2,7 @@
 #include <string>
 
 #include "io_common.h"
+#include "isotrack/dicom.h"
 #include "isotrack/errors.h"
 #include "isotrack/io.h"
 
@@ -9,7 +10,7 @@ namespace isotrack {
 
 namespace {
 
-constexpr const char* kHeaderExtensions = ".nrrd, .nhdr, .nii, .nii.gz, .mhd, .mha, .vtk";
+constexpr const char* kHeaderExtensions = ".nrrd, .nhdr, .nii, .nii.gz, .mhd, .mha, .vtk, .dcm, a DICOM folder or DICOMDIR";
 
 }  // namespace
 
@@ -20,6 +21,7 @@ const char* volumeFormatName(VolumeFormat format) {
         case VolumeFormat::MetaImage: return "MetaImage";
         case VolumeFormat::VtkLegacy: return "VTK legacy";
         case VolumeFormat::Raw: return "raw";
+        case VolumeFormat::Dicom: return "DICOM";
     }
     return "unknown";
 }
@@ -31,6 +33,7 @@ std::optional<VolumeFormat> volumeFormatOf(const std::string& path) {
     if (ext == ".mhd" || ext == ".mha") return VolumeFormat::MetaImage;
     if (ext == ".vtk") return VolumeFormat::VtkLegacy;
     if (ext == ".raw") return VolumeFormat::Raw;
+    if (isDicomPath(path)) return VolumeFormat::Dicom;
     return std::nullopt;
 }
 
@@ -45,6 +48,7 @@ Volume loadVolume(const std::string& path) {
         case VolumeFormat::Nifti: return loadNifti(path);
         case VolumeFormat::MetaImage: return loadMetaImage(path);
         case VolumeFormat::VtkLegacy: return loadVtkLegacy(path);
+        case VolumeFormat::Dicom: return loadDicom(path);
         case VolumeFormat::Raw: break;
     }
     throw FormatError(path + ": a raw file has no header: give its dims and type, or use a format that has one (" +

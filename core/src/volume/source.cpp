@@ -3,7 +3,9 @@
 #include <cmath>
 #include <utility>
 
+#include "isotrack/dicom.h"
 #include "isotrack/fields.h"
+#include "isotrack/isovalue.h"
 
 namespace isotrack {
 
@@ -16,10 +18,16 @@ LoadedSource loadSource(const VolumeSource& source) {
         loaded.defaultIso = fieldDefaultIso(spec.name);
         return loaded;
     }
-    loaded.volume = source.raw ? loadRaw(source.text, *source.raw) : loadVolume(source.text);
+    if (source.raw) {
+        loaded.volume = loadRaw(source.text, *source.raw);
+    } else if (!source.series.empty()) {
+        loaded.volume = loadDicom(source.text, source.series);
+    } else {
+        loaded.volume = loadVolume(source.text);
+    }
     loaded.name = source.text;
     const auto range = loaded.volume.range();
-    if (std::isfinite(range[0])) loaded.defaultIso = (range[0] + range[1]) / 2.0;
+    if (std::isfinite(range[0])) loaded.defaultIso = suggestIsovalue(loaded.volume);
     return loaded;
 }
 

@@ -58,6 +58,7 @@ TEST_CASE("the CT as attached, detached and gzip NRRD, MetaImage and VTK legacy 
         REQUIRE(sameSamples(v, reference));
         CHECK(v.spacing() == reference.spacing());
         CHECK(v.origin() == reference.origin());
+        CHECK(v.direction() == reference.direction());
         const Mesh mesh = marchingCubes(v, kSkullIso);
         CHECK(mesh.triangleCount() == referenceMesh.triangleCount());
         CHECK(sameMesh(mesh, referenceMesh));
@@ -74,6 +75,9 @@ TEST_CASE("the CT as big-endian NIfTI and its .nii.gz gives one identical surfac
     REQUIRE(sameSamples(nii, nrrd));
     REQUIRE(sameSamples(gz, nrrd));
     CHECK(nii.spacing() == gz.spacing());
+    // The NIfTI's sform is the NRRD's grid in RAS: the same LPS direction and origin.
+    CHECK(nii.direction() == nrrd.direction());
+    CHECK(nii.origin() == nrrd.origin());
     // pixdim is float32: the NRRD's spacing, rounded.
     for (std::size_t a = 0; a < 3; ++a) CHECK(nii.spacing()[a] == double(float(nrrd.spacing()[a])));
     const Mesh fromNii = marchingCubes(nii, kSkullIso);

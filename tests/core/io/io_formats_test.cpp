@@ -127,7 +127,8 @@ TEST_CASE("NIfTI-1 origin: sform, else qoffset, else zero; extra dims of 1 and e
     h.qformCode = 1;
     h.qoffset[0] = 1.5f, h.qoffset[1] = -2.0f, h.qoffset[2] = 3.25f;
     writeFile(dir.file("q.nii"), niftiFile(h, samples));
-    CHECK(loadNifti(dir.file("q.nii")).origin() == Vec3d{1.5, -2.0, 3.25});
+    // NIfTI's RAS qoffset, in isotrack's LPS world.
+    CHECK(loadNifti(dir.file("q.nii")).origin() == Vec3d{-1.5, 2.0, 3.25});
 
     h.qformCode = 0;
     writeFile(dir.file("none.nii"), niftiFile(h, samples));
@@ -288,6 +289,8 @@ TEST_CASE("loadVolume picks the loader by extension, case-insensitively", "[core
     CHECK(volumeFormatOf("b.MHA") == VolumeFormat::MetaImage);
     CHECK(volumeFormatOf("b.vtk") == VolumeFormat::VtkLegacy);
     CHECK(volumeFormatOf("b.raw") == VolumeFormat::Raw);
+    CHECK(volumeFormatOf("b.DCM") == VolumeFormat::Dicom);
+    CHECK(volumeFormatOf("a/DICOMDIR") == VolumeFormat::Dicom);
     CHECK_FALSE(volumeFormatOf("b.gz"));
     CHECK_FALSE(volumeFormatOf("b.tar.gz"));
     CHECK_FALSE(volumeFormatOf("noextension"));
@@ -296,8 +299,8 @@ TEST_CASE("loadVolume picks the loader by extension, case-insensitively", "[core
     const Volume v = patterned(ScalarType::Int8);
     writeFile(dir.file("UPPER.MHA"), metaHeader(v, false, "LOCAL") + sampleBytes(v, false));
     requireSameVolume(loadVolume(dir.file("UPPER.MHA")), v);
-    CHECK_THROWS_WITH(loadVolume(dir.file("v.dcm")),
-                      Catch::Contains("v.dcm") && Catch::Contains("\".dcm\"") && Catch::Contains(".nii.gz"));
+    CHECK_THROWS_WITH(loadVolume(dir.file("v.img")),
+                      Catch::Contains("v.img") && Catch::Contains("\".img\"") && Catch::Contains(".nii.gz"));
 }
 
 namespace {

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "dicom_test_files.h"
 #include "io_test_files.h"
 #include "isotrack/errors.h"
 #include "isotrack/fields.h"
@@ -183,9 +184,14 @@ TEST_CASE("hostile NIfTI-1 files are refused", "[core][io][hostile]") {
     refuseHeader("datatype.nii", [](NiftiHeader& h) { h.datatype = 999; }, "unknown datatype 999");
     refuseHeader("complex.nii", [](NiftiHeader& h) { h.datatype = 32, h.bitpix = 64; }, "complex64");
     refuseHeader("bitpix.nii", [](NiftiHeader& h) { h.bitpix = 8; }, "\"bitpix\"");
-    refuseHeader("pixdim.nii", [](NiftiHeader& h) { h.pixdim[2] = 0; }, "\"pixdim\"");
-    refuseHeader("pixnan.nii", [](NiftiHeader& h) { h.pixdim[3] = std::nanf(""); }, "\"pixdim\"");
-    refuseHeader("pixneg.nii", [](NiftiHeader& h) { h.pixdim[1] = -1; }, "\"pixdim\"");
+    // pixdim is the spacing of a qform (with a sform, the sform's columns are).
+    const auto qform = [](NiftiHeader& h) { h.sformCode = 0, h.qformCode = 1; };
+    refuseHeader("pixdim.nii", [&](NiftiHeader& h) { qform(h), h.pixdim[2] = 0; }, "\"pixdim\"");
+    refuseHeader("pixnan.nii", [&](NiftiHeader& h) { qform(h), h.pixdim[3] = std::nanf(""); }, "\"pixdim\"");
+    refuseHeader("pixneg.nii", [&](NiftiHeader& h) { qform(h), h.pixdim[1] = -1; }, "\"pixdim\"");
+    refuseHeader("srow0.nii", [](NiftiHeader& h) { h.srow[0][0] = h.srow[1][0] = h.srow[2][0] = 0; }, "\"srow\"");
+    refuseHeader("srownan.nii", [](NiftiHeader& h) { h.srow[1][1] = std::nanf(""); }, "\"srow\"");
+    refuseHeader("quatern.nii", [&](NiftiHeader& h) { qform(h), h.quatern[0] = 2; }, "\"quatern_b\"");
     refuseHeader("voxoffset.nii", [](NiftiHeader& h) { h.voxOffset = 100; }, "\"vox_offset\"");
     refuseHeader("voxfraction.nii", [](NiftiHeader& h) { h.voxOffset = 352.5f; }, "\"vox_offset\"");
     refuseHeader("voxinf.nii", [](NiftiHeader& h) { h.voxOffset = INFINITY; }, "\"vox_offset\"");
@@ -193,7 +199,7 @@ TEST_CASE("hostile NIfTI-1 files are refused", "[core][io][hostile]") {
     refuseHeader("slope.nii", [](NiftiHeader& h) { h.sclSlope = INFINITY; }, "\"scl_slope\"");
     refuseHeader("inter.nii", [](NiftiHeader& h) { h.sclSlope = 2, h.sclInter = NAN; }, "\"scl_inter\"");
     refuseHeader("far.nii", [](NiftiHeader& h) { h.srow[0][3] = 1e38f; }, "beyond float range");
-    refuseHeader("spread.nii", [](NiftiHeader& h) { h.pixdim[1] = 1e37f; }, "beyond float range");
+    refuseHeader("spread.nii", [](NiftiHeader& h) { h.srow[0][0] = -1e37f; }, "beyond float range");
     refuse("truncated.nii", file.substr(0, file.size() - 8), "has only 40");
     const std::string packed = gzipBytes(file);
     refuse("corrupt.nii.gz", corrupted(packed), "gzip data");
@@ -333,7 +339,79 @@ TEST_CASE("every loader refuses missing files, directories, empty files and nois
         }
     }
     writeFile(dir.file("scan.dcm"), kSamples);
-    expectRefused(dir.file("scan.dcm"), "unsupported volume file extension \".dcm\"");
+    expectRefused(dir.file("scan.dcm"), "not a DICOM file");
+    writeFile(dir.file("scan.img"), kSamples);
+    expectRefused(dir.file("scan.img"), "unsupported volume file extension \".img\"");
+}
+
+TEST_CASE("hostile DICOM files are refused", "[core][io][hostile][dicom]") {
+    TempDir dir;
+    const std::string good = DicomSlice(16, 12, 0).bytes();
+    writeFile(dir.file("good.dcm"), good);
+    REQUIRE(loadVolume(dir.file("good.dcm")).dims() == Dims{16, 12, 1});
+
+    expectRefused(dir.file("absent.dcm"), "cannot open");
+    writeFile(dir.file("empty.dcm"), "");
+    expectRefused(dir.file("empty.dcm"), "not a DICOM file");
+    for (unsigned seed = 40; seed < 60; ++seed) {
+        writeFile(dir.file("noise.dcm"), std::string(128, '\0') + "DICM" + randomBytes(1 + seed * 37, seed));
+        expectRefused(dir.file("noise.dcm"), "");
+    }
+    // Cut anywhere: in the header, in an element, in the pixel data.
+    for (std::size_t keep : {std::size_t(100), std::size_t(200), std::size_t(300), good.size() - 200, good.size() - 1}) {
+        CAPTURE(keep);
+        writeFile(dir.file("truncated.dcm"), good.substr(0, keep));
+        expectRefused(dir.file("truncated.dcm"), "");
+    }
+    DicomSlice lying(16, 12, 0);
+    lying.raw(0x7fe0, 0x0010, "OW", std::string(64, '\1'), 0xfffffff0u);
+    writeFile(dir.file("lying_pixels.dcm"), lying.bytes());
+    expectRefused(dir.file("lying_pixels.dcm"), "");
+    DicomSlice lyingHeader(16, 12, 0);
+    lyingHeader.raw(0x0009, 0x1010, "OB", std::string(8, '\1'), 0x7ffffff0u);
+    writeFile(dir.file("lying_header.dcm"), lyingHeader.bytes());
+    expectRefused(dir.file("lying_header.dcm"), "");
+    // A standard element with a VR the dictionary does not allow (GDCM would assert on it).
+    DicomSlice wrongVr(16, 12, 0);
+    wrongVr.text(0x0028, 0x0009, "AS", "0018");  // FrameIncrementPointer is AT
+    writeFile(dir.file("wrong_vr.dcm"), wrongVr.bytes());
+    expectRefused(dir.file("wrong_vr.dcm"), "(0028,0009) has VR AS");
+    // Encapsulated pixel data whose closing delimiter claims 2.3 GB (GDCM would allocate them).
+    DicomSlice delimiter(16, 12, 0);
+    const auto item = [](std::uint16_t element, std::uint32_t length) {
+        return encode(std::uint16_t(0xfffe), false) + encode(element, false) + encode(length, false);
+    };
+    delimiter.raw(0x7fe0, 0x0010, "OB", item(0xe000, 0) + item(0xe000, 4) + "abcd" + item(0xe0dd, 0x89000000u), 0xffffffffu);
+    writeFile(dir.file("delimiter.dcm"), delimiter.bytes());
+    expectRefused(dir.file("delimiter.dcm"), "delimitation item declares 2298478592 bytes");
+    DicomSlice noPixels(16, 12, 0);
+    noPixels.erase(0x7fe0, 0x0010);
+    writeFile(dir.file("no_pixels.dcm"), noPixels.bytes());
+    expectRefused(dir.file("no_pixels.dcm"), "no pixel data");
+    DicomSlice absurd(16, 12, 0);
+    absurd.us(0x0028, 0x0010, 65535);
+    absurd.us(0x0028, 0x0011, 65535);
+    writeFile(dir.file("absurd.dcm"), absurd.bytes());
+    expectRefused(dir.file("absurd.dcm"), "pixel data holds 384");
+    DicomSlice colour(16, 12, 0);
+    colour.us(0x0028, 0x0002, 3);
+    writeFile(dir.file("colour.dcm"), colour.bytes());
+    expectRefused(dir.file("colour.dcm"), "SamplesPerPixel");
+    DicomSlice badOrientation(16, 12, 0);
+    badOrientation.text(0x0020, 0x0037, "DS", "1\\1\\0\\0\\1\\0");
+    writeFile(dir.file("bad_orientation.dcm"), badOrientation.bytes());
+    expectRefused(dir.file("bad_orientation.dcm"), "ImageOrientationPatient");
+
+    // Folders: mixed sizes within one series, nothing DICOM at all.
+    std::filesystem::create_directories(dir.file("mixed_sizes"));
+    writeFile(dir.file("mixed_sizes/a.dcm"), DicomSlice(16, 12, 0).bytes());
+    writeFile(dir.file("mixed_sizes/b.dcm"), DicomSlice(16, 13, 1).bytes());
+    expectRefused(dir.file("mixed_sizes"), "mixed sizes");
+    std::filesystem::create_directories(dir.file("not_dicom"));
+    writeFile(dir.file("not_dicom/x.txt"), "hello");
+    expectRefused(dir.file("not_dicom"), "no DICOM images");
+    writeFile(dir.file("DICOMDIR"), randomBytes(500, 3));
+    expectRefused(dir.file("DICOMDIR"), "DICOMDIR");
 }
 
 namespace {

@@ -126,6 +126,7 @@ inline void requireSameVolume(const Volume& a, const Volume& b) {
     REQUIRE(a.type() == b.type());
     CHECK(a.spacing() == b.spacing());
     CHECK(a.origin() == b.origin());
+    CHECK(a.direction() == b.direction());
     REQUIRE(a.byteSize() == b.byteSize());
     CHECK(std::memcmp(a.bytes(), b.bytes(), a.byteSize()) == 0);
 }
@@ -141,6 +142,7 @@ struct NiftiHeader {
     float voxOffset = 352;
     float sclSlope = 0, sclInter = 0;
     std::int16_t qformCode = 0, sformCode = 0;
+    float quatern[3] = {0, 0, 0};  // b, c, d
     float qoffset[3] = {0, 0, 0};
     float srow[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
     std::string magic = std::string("n+1\0", 4);
@@ -158,6 +160,7 @@ struct NiftiHeader {
         put(116, encode(sclInter, bigEndian));
         put(252, encode(qformCode, bigEndian));
         put(254, encode(sformCode, bigEndian));
+        for (std::size_t i = 0; i < 3; ++i) put(256 + 4 * i, encode(quatern[i], bigEndian));
         for (std::size_t i = 0; i < 3; ++i) put(268 + 4 * i, encode(qoffset[i], bigEndian));
         for (std::size_t r = 0; r < 3; ++r)
             for (std::size_t c = 0; c < 4; ++c) put(280 + 16 * r + 4 * c, encode(srow[r][c], bigEndian));
@@ -181,15 +184,17 @@ inline std::int16_t niftiDatatype(ScalarType type) {
     return 0;
 }
 
-// A header describing `v` (spacing in pixdim, origin through the sform).
+// A header describing `v` (spacing in pixdim, origin and direction through the
+// sform, which is RAS where the volume is LPS: rows x and y change sign).
 inline NiftiHeader niftiHeaderFor(const Volume& v, bool bigEndian) {
     NiftiHeader h;
     h.bigEndian = bigEndian;
     for (std::size_t a = 0; a < 3; ++a) {
         h.dim[a + 1] = std::int16_t(v.dims()[a]);
         h.pixdim[a + 1] = float(v.spacing()[a]);
-        h.srow[a][a] = float(v.spacing()[a]);
-        h.srow[a][3] = float(v.origin()[a]);
+        const double toRas = a < 2 ? -1.0 : 1.0;
+        for (std::size_t c = 0; c < 3; ++c) h.srow[a][c] = float(toRas * v.direction()[c][a] * v.spacing()[c]);
+        h.srow[a][3] = float(toRas * v.origin()[a]);
     }
     h.datatype = niftiDatatype(v.type());
     h.bitpix = std::int16_t(8 * scalarTypeSize(v.type()));
