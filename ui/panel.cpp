@@ -10,17 +10,6 @@
 
 namespace isotrack::ui {
 
-const char* methodName(Method method) {
-    switch (method) {
-        case Method::Exhaustive: return "mc";
-        case Method::Track: return "track";
-        case Method::All: return "all";
-    }
-    return "all";
-}
-
-const char* tableName(Table table) { return table == Table::Classic ? "classic" : "consistent"; }
-
 std::string exportPath(const std::string& pattern, std::uint32_t id) {
     std::string path = pattern;
     const std::string key = "{id}";

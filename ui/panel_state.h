@@ -8,13 +8,16 @@
 #include <string>
 #include <vector>
 
+#include "isotrack/extract.h"
+#include "isotrack/tables.h"
+
 namespace isotrack::ui {
 
-enum class Method { Exhaustive, Track, All };  // "mc", "track", "all"
-enum class Table { Consistent, Classic };
-
-const char* methodName(Method method);  // "mc", "track", "all"
-const char* tableName(Table table);     // "consistent", "classic"
+// The panel speaks core's vocabulary: the methods and tables the extraction takes.
+using Method = isotrack::Method;  // Exhaustive, Track, All: "mc", "track", "all" (methodName)
+using Table = isotrack::TableKind;  // Consistent, Classic
+using isotrack::methodName;
+inline const char* tableName(Table table) { return tableKindName(table); }  // "consistent", "classic"
 
 struct FieldChoice {
     std::string name;

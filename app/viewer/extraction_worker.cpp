@@ -11,10 +11,8 @@
 #include <limits>
 
 #include "isotrack/errors.h"
-#include "isotrack/fields.h"
-#include "isotrack/io.h"
-#include "isotrack/isovalue.h"
-#include "isotrack/marching_cubes.h"
+#include "isotrack/extract.h"
+#include "isotrack/source.h"
 
 namespace isotrack::viewer {
 namespace {
@@ -61,20 +59,17 @@ bool supersedes(const ExtractionRequest& newer, const ExtractionRequest& older) 
 }
 
 std::shared_ptr<LoadedVolume> loadSource(const SourceSpec& source) {
+    VolumeSource spec;
+    spec.kind = source.kind == SourceSpec::Field ? VolumeSource::Kind::Field : VolumeSource::Kind::File;
+    spec.text = source.text;
+    spec.raw = source.raw;
+    LoadedSource read = isotrack::loadSource(spec);
+    if (!read.defaultIso) throw InputError(source.text + ": no finite samples");
     auto loaded = std::make_shared<LoadedVolume>();
     loaded->source = source;
-    if (source.kind == SourceSpec::Field) {
-        const FieldSpec spec = parseFieldSpec(source.text);
-        loaded->volume = makeField(spec);
-        loaded->defaultIso = fieldDefaultIso(spec.name);
-    } else {
-        loaded->volume = source.raw ? loadRaw(source.text, *source.raw) : loadVolume(source.text);
-    }
+    loaded->volume = std::move(read.volume);
+    loaded->defaultIso = *read.defaultIso;
     loaded->range = loaded->volume.range();
-    if (source.kind == SourceSpec::File) {
-        if (!std::isfinite(loaded->range[0])) throw InputError(source.text + ": no finite samples");
-        loaded->defaultIso = suggestIsovalue(loaded->volume);
-    }
     loaded->histogram = histogramOf(loaded->volume, loaded->range);
     return loaded;
 }
@@ -219,19 +214,15 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
     setPhase(methodPhase(request.method), known != lastMs_.end() ? known->second : 0.0);
     const Volume& volume = loaded.volume;
     const auto start = Clock::now();
-    switch (request.method) {
-        case ui::Method::Exhaustive: {
-            Surface surface;
-            surface.mesh = marchingCubes(volume, result.iso, request.table, threads_);
-            if (cancelling()) throw Cancelled{};
-            surface.stats = measureSurface(surface.mesh, volume, request.table == TableKind::Consistent);
-            result.surfaces.push_back(std::move(surface));
-            break;
-        }
-        case ui::Method::All:
-            result.surfaces = extractAllSurfaces(volume, result.iso, request.table, threads_);
-            break;
-        case ui::Method::Track: break;
+    if (request.method != Method::Track) {  // track: only the seeds' surfaces, below
+        ExtractRequest exhaustive;
+        exhaustive.method = request.method;
+        exhaustive.iso = result.iso;
+        exhaustive.table = request.table;
+        exhaustive.threads = threads_;
+        exhaustive.measure = true;
+        exhaustive.cancel = &cancel_;
+        result.surfaces = isotrack::extract(volume, exhaustive);
     }
     if (cancelling()) throw Cancelled{};
     trackSeeds(request, volume, result);

@@ -10,10 +10,11 @@
 // slider by about one extraction instead of freezing until the drag ends. A
 // request only for another isovalue (or other seeds) lets the running one
 // finish, since its result is still worth showing; one for another source,
-// method or table makes the running work pointless, and it is cancelled: the
-// worker checks between passes and between seeds (each seed's surface is
-// tracked on all the worker's threads, as `extract --method track` does). Finished results are uploaded by the frame loop on the main thread
-// (GL objects are created only there).
+// method or table makes the running work pointless, and it is cancelled:
+// core's extract() checks between its passes, the worker between seeds (each
+// seed's surface is tracked on all the worker's threads, as `extract --method
+// track` does). Finished results are uploaded by the frame loop on the main
+// thread (GL objects are created only there).
 #include <array>
 #include <atomic>
 #include <chrono>

@@ -37,13 +37,6 @@ bool scriptLoadsFirst(const std::optional<Script>& script) {
 
 }  // namespace
 
-ui::Method parseMethod(const std::string& name) {
-    if (name == "mc") return ui::Method::Exhaustive;
-    if (name == "track") return ui::Method::Track;
-    if (name == "all") return ui::Method::All;
-    throw InputError("--method \"" + name + "\": expected mc, track or all");
-}
-
 Viewer::Viewer(const ViewerOptions& options, std::optional<Script> script)
     : options_(options),
       window_(options.width, options.height, "isotrack", !options.noVsync && !script && !options.deterministic),

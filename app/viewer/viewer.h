@@ -157,9 +157,6 @@ private:
 };
 
 // Runs the viewer for `isotrack` without a subcommand; returns the exit status.
-// "mc", "track" or "all" (ui::methodName's names); an InputError otherwise.
-ui::Method parseMethod(const std::string& name);
-
 int runViewer(const ViewerOptions& options);
 
 }  // namespace isotrack::viewer

@@ -35,8 +35,7 @@ void Viewer::apply(const ui::Action& action) {
                        submit();
                    },
                    [&](const ui::SetTable& a) {
-                       extraction_.setTable(a.table == ui::Table::Classic ? TableKind::Classic
-                                                                          : TableKind::Consistent);
+                       extraction_.setTable(a.table);
                        submit();
                    },
                    [&](const ui::SetMethod& a) {

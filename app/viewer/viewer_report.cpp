@@ -63,7 +63,7 @@ ui::PanelState Viewer::panelState() const {
     ui::ExtractionState& extraction = state.extraction;
     extraction.iso = currentIso();
     extraction.shownIso = shownIso();
-    extraction.table = extraction_.table() == TableKind::Classic ? ui::Table::Classic : ui::Table::Consistent;
+    extraction.table = extraction_.table();
     extraction.method = extraction_.method();
     const WorkerProgress progress = extraction_.progress();
     extraction.busy = progress.busy;
