@@ -460,16 +460,20 @@ Layout layoutOf(const std::string& path, const std::vector<Image>& images) {
     return layout;
 }
 
+// Reads a file through GDCM's image reader; false when it cannot (GDCM may throw on damaged files).
+bool readImage(gdcm::ImageReader& reader, const Image& image) {
+    reader.SetFileName(image.path.c_str());
+    try {
+        return reader.Read();
+    } catch (const std::exception&) {
+        return false;
+    }
+}
+
 // Decodes one file's pixel data into `out`, which holds exactly its bytes.
 void decodeInto(const Image& image, std::byte* out, std::size_t bytes) {
     gdcm::ImageReader reader;
-    reader.SetFileName(image.path.c_str());
-    bool read = false;
-    try {
-        read = reader.Read();
-    } catch (const std::exception&) {
-        read = false;
-    }
+    const bool read = readImage(reader, image);
     const gdcm::DataSet& ds = reader.GetFile().GetDataSet();
     if (!ds.FindDataElement(kPixelData)) refuse(image, "no pixel data");
     if (!read) refuse(image, "cannot read its pixel data (damaged or truncated?)");
@@ -495,14 +499,7 @@ void decodeInto(const Image& image, std::byte* out, std::size_t bytes) {
 // A multi-frame file: GDCM reads its geometry (per-frame functional groups included).
 void multiFrameGeometry(const Image& image, detail::VolumeHeader& h) {
     gdcm::ImageReader reader;
-    reader.SetFileName(image.path.c_str());
-    bool read = false;
-    try {
-        read = reader.Read();
-    } catch (const std::exception&) {
-        read = false;
-    }
-    if (!read) refuse(image, "cannot read its pixel data (damaged or truncated?)");
+    if (!readImage(reader, image)) refuse(image, "cannot read its pixel data (damaged or truncated?)");
     const gdcm::Image& decoded = reader.GetImage();
     const double* o = decoded.GetOrigin();
     const double* c = decoded.GetDirectionCosines();
@@ -515,14 +512,9 @@ void multiFrameGeometry(const Image& image, detail::VolumeHeader& h) {
     detail::checkGeometry(h, "PixelSpacing", "ImagePositionPatient");
 }
 
-template <class T>
-void rescale(const T* in, std::size_t n, double slope, double intercept, std::int16_t* out) {
-    for (std::size_t k = 0; k < n; ++k) out[k] = static_cast<std::int16_t>(slope * double(in[k]) + intercept);
-}
-
-template <class T>
-void rescale(const T* in, std::size_t n, double slope, double intercept, float* out) {
-    for (std::size_t k = 0; k < n; ++k) out[k] = static_cast<float>(slope * double(in[k]) + intercept);
+template <class T, class Out>
+void rescale(const T* in, std::size_t n, double slope, double intercept, Out* out) {
+    for (std::size_t k = 0; k < n; ++k) out[k] = static_cast<Out>(slope * double(in[k]) + intercept);
 }
 
 Volume readVolume(const Layout& layout) {
