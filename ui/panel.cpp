@@ -60,7 +60,7 @@ void compactStyle() {
 }
 
 void statsWindow(const PanelState& state) {
-    constexpr float kWidth = 372.0f, kHeight = 180.0f, kMargin = 8.0f;
+    constexpr float kWidth = 372.0f, kHeight = 196.0f, kMargin = 8.0f;
     const float x = static_cast<float>(state.displayWidth) - kWidth - kMargin;
     const float y = static_cast<float>(state.displayHeight) - kHeight - kMargin;
     ImGui::SetNextWindowPos(ImVec2(std::max(x, Panel::kWidth + kMargin), std::max(y, 0.0f)), ImGuiCond_Always);

@@ -89,6 +89,9 @@ struct StatsState {
     std::size_t rssBytes = 0;
     std::string renderer;  // GL_RENDERER
     std::size_t frames = 0;
+    // The last frame: draw calls and triangles into the 3D view (none when its cached image was
+    // only copied), and bytes of vertices and indices uploaded.
+    std::size_t drawCalls = 0, trianglesDrawn = 0, uploadedBytes = 0;
 };
 
 struct ViewState {

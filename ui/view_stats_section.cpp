@@ -57,6 +57,12 @@ void statsSection(const PanelState& state) {
                 formatMs(stats.drawMs, frozen).c_str(), formatMs(stats.presentMs, frozen).c_str());
     ImGui::Text("GPU draw %s   extraction %s", formatMs(stats.gpuMs, frozen).c_str(),
                 formatMs(state.extraction.lastMs, frozen).c_str());
+    if (frozen) {
+        ImGui::TextUnformatted("draw calls --  triangles --  uploaded --");
+    } else {
+        ImGui::Text("draw calls %zu  triangles %s  uploaded %s", stats.drawCalls,
+                    formatCount(stats.trianglesDrawn).c_str(), formatBytes(stats.uploadedBytes).c_str());
+    }
     const std::vector<float> none;
     const std::vector<float>& times = frozen ? none : stats.frameTimesMs;
     const float highest = times.empty() ? 1.0f : *std::max_element(times.begin(), times.end());

@@ -28,7 +28,12 @@ gl::Buffer regrow(const gl::Buffer& old, std::size_t bytes, std::size_t keep) {
     return buffer;
 }
 
+// GL objects live on one thread, so a plain counter will do.
+std::size_t uploadedEverywhere = 0;
+
 }  // namespace
+
+std::size_t GpuMesh::uploadedTotal() { return uploadedEverywhere; }
 
 GpuMesh::GpuMesh() { bindAttributes(); }
 
@@ -38,6 +43,7 @@ GpuMesh::GpuMesh(const Mesh& mesh) {
     vertices_.allocate(vertexCount_ * kVertexBytes, mesh.vertices.data(), gl::BufferUsage::Static);
     indices_.allocate(indexCount_ * kIndexBytes, mesh.indices.data(), gl::BufferUsage::Static);
     uploadedBytes_ = mesh.drawByteSize();
+    uploadedEverywhere += uploadedBytes_;
     bindAttributes();
 }
 
@@ -78,6 +84,7 @@ void GpuMesh::append(const Mesh& mesh, const MeshRange& range) {
     vertexCount_ += range.vertexCount;
     indexCount_ += range.indexCount;
     uploadedBytes_ += range.vertexCount * kVertexBytes + range.indexCount * kIndexBytes;
+    uploadedEverywhere += range.vertexCount * kVertexBytes + range.indexCount * kIndexBytes;
 }
 
 void GpuMesh::append(const Mesh& mesh, const SurfaceTracker::Step& step) {

@@ -51,6 +51,9 @@ public:
     GpuMeshBytes bytes() const;
     // Bytes sent from the CPU since construction (GPU-side copies excluded).
     std::size_t uploadedBytes() const { return uploadedBytes_; }
+    // Bytes every GpuMesh has sent from the CPU since the program started (the
+    // viewer takes the difference across a frame).
+    static std::size_t uploadedTotal();
 
     const gl::VertexArray& vertexArray() const { return vertexArray_; }
     // For tests: the buffers themselves.

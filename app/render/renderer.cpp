@@ -168,6 +168,7 @@ void Renderer::drawSurface(const GpuMesh& mesh, const SurfaceStyle& style, const
                                         ? 1.0f / static_cast<float>(std::max<std::size_t>(mesh.vertexCount(), 1))
                                         : 0.0f);
     mesh.draw();
+    count(mesh.indexCount());
 }
 
 void Renderer::endSurfaces(bool underWireframe) {
@@ -189,6 +190,7 @@ void Renderer::drawSurfaceWireframe(const GpuMesh& mesh, const SurfaceStyle& sty
     gl::Program::set(p.offset, style.offset);
     gl::Program::set(p.colour, style.colour * kWireDarkening);
     mesh.draw();
+    count(mesh.indexCount());
 }
 
 void Renderer::drawBoundingBox() const {
@@ -196,6 +198,13 @@ void Renderer::drawBoundingBox() const {
     gl::Program::set(p.offset, glm::vec3(0.0f));
     gl::Program::set(p.colour, kBoxColour);
     boxArray_.drawLines(24);
+    ++counters_.drawCalls;
+}
+
+DrawCounters Renderer::takeCounters() {
+    const DrawCounters counters = counters_;
+    counters_ = DrawCounters{};
+    return counters;
 }
 
 void Renderer::beginPick(const FrameView& frame, const PickTarget& target) const {

@@ -66,6 +66,13 @@ struct SurfaceShading {
 // `bounds` grown to hold itself moved by each of `offsets` (surfaces drawn displaced).
 Bounds boundsWithOffsets(const Bounds& bounds, const std::vector<glm::vec3>& offsets);
 
+// What the drawing since the last takeCounters() cost: draw calls (surfaces,
+// wireframes, the box; picking not counted) and the triangles they drew.
+struct DrawCounters {
+    std::size_t drawCalls = 0;
+    std::size_t triangles = 0;
+};
+
 class Renderer {
 public:
     // Compiles the shaders (embedded, or from ISOTRACK_SHADER_DIR). Needs a
@@ -108,7 +115,15 @@ public:
     void beginPick(const FrameView& frame, const PickTarget& target) const;
     void drawSurfaceId(const GpuMesh& mesh, const glm::vec3& offset, std::uint32_t id) const;
 
+    // The counters since the last call, which restarts them.
+    DrawCounters takeCounters();
+
 private:
+    void count(std::size_t indices) const {
+        ++counters_.drawCalls;
+        counters_.triangles += indices / 3;
+    }
+
     struct SurfaceProgram {
         gl::Program program;
         int view, projection, offset, colour, highlight, growthScale;
@@ -131,6 +146,7 @@ private:
     gl::VertexArray boxArray_;
     Bounds bounds_;
     std::vector<DrawnSurface> surfaces_;
+    mutable DrawCounters counters_;  // drawing is const; counting what it cost is not the drawing's state
 };
 
 }  // namespace isotrack::render

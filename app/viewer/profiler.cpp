@@ -180,6 +180,9 @@ void Profiler::writeTrace() {
                          {"iso_shown", c.isoShown},
                          {"iso_requested", c.isoRequested},
                          {"extractions_applied", c.extractionsApplied},
+                         {"draw_calls", c.drawCalls},
+                         {"triangles_drawn", c.trianglesDrawn},
+                         {"uploaded_bytes", c.uploadedBytes},
                          {"gpu_ms", record.gpuUs >= 0.0 ? json(record.gpuUs / 1000.0) : json(nullptr)}};
         events.push_back(std::move(frame));
         for (const Span& span : record.spans) events.push_back(complete(stageName(span.stage), "stage", 1, span.startUs, span.durationUs));

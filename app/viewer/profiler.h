@@ -31,6 +31,8 @@ struct FrameCounters {
     std::size_t cpuBytes = 0, gpuBytes = 0;
     double isoShown = 0.0, isoRequested = 0.0;  // the surfaces on screen trail the slider while it is dragged
     std::size_t extractionsApplied = 0;          // results shown so far in the session
+    std::size_t drawCalls = 0, trianglesDrawn = 0;  // into the 3D view (0 when only its cached image was copied)
+    std::size_t uploadedBytes = 0;                  // vertices and indices sent to the GPU
 };
 
 class Profiler {

@@ -125,6 +125,7 @@ void Viewer::drawView() {
         profiler_.beginGpu();
         viewCache_.bind();
         scene_.draw(*renderer_, render::Renderer::frameView(camera_, cached, scene_.drawBounds()), cached);
+        drawn_ = renderer_->takeCounters();
         profiler_.endGpu();
     }
     render::beginWindowFrame(framebufferWidth_, framebufferHeight_, window.background);
@@ -134,6 +135,8 @@ void Viewer::drawView() {
 void Viewer::frame() {
     profiler_.beginFrame();
     grownCells_ = 0;
+    drawn_ = render::DrawCounters{};  // a frame that only copies the cached view draws nothing
+    const std::size_t uploadedBefore = render::GpuMesh::uploadedTotal();
     try {
         ViewInput input;
         {
@@ -197,6 +200,8 @@ void Viewer::frame() {
         Profiler::Scope scope(profiler_, Stage::Present);
         window_.swapBuffers();
     }
+    uploaded_ = render::GpuMesh::uploadedTotal() - uploadedBefore;
+    sessionCounters_.note(drawn_, uploaded_);
     FrameCounters counters;  // only a recorded trace keeps them
     if (profiler_.recording()) {
         counters.surfaces = scene_.surfaces().size();
@@ -209,6 +214,9 @@ void Viewer::frame() {
         counters.isoShown = shownIso();
         counters.isoRequested = currentIso();
         counters.extractionsApplied = extraction_.appliedCount();
+        counters.drawCalls = drawn_.drawCalls;
+        counters.trianglesDrawn = drawn_.triangles;
+        counters.uploadedBytes = uploaded_;
     }
     profiler_.endFrame(counters);
 }

@@ -8,6 +8,7 @@
 // meshes and grown ranges go to the GPU), ui (the panel from plain state, its
 // actions applied), draw (the scene, timed on the GPU too, then the panel),
 // present (swap). Every stage is timed by the Profiler.
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -140,6 +141,20 @@ private:
     int cellsPerFrame_ = 0;
     float growthBudgetMs_ = 4.0f;
     std::size_t grownCells_ = 0;  // this frame
+
+    // What the last frame drew and uploaded, and the most any frame did.
+    struct SessionCounters {
+        std::size_t maxDrawCalls = 0, maxTrianglesDrawn = 0, maxUploadedBytes = 0, uploadedBytes = 0;
+        void note(const render::DrawCounters& drawn, std::size_t uploaded) {
+            maxDrawCalls = std::max(maxDrawCalls, drawn.drawCalls);
+            maxTrianglesDrawn = std::max(maxTrianglesDrawn, drawn.triangles);
+            maxUploadedBytes = std::max(maxUploadedBytes, uploaded);
+            uploadedBytes += uploaded;
+        }
+    };
+    render::DrawCounters drawn_;
+    std::size_t uploaded_ = 0;
+    SessionCounters sessionCounters_;
 
     // Layout, in window pixels and framebuffer pixels.
     int windowWidth_ = 1, windowHeight_ = 1, framebufferWidth_ = 1, framebufferHeight_ = 1;

@@ -107,6 +107,9 @@ ui::PanelState Viewer::panelState() const {
     stats.rssBytes = options_.deterministic ? 0 : residentBytes();
     stats.renderer = window_.info().renderer;
     stats.frames = profiler_.frames();
+    stats.drawCalls = drawn_.drawCalls;
+    stats.trianglesDrawn = drawn_.triangles;
+    stats.uploadedBytes = uploaded_;
     state.message = status_;
     return state;
 }
@@ -158,6 +161,11 @@ nlohmann::json Viewer::summary() const {
         {"rss_bytes", residentBytes()},
         {"frames", profiler_.frames()},
         {"median_frame_ms", profiler_.medianFrameMs()},
+        {"frame_counters",
+         {{"max_draw_calls", sessionCounters_.maxDrawCalls},
+          {"max_triangles_drawn", sessionCounters_.maxTrianglesDrawn},
+          {"max_uploaded_bytes", sessionCounters_.maxUploadedBytes},
+          {"uploaded_bytes", sessionCounters_.uploadedBytes}}},
         {"extraction_ms", extraction_.lastMs()},
         {"gpu_timer_queries", profiler_.gpuTimersAvailable()},
         {"renderer", window_.info().renderer},
