@@ -21,6 +21,9 @@ field blobs:128
 wait
 explode 0.4
 select 0
+colour 0 1 0.2 0.8
+sweep 0.25 0.4 40
+wait
 frames 3
 screenshot $repo/build/demo.png
 quit
