@@ -14,11 +14,6 @@
 namespace isotrack::test {
 namespace {
 
-std::string outputPath(const std::string& name, const char* suffix) {
-    std::filesystem::create_directories(ISOTRACK_GOLDEN_OUT);
-    return std::string(ISOTRACK_GOLDEN_OUT) + "/" + name + suffix;
-}
-
 headless::Backend requestedBackend() {
     const char* env = std::getenv("ISOTRACK_TEST_GL");
     return env != nullptr && *env != '\0' ? headless::parseBackend(env) : headless::Backend::OSMesa;
@@ -43,10 +38,11 @@ const headless::HeadlessContext& sharedContext() {
 }
 
 // ISOTRACK_GOLDEN_REPORT=1: one line per comparison, passing or not, to measure a backend.
-void report(const std::string& name, const render::Image& expected, const render::Image& actual,
+void report(const std::string& name, const std::string& baseline, const render::Image& actual,
             const ImageDifference& difference, int channelTolerance) {
     const char* env = std::getenv("ISOTRACK_GOLDEN_REPORT");
     if (env == nullptr || std::string(env) != "1") return;
+    const render::Image expected = render::readPng(baseline);
     const std::size_t any = compareImages(expected, actual, 0).differentPixels;
     const double pixels = double(actual.width) * double(actual.height);
     std::fprintf(stderr, "golden %s: %zu pixels differ at all (%.3f%%), largest channel delta %d; %zu (%.3f%%) by more than %d\n",
@@ -73,43 +69,18 @@ GoldenTolerance forCurrentBackend(GoldenTolerance tolerance) {
 
 void checkGolden(const std::string& name, const render::Image& actual, const GoldenTolerance& requested) {
     const GoldenTolerance tolerance = forCurrentBackend(requested);
-    const std::string golden = std::string(ISOTRACK_GOLDEN_DIR) + "/" + name + ".png";
-    if (updateRequested()) {
-        render::writePng(actual, golden);
-        WARN("ISOTRACK_UPDATE_GOLDEN=1: wrote " << golden << " (look at it before committing)");
-        return;
+    GoldenPolicy policy;
+    policy.baseline = std::string(ISOTRACK_GOLDEN_DIR) + "/" + name + ".png";
+    policy.actualPath = std::string(ISOTRACK_GOLDEN_OUT) + "/" + name + ".actual.png";
+    policy.diffPath = std::string(ISOTRACK_GOLDEN_OUT) + "/" + name + ".diff.png";
+    policy.channelTolerance = tolerance.channelTolerance;
+    policy.maxDifferentFraction = tolerance.maxDifferentFraction;
+    const GoldenVerdict verdict = checkGoldenImage(actual, name, policy);
+    if (verdict.updated) WARN("ISOTRACK_UPDATE_GOLDEN=1: " << verdict.message);
+    if (verdict.difference.diff.width > 0) {
+        report(name, policy.baseline, actual, verdict.difference, tolerance.channelTolerance);
     }
-    if (!std::filesystem::exists(golden)) {
-        const std::string actualPath = outputPath(name, ".actual.png");
-        render::writePng(actual, actualPath);
-        FAIL("no golden image " << golden << "\n  actual: " << actualPath
-                                << "\n  look at it, then rerun with ISOTRACK_UPDATE_GOLDEN=1 to make it the baseline");
-    }
-    const render::Image expected = render::readPng(golden);
-    if (expected.width != actual.width || expected.height != actual.height) {
-        const std::string actualPath = outputPath(name, ".actual.png");
-        render::writePng(actual, actualPath);
-        FAIL(name << ": golden is " << expected.width << "x" << expected.height << ", actual is " << actual.width << "x"
-                  << actual.height << "\n  actual: " << actualPath);
-    }
-    const ImageDifference difference = compareImages(expected, actual, tolerance.channelTolerance);
-    report(name, expected, actual, difference, tolerance.channelTolerance);
-    const std::size_t pixels = std::size_t(actual.width) * std::size_t(actual.height);
-    const double fraction = double(difference.differentPixels) / double(pixels);
-    if (fraction <= tolerance.maxDifferentFraction) {
-        // Passing now: drop what an earlier failure left, so golden_out/ holds only current failures.
-        std::filesystem::remove(std::string(ISOTRACK_GOLDEN_OUT) + "/" + name + ".actual.png");
-        std::filesystem::remove(std::string(ISOTRACK_GOLDEN_OUT) + "/" + name + ".diff.png");
-    } else {
-        const std::string actualPath = outputPath(name, ".actual.png");
-        const std::string diffPath = outputPath(name, ".diff.png");
-        render::writePng(actual, actualPath);
-        render::writePng(difference.diff, diffPath);
-        FAIL(name << ": " << difference.differentPixels << " of " << pixels << " pixels (" << fraction * 100.0
-                  << "%) differ by more than " << tolerance.channelTolerance << " in a channel (largest "
-                  << difference.largestChannelDelta << "); allowed " << tolerance.maxDifferentFraction * 100.0
-                  << "%\n  golden: " << golden << "\n  actual: " << actualPath << "\n  diff:   " << diffPath);
-    }
+    if (!verdict.passed) FAIL(verdict.message);
 }
 
 render::Image renderForGolden(const std::vector<const Mesh*>& surfaces, const Volume& volume,

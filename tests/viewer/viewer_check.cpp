@@ -71,36 +71,18 @@ Image reduce(const Image& image) {
 }
 
 int golden(const std::string& actualPath, const std::string& name) {
-    const Image actual = reduce(isotrack::render::readPng(actualPath));
-    const std::string goldenPath = std::string(ISOTRACK_GOLDEN_DIR) + "/" + name + ".png";
     const std::string stem = std::filesystem::path(actualPath).replace_extension().string();
-    if (isotrack::test::updateRequested()) {
-        isotrack::render::writePng(actual, goldenPath);
-        std::printf("wrote %s (look at it before committing)\n", goldenPath.c_str());
-        return 0;
-    }
-    if (!std::filesystem::exists(goldenPath)) {
-        isotrack::render::writePng(actual, stem + ".reduced.png");
-        return fail("no golden image " + goldenPath + "\n  actual: " + stem +
-                    ".reduced.png\n  look at it, then rerun with ISOTRACK_UPDATE_GOLDEN=1 to make it the baseline");
-    }
-    const Image expected = isotrack::render::readPng(goldenPath);
-    if (expected.width != actual.width || expected.height != actual.height) {
-        isotrack::render::writePng(actual, stem + ".reduced.png");
-        return fail(name + ": golden is " + std::to_string(expected.width) + "x" + std::to_string(expected.height) +
-                    ", reduced screenshot is " + std::to_string(actual.width) + "x" + std::to_string(actual.height));
-    }
-    const isotrack::test::ImageDifference difference = isotrack::test::compareImages(expected, actual, kChannelTolerance);
-    const std::size_t different = difference.differentPixels;
-    const int largest = difference.largestChannelDelta;
-    const double fraction = double(different) / double(actual.width * actual.height);
-    std::printf("%s: %zu of %d pixels differ (%.3f%%, limit %.1f%%), largest channel delta %d\n", name.c_str(),
-                different, actual.width * actual.height, 100.0 * fraction, 100.0 * kMaxDifferentFraction, largest);
-    if (fraction <= kMaxDifferentFraction) return 0;
-    isotrack::render::writePng(actual, stem + ".reduced.png");
-    isotrack::render::writePng(difference.diff, stem + ".diff.png");
-    return fail(name + " differs from " + goldenPath + "\n  actual: " + stem + ".reduced.png\n  diff:   " + stem +
-                ".diff.png");
+    isotrack::test::GoldenPolicy policy;
+    policy.baseline = std::string(ISOTRACK_GOLDEN_DIR) + "/" + name + ".png";
+    policy.actualPath = stem + ".reduced.png";
+    policy.diffPath = stem + ".diff.png";
+    policy.channelTolerance = kChannelTolerance;
+    policy.maxDifferentFraction = kMaxDifferentFraction;
+    const isotrack::test::GoldenVerdict verdict =
+        isotrack::test::checkGoldenImage(reduce(isotrack::render::readPng(actualPath)), name, policy);
+    if (!verdict.passed) return fail(verdict.message);
+    std::printf("%s\n", verdict.message.c_str());
+    return 0;
 }
 
 int summary(int argc, char** argv) {
