@@ -65,6 +65,7 @@ private:
     std::uint64_t dataset(std::uint64_t at, std::uint64_t end, bool delimited, int depth);
     std::uint64_t sequence(std::uint64_t at, std::uint64_t length, std::uint64_t end, int depth);
     std::uint64_t fragments(std::uint64_t at, std::uint64_t end);
+    void rleHeader(std::uint64_t at, std::uint32_t length);
 
     std::string path_;
     std::FILE* file_;
@@ -105,8 +106,34 @@ std::uint64_t Walker::metaGroup(std::uint64_t at) {
     return at;
 }
 
+// An RLE Lossless frame opens with 16 little-endian words: the segment count
+// (1..15) and each segment's offset into the frame, the first 64, rising, all
+// inside the frame. GDCM's RLE decoder seeks to the offsets unchecked.
+void Walker::rleHeader(std::uint64_t at, std::uint32_t length) {
+    constexpr std::uint32_t kHeaderBytes = 64, kMaxSegments = 15;
+    if (length < kHeaderBytes) fail("an RLE frame of " + std::to_string(length) + " bytes has no 64-byte header");
+    unsigned char h[kHeaderBytes];
+    readAt(at, h, kHeaderBytes, size_, "an RLE frame header");
+    const auto word = [&](std::uint32_t i) {
+        const unsigned char* b = h + 4 * i;
+        return std::uint32_t(b[3]) << 24 | std::uint32_t(b[2]) << 16 | std::uint32_t(b[1]) << 8 | b[0];
+    };
+    const std::uint32_t segments = word(0);
+    if (segments < 1 || segments > kMaxSegments) fail("an RLE frame declares " + std::to_string(segments) + " segments");
+    std::uint32_t previous = 0;
+    for (std::uint32_t s = 1; s <= segments; ++s) {
+        const std::uint32_t offset = word(s);
+        if ((s == 1 && offset != kHeaderBytes) || (s > 1 && offset <= previous) || offset >= length)
+            fail("an RLE frame's segment " + std::to_string(s) + " starts at byte " + std::to_string(offset) +
+                 " of " + std::to_string(length));
+        previous = offset;
+    }
+}
+
 std::uint64_t Walker::fragments(std::uint64_t at, std::uint64_t end) {
     out_.encapsulated = true;
+    const bool rle = out_.transferSyntax == "1.2.840.10008.1.2.5";
+    bool offsetTable = true;  // the first item is the basic offset table, not a frame
     while (true) {
         unsigned char h[8];
         readAt(at, h, 8, end, "an encapsulated pixel data item");
@@ -117,6 +144,8 @@ std::uint64_t Walker::fragments(std::uint64_t at, std::uint64_t end) {
         if (length == kUndefined || at + length > end)
             fail("truncated: a pixel data fragment declares " + std::to_string(length) + " bytes, " +
                  std::to_string(end - std::min(end, at)) + " remain");
+        if (rle && !offsetTable) rleHeader(at, length);
+        offsetTable = false;
         out_.pixelDataBytes += length;
         at += length;
     }

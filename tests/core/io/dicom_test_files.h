@@ -55,6 +55,7 @@ public:
         elements_[{group, element}] = {vr, {value, declared == ~std::uint64_t(0) ? value.size() : declared}};
     }
     void erase(std::uint16_t group, std::uint16_t element) { elements_.erase({group, element}); }
+    std::string transferSyntax = "1.2.840.10008.1.2.1";  // explicit VR little endian; the dataset is always written so
 
     std::string bytes() const {
         std::string out(128, '\0');
@@ -62,7 +63,7 @@ public:
         const auto uid = [](std::string u) { return u.size() % 2 ? u + '\0' : u; };
         const auto ui = [&](std::uint16_t e, const std::string& u) { return element(0x0002, e, "UI", uid(u), uid(u).size()); };
         std::string meta = element(0x0002, 0x0001, "OB", std::string("\0\1", 2), 2) + ui(0x0002, "1.2.840.10008.5.1.4.1.1.2") +
-                           ui(0x0003, "1.2.3.4.5.6") + ui(0x0010, "1.2.840.10008.1.2.1");
+                           ui(0x0003, "1.2.3.4.5.6") + ui(0x0010, transferSyntax);
         meta.insert(0, element(0x0002, 0x0000, "UL", encode(std::uint32_t(meta.size()), false), 4));
         out += meta;
         for (const auto& [tag, entry] : elements_) out += element(tag.first, tag.second, entry.first.c_str(), entry.second.first, entry.second.second);

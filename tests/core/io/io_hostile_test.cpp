@@ -384,6 +384,24 @@ TEST_CASE("hostile DICOM files are refused", "[core][io][hostile][dicom]") {
     delimiter.raw(0x7fe0, 0x0010, "OB", item(0xe000, 0) + item(0xe000, 4) + "abcd" + item(0xe0dd, 0x89000000u), 0xffffffffu);
     writeFile(dir.file("delimiter.dcm"), delimiter.bytes());
     expectRefused(dir.file("delimiter.dcm"), "delimitation item declares 2298478592 bytes");
+    // RLE frames whose headers lie about their segments (GDCM's decoder seeks to the offsets unchecked).
+    const auto rleFrame = [](std::uint32_t segments, std::uint32_t first, std::uint32_t length) {
+        std::string header = encode(segments, false) + encode(first, false);
+        header += std::string(64 - header.size(), '\0');
+        return header + std::string(length - 64, '\x7f');
+    };
+    for (const auto& [frame, problem] :
+         std::vector<std::pair<std::string, std::string>>{{rleFrame(2, 0x40b90000u, 130), "segment 1 starts at byte"},
+                                                          {rleFrame(0, 64, 130), "declares 0 segments"},
+                                                          {rleFrame(16, 64, 130), "declares 16 segments"},
+                                                          {std::string(40, '\0'), "has no 64-byte header"}}) {
+        DicomSlice rle(16, 12, 0);
+        rle.transferSyntax = "1.2.840.10008.1.2.5";
+        const std::string items = item(0xe000, 0) + item(0xe000, std::uint32_t(frame.size())) + frame + item(0xe0dd, 0);
+        rle.raw(0x7fe0, 0x0010, "OB", items, 0xffffffffu);
+        writeFile(dir.file("rle_lying.dcm"), rle.bytes());
+        expectRefused(dir.file("rle_lying.dcm"), problem);
+    }
     DicomSlice noPixels(16, 12, 0);
     noPixels.erase(0x7fe0, 0x0010);
     writeFile(dir.file("no_pixels.dcm"), noPixels.bytes());
