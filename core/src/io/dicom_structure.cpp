@@ -203,7 +203,9 @@ std::uint64_t Walker::dataset(std::uint64_t at, std::uint64_t end, bool delimite
         if (length == kUndefined) {
             if (isPixels)
                 at = fragments(at, end);
-            else if (vr.empty() || vr == "SQ" || vr == "UN" || vr == "OB")
+            else if (vr.empty() || vr == "SQ" || vr == "UN" || (vr == "OB" && tag == kPixelData))
+                // GDCM asserts on any other explicit VR of undefined length (an icon's
+                // encapsulated pixel data, deeper down, is the one OB it reads so).
                 at = sequence(at, kUndefined, end, depth + 1);
             else
                 fail("element " + tagText(tag) + " (" + vr + ") has an undefined length");
