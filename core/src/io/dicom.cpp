@@ -205,6 +205,8 @@ std::optional<Image> readImageHeader(const std::string& path, bool required) {
     }
     if (const auto v = f.values(0x0028, 0x1053, "RescaleSlope", 1)) image.slope = (*v)[0];
     if (const auto v = f.values(0x0028, 0x1052, "RescaleIntercept", 1)) image.intercept = (*v)[0];
+    if (f.has(0x0028, 0x1052) && !f.has(0x0028, 0x1053))  // GDCM would take the slope as 0
+        throw FormatError(path + ": field \"RescaleSlope\": missing, though RescaleIntercept is given");
     if (image.slope == 0) throw FormatError(path + ": field \"RescaleSlope\": 0 would erase every sample");
     if (image.samplesPerPixel != 1)
         throw FormatError(path + ": field \"SamplesPerPixel\": " + std::to_string(image.samplesPerPixel) +
