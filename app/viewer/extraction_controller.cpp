@@ -2,7 +2,7 @@
 
 namespace isotrack::viewer {
 
-void ExtractionController::setSource(SourceSpec source) {
+void ExtractionController::setSource(VolumeSource source) {
     source_ = std::move(source);
     iso_.reset();
 }

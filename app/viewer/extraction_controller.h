@@ -21,8 +21,8 @@ public:
     explicit ExtractionController(int threads) : worker_(threads) {}
 
     // ---- what is wanted ----
-    const SourceSpec& source() const { return source_; }
-    void setSource(SourceSpec source);  // also back to the source's default isovalue
+    const VolumeSource& source() const { return source_; }
+    void setSource(VolumeSource source);  // also back to the source's default isovalue
     const std::optional<double>& iso() const { return iso_; }  // nullopt: the source's default
     void setIso(double iso) { iso_ = iso; }
     TableKind table() const { return table_; }
@@ -47,7 +47,7 @@ public:
 
 private:
     ExtractionWorker worker_;
-    SourceSpec source_;
+    VolumeSource source_;
     std::optional<double> iso_;
     TableKind table_ = TableKind::Consistent;
     ui::Method method_ = ui::Method::All;

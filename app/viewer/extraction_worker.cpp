@@ -49,21 +49,17 @@ bool meshHasEdge(const Mesh& mesh, const GridEdge& edge) {
 
 }  // namespace
 
-std::string SourceSpec::displayName() const {
-    if (kind == Field) return text;
-    return std::filesystem::path(text).filename().string();
+std::string displayName(const VolumeSource& source) {
+    if (source.kind == VolumeSource::Kind::Field) return source.text;
+    return std::filesystem::path(source.text).filename().string();
 }
 
 bool supersedes(const ExtractionRequest& newer, const ExtractionRequest& older) {
     return newer.source != older.source || newer.method != older.method || newer.table != older.table;
 }
 
-std::shared_ptr<LoadedVolume> loadSource(const SourceSpec& source) {
-    VolumeSource spec;
-    spec.kind = source.kind == SourceSpec::Field ? VolumeSource::Kind::Field : VolumeSource::Kind::File;
-    spec.text = source.text;
-    spec.raw = source.raw;
-    LoadedSource read = isotrack::loadSource(spec);
+std::shared_ptr<LoadedVolume> loadForView(const VolumeSource& source) {
+    LoadedSource read = isotrack::loadSource(source);
     if (!read.defaultIso) throw InputError(source.text + ": no finite samples");
     auto loaded = std::make_shared<LoadedVolume>();
     loaded->source = source;
@@ -198,12 +194,12 @@ ExtractionResult ExtractionWorker::work(const ExtractionRequest& request) {
     return result;
 }
 
-std::shared_ptr<const LoadedVolume> ExtractionWorker::volumeFor(const SourceSpec& source, double& loadMs) {
+std::shared_ptr<const LoadedVolume> ExtractionWorker::volumeFor(const VolumeSource& source, double& loadMs) {
     if (cache_ && cache_->source == source) return cache_;
-    setPhase(source.kind == SourceSpec::Field ? "building " + source.text : "loading " + source.displayName(), 0.0);
+    setPhase(source.kind == VolumeSource::Kind::Field ? "building " + source.text : "loading " + displayName(source), 0.0);
     const auto start = Clock::now();
     cache_.reset();  // the old volume goes before the new one is read
-    cache_ = loadSource(source);
+    cache_ = loadForView(source);
     loadMs = msSince(start);
     return cache_;
 }

@@ -30,6 +30,7 @@
 
 #include "isotrack/follow.h"
 #include "isotrack/io.h"
+#include "isotrack/source.h"
 #include "isotrack/tables.h"
 #include "isotrack/tracking.h"
 #include "isotrack/volume.h"
@@ -37,26 +38,12 @@
 
 namespace isotrack::viewer {
 
-// A built-in field ("blobs:128"), a volume file, or a raw file with its layout.
-struct SourceSpec {
-    enum Kind { Field, File } kind = Field;
-    std::string text;
-    std::optional<RawLayout> raw;  // a headerless file: how to read it
-    friend bool operator==(const SourceSpec& a, const SourceSpec& b) {
-        return a.kind == b.kind && a.text == b.text && a.raw.has_value() == b.raw.has_value();
-    }
-    friend bool operator!=(const SourceSpec& a, const SourceSpec& b) { return !(a == b); }
-    static SourceSpec field(std::string spec) { return SourceSpec{Field, std::move(spec), std::nullopt}; }
-    static SourceSpec file(std::string path, std::optional<RawLayout> raw = std::nullopt) {
-        return SourceSpec{File, std::move(path), std::move(raw)};
-    }
-    // What the panel calls it: the field spec, or the file's name.
-    std::string displayName() const;
-};
+// What the panel calls a source: the field spec, or the file's name.
+std::string displayName(const VolumeSource& source);
 
 // A loaded volume and what the panel shows about it.
 struct LoadedVolume {
-    SourceSpec source;
+    VolumeSource source;
     Volume volume;
     std::array<double, 2> range{0.0, 0.0};
     std::vector<float> histogram;  // sample counts in kHistogramBins bins across `range`
@@ -73,7 +60,7 @@ struct SeedRequest {
 
 struct ExtractionRequest {
     std::uint64_t generation = 0;
-    SourceSpec source;
+    VolumeSource source;
     std::optional<double> iso;  // nullopt: the source's default
     TableKind table = TableKind::Consistent;
     ui::Method method = ui::Method::All;
@@ -115,7 +102,7 @@ struct WorkerProgress {
 bool supersedes(const ExtractionRequest& newer, const ExtractionRequest& older);
 
 // Loads a source as the viewer shows it (volume, range, histogram, default isovalue).
-std::shared_ptr<LoadedVolume> loadSource(const SourceSpec& source);
+std::shared_ptr<LoadedVolume> loadForView(const VolumeSource& source);
 
 class ExtractionWorker {
 public:
@@ -141,7 +128,7 @@ private:
 
     void run();
     ExtractionResult work(const ExtractionRequest& request);
-    std::shared_ptr<const LoadedVolume> volumeFor(const SourceSpec& source, double& loadMs);
+    std::shared_ptr<const LoadedVolume> volumeFor(const VolumeSource& source, double& loadMs);
     void extract(const ExtractionRequest& request, const LoadedVolume& volume, ExtractionResult& result);
     void trackSeeds(const ExtractionRequest& request, const Volume& volume, ExtractionResult& result);
     bool cancelling() const { return cancel_.load(std::memory_order_relaxed); }

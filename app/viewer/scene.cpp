@@ -123,8 +123,8 @@ void Scene::buildUI(ui::PanelState& state) const {
         const Volume& volume = volume_->volume;
         data.loaded = true;
         data.source = volume_->source.text;
-        data.sourceName = volume_->source.displayName();
-        data.sourceIsFile = volume_->source.kind == SourceSpec::File;
+        data.sourceName = displayName(volume_->source);
+        data.sourceIsFile = volume_->source.kind == VolumeSource::Kind::File;
         data.dims = volume.dims();
         data.scalarType = scalarTypeName(volume.type());
         data.rangeMin = volume_->range[0];

@@ -44,9 +44,9 @@ Viewer::Viewer(const ViewerOptions& options, std::optional<Script> script)
       profiler_(gl::timerQueriesAvailable()),
       extraction_(extractionThreads(options.threads)) {
     if (!options.volumePath.empty()) {
-        extraction_.setSource(SourceSpec::file(options.volumePath, options.raw));
+        extraction_.setSource(VolumeSource::file(options.volumePath, options.raw));
     } else {
-        extraction_.setSource(SourceSpec::field(options.fieldSpec.empty() ? kDefaultField : options.fieldSpec));
+        extraction_.setSource(VolumeSource::field(options.fieldSpec.empty() ? kDefaultField : options.fieldSpec));
     }
     extraction_.setTable(parseTableKind(options.table));
     extraction_.setMethod(parseMethod(options.method));

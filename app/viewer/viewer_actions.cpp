@@ -23,11 +23,11 @@ Overloaded(Ts...) -> Overloaded<Ts...>;
 void Viewer::apply(const ui::Action& action) {
     std::visit(Overloaded{
                    [&](const ui::LoadField& a) {
-                       extraction_.setSource(SourceSpec::field(a.name + ":" + std::to_string(a.size)));
+                       extraction_.setSource(VolumeSource::field(a.name + ":" + std::to_string(a.size)));
                        submit();
                    },
                    [&](const ui::LoadFile& a) {
-                       extraction_.setSource(SourceSpec::file(a.path));
+                       extraction_.setSource(VolumeSource::file(a.path));
                        submit();
                    },
                    [&](const ui::SetIso& a) {

@@ -102,8 +102,8 @@ bool Viewer::runCommand(const ScriptCommand& c) {
     };
     if (name == "load" || name == "field") {
         if (name == "field") parseFieldSpec(c.text);  // a bad spec fails here, on its line
-        extraction_.setSource(name == "load" ? SourceSpec::file(scriptInputPath(run.script, c.text))
-                                             : SourceSpec::field(c.text));
+        extraction_.setSource(name == "load" ? VolumeSource::file(scriptInputPath(run.script, c.text))
+                                             : VolumeSource::field(c.text));
         submit();
         return waitFor(ScriptRun::Wait::Loaded);
     }
