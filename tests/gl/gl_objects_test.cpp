@@ -6,6 +6,7 @@
 #include "gl/check.h"
 #include "gl/framebuffer.h"
 #include "gl/program.h"
+#include "gl/timer_query.h"
 #include "gl/vertex_array.h"
 #include "gl_test_support.h"
 #include "render/shader_library.h"
@@ -78,4 +79,26 @@ TEST_CASE("render targets refuse absurd sizes", "[gl]") {
     test::useHeadlessGl();
     CHECK_THROWS_AS(gl::Renderbuffer(0, 10, gl::PixelFormat::Rgba8), gl::Error);
     CHECK_THROWS_AS(gl::Renderbuffer(1 << 20, 10, gl::PixelFormat::Rgba8), gl::Error);
+}
+
+TEST_CASE("every GL object type holds a name GL gave it, one per object", "[gl]") {
+    test::useHeadlessGl();
+    const gl::Buffer buffers[2];
+    const gl::VertexArray arrays[2];
+    const gl::Framebuffer framebuffers[2];
+    const gl::TimerQuery queries[2];
+    const gl::Texture textures[2] = {{4, 4, gl::PixelFormat::Rgba8}, {4, 4, gl::PixelFormat::Rgba8}};
+    const gl::Renderbuffer renderbuffers[2] = {{4, 4, gl::PixelFormat::Rgba8}, {4, 4, gl::PixelFormat::Rgba8}};
+    const gl::Program programs[2] = {{render::loadShader("lines.vert"), render::loadShader("lines.frag")},
+                                     {render::loadShader("lines.vert"), render::loadShader("lines.frag")}};
+    auto distinct = [](const auto& pair) {
+        return pair[0].id() != 0 && pair[1].id() != 0 && pair[0].id() != pair[1].id();
+    };
+    CHECK(distinct(buffers));
+    CHECK(distinct(arrays));
+    CHECK(distinct(framebuffers));
+    CHECK(distinct(queries));
+    CHECK(distinct(textures));
+    CHECK(distinct(renderbuffers));
+    CHECK(distinct(programs));
 }
