@@ -4,6 +4,7 @@
 
 #include "gl/buffer.h"
 #include "gl/check.h"
+#include "gl/colour_depth_target.h"
 #include "gl/framebuffer.h"
 #include "gl/program.h"
 #include "gl/timer_query.h"
@@ -101,4 +102,22 @@ TEST_CASE("every GL object type holds a name GL gave it, one per object", "[gl]"
     CHECK(distinct(textures));
     CHECK(distinct(renderbuffers));
     CHECK(distinct(programs));
+}
+
+TEST_CASE("a colour + depth target is complete, cleared and read back in either storage", "[gl]") {
+    test::useHeadlessGl();
+    const gl::ColourDepthTarget ids(8, 6, gl::PixelFormat::R32UI, gl::ColourStorage::Texture);
+    CHECK(ids.width() == 8);
+    CHECK(ids.height() == 6);
+    CHECK(ids.bytes() == 8 * 6 * 8);
+    ids.framebuffer().clearIdAndDepth(41);
+    CHECK(ids.framebuffer().readUint(7, 5) == 41);
+    CHECK(ids.framebuffer().readDepth(0, 0) == 1.0f);
+
+    const gl::ColourDepthTarget picture(5, 3, gl::PixelFormat::Rgba8, gl::ColourStorage::Renderbuffer);
+    CHECK(picture.framebuffer().readRgba(5, 3).size() == 5 * 3 * 4);
+    gl::Framebuffer::bindDefault();
+
+    CHECK_THROWS_AS(gl::ColourDepthTarget(0, 6, gl::PixelFormat::Rgba8, gl::ColourStorage::Renderbuffer), gl::Error);
+    CHECK_THROWS_AS(gl::ColourDepthTarget(1 << 20, 6, gl::PixelFormat::R32UI, gl::ColourStorage::Texture), gl::Error);
 }
