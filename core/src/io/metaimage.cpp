@@ -72,28 +72,18 @@ Header readHeader(std::FILE* f, const std::string& path) {
     }
 }
 
-class MetaImageReader {
+class MetaImageReader : public VolumeReader {
 public:
-    MetaImageReader(std::string path, Header header) : header_(std::move(header)) {
-        geometry_.path = std::move(path);
-        geometry_.sizeField = "DimSize";
-    }
+    MetaImageReader(std::string path, Header header)
+        : VolumeReader(std::move(path), "DimSize"), header_(std::move(header)) {}
     Volume read();
 
 private:
-    const std::string& path() const { return geometry_.path; }
-    [[noreturn]] void fail(const std::string& field, const std::string& problem) const {
-        throw FormatError(path() + ": field \"" + field + "\": " + problem);
-    }
     const std::string* find(const std::string& field) const {
         const auto it = header_.fields.find(lowerCase(field));
         return it == header_.fields.end() ? nullptr : &it->second.second;
     }
-    const std::string& require(const std::string& field) const {
-        const std::string* v = find(field);
-        if (!v) throw FormatError(path() + ": missing required field \"" + field + "\"");
-        return *v;
-    }
+    const std::string& require(const std::string& field) const { return required(find(field), field); }
     bool flag(const std::string& field, bool otherwise) const;
     Vec3d numbers(const std::string& field, Vec3d otherwise, bool positive) const;
     void parseGeometry();
@@ -101,7 +91,6 @@ private:
     SampleData locateData() const;
 
     Header header_;
-    VolumeHeader geometry_;
 };
 
 bool MetaImageReader::flag(const std::string& field, bool otherwise) const {
@@ -244,7 +233,7 @@ SampleData MetaImageReader::locateData() const {
 
 Volume MetaImageReader::read() {
     parseGeometry();
-    return readSamples(geometry_, locateData());
+    return readVolume(locateData());
 }
 
 }  // namespace

@@ -96,19 +96,12 @@ private:
     bool limited_ = true;
 };
 
-class VtkReader {
+class VtkReader : public VolumeReader {
 public:
-    VtkReader(std::FILE* f, const std::string& path) : tokens_(f, path) {
-        geometry_.path = path;
-        geometry_.sizeField = "DIMENSIONS";
-    }
+    VtkReader(std::FILE* f, const std::string& path) : VolumeReader(path, "DIMENSIONS"), tokens_(f, path) {}
     Volume read();
 
 private:
-    const std::string& path() const { return geometry_.path; }
-    [[noreturn]] void fail(const std::string& field, const std::string& problem) const {
-        throw FormatError(path() + ": field \"" + field + "\": " + problem);
-    }
     std::string keyword();
     Vec3d numbers(const std::string& field, bool positive);
     std::vector<std::string> threeWords();  // the next three tokens
@@ -122,7 +115,6 @@ private:
 
     Tokens tokens_;
     std::string word_;  // the last keyword as written
-    VolumeHeader geometry_;
     bool binary_ = false;
 };
 
@@ -151,8 +143,8 @@ Vec3d VtkReader::numbers(const std::string& field, bool positive) {
 void VtkReader::readPreamble() {
     const std::string version = tokens_.line();
     if (lowerCase(version).compare(0, 14, "# vtk datafile") != 0)
-        throw FormatError(path() + ": not a VTK legacy file: first line is \"" + printable(version) +
-                          "\", not \"# vtk DataFile Version ...\"");
+        failFile("not a VTK legacy file: first line is \"" + printable(version) +
+                 "\", not \"# vtk DataFile Version ...\"");
     tokens_.line();  // title
     const std::string encoding = joinWords(tokens_.line());
     if (lowerCase(encoding) == "binary")
@@ -184,12 +176,12 @@ void VtkReader::readStructure() {
         } else if (key == "point_data") {
             break;
         } else if (key.empty()) {
-            throw FormatError(path() + ": file ends before POINT_DATA");
+            failFile("file ends before POINT_DATA");
         } else {
             fail("DATASET", "expected DIMENSIONS, SPACING, ORIGIN or POINT_DATA, got \"" + printable(word_) + "\"");
         }
     }
-    if (!haveDims) throw FormatError(path() + ": missing required field \"DIMENSIONS\" before POINT_DATA");
+    if (!haveDims) failFile("missing required field \"DIMENSIONS\" before POINT_DATA");
     sampleBytes(geometry_);
     checkGeometry(geometry_, spacingField, "ORIGIN");
 
@@ -220,7 +212,7 @@ void VtkReader::readScalarsHeader() {
         fail("SCALARS", "expected 1 component, got \"" + printable(words[2]) + "\"");
     const std::string table = keyword();
     if (table != "lookup_table") fail("LOOKUP_TABLE", "expected LOOKUP_TABLE after SCALARS, got \"" + printable(word_) + "\"");
-    if (tokens_.next().empty()) throw FormatError(path() + ": file ends in the LOOKUP_TABLE line");
+    if (tokens_.next().empty()) failFile("file ends in the LOOKUP_TABLE line");
 }
 
 template <class T>
@@ -280,7 +272,7 @@ Volume VtkReader::read() {
     data.offset = tokens_.consumed();
     data.bigEndian = true;
     data.trailingBytesAllowed = true;  // further attributes may follow
-    return readSamples(geometry_, data);
+    return readVolume(data);
 }
 
 }  // namespace
