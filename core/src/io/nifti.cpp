@@ -34,12 +34,12 @@ struct Datatype {
 };
 
 const Datatype kDatatypes[] = {
-    {2, "uint8", ScalarType::UInt8},       {4, "int16", ScalarType::Int16},    {8, "int32", ScalarType::Int32},
-    {16, "float32", ScalarType::Float32},  {64, "float64", ScalarType::Float64}, {256, "int8", ScalarType::Int8},
-    {512, "uint16", ScalarType::UInt16},   {768, "uint32", ScalarType::UInt32}, {1, "binary", std::nullopt},
-    {32, "complex64", std::nullopt},       {128, "rgb24", std::nullopt},       {1024, "int64", std::nullopt},
-    {1280, "uint64", std::nullopt},        {1536, "float128", std::nullopt},   {1792, "complex128", std::nullopt},
-    {2048, "complex256", std::nullopt},    {2304, "rgba32", std::nullopt},
+    {2, "uint8", ScalarType::UInt8},      {4, "int16", ScalarType::Int16},      {8, "int32", ScalarType::Int32},
+    {16, "float32", ScalarType::Float32}, {64, "float64", ScalarType::Float64}, {256, "int8", ScalarType::Int8},
+    {512, "uint16", ScalarType::UInt16},  {768, "uint32", ScalarType::UInt32},  {1, "binary", std::nullopt},
+    {32, "complex64", std::nullopt},      {128, "rgb24", std::nullopt},         {1024, "int64", std::nullopt},
+    {1280, "uint64", std::nullopt},       {1536, "float128", std::nullopt},     {1792, "complex128", std::nullopt},
+    {2048, "complex256", std::nullopt},   {2304, "rgba32", std::nullopt},
 };
 
 class HeaderBytes {
@@ -119,8 +119,7 @@ NiftiReader::NiftiReader(std::string path, const unsigned char* bytes) : VolumeR
     const std::string magic(reinterpret_cast<const char*>(bytes + kMagic), 4);
     if (magic == std::string("ni1\0", 4))
         fail("magic", "\"ni1\" is a .hdr/.img pair, which is not supported (only single-file \"n+1\")");
-    if (magic != std::string("n+1\0", 4))
-        fail("magic", "expected \"n+1\", got \"" + printable(magic) + "\"");
+    if (magic != std::string("n+1\0", 4)) fail("magic", "expected \"n+1\", got \"" + printable(magic) + "\"");
 
     readDims(h);
     readType(h);
@@ -163,8 +162,8 @@ void NiftiReader::readType(const HeaderBytes& h) {
     geometry_.type = *found->type;
     const int bitpix = h.i16(kBitpix);
     if (std::size_t(bitpix) != 8 * scalarTypeSize(geometry_.type))
-        fail("bitpix", std::to_string(bitpix) + " disagrees with datatype " + std::to_string(code) + " (" +
-                           found->name + ")");
+        fail("bitpix",
+             std::to_string(bitpix) + " disagrees with datatype " + std::to_string(code) + " (" + found->name + ")");
 }
 
 void NiftiReader::readGeometry(const HeaderBytes& h) {
@@ -200,7 +199,8 @@ void NiftiReader::readGeometry(const HeaderBytes& h) {
 Mat3d NiftiReader::qformRotation(const HeaderBytes& h) const {
     const double b = double(h.f32(kQuatern)), c = double(h.f32(kQuatern + 4)), d = double(h.f32(kQuatern + 8));
     if (!std::isfinite(b) || !std::isfinite(c) || !std::isfinite(d))
-        fail("quatern_b", "the quaternion must be finite, got " + numberText(b) + " " + numberText(c) + " " + numberText(d));
+        fail("quatern_b",
+             "the quaternion must be finite, got " + numberText(b) + " " + numberText(c) + " " + numberText(d));
     const double sum = b * b + c * c + d * d;
     if (sum > 1.0 + 1e-6)
         fail("quatern_b", "the quaternion's (b, c, d) must have length <= 1, got " + numberText(b) + " " +
@@ -235,8 +235,8 @@ Volume NiftiReader::read(bool gzip) {
     if (gzip) {
         data_.compression = Compression::Gzip;
     } else if (const std::uint64_t size = fileSizeOf(path(), path()); data_.skip > size) {
-        fail("vox_offset", std::to_string(data_.skip) + " is beyond the end of the " + std::to_string(size) +
-                               "-byte file");
+        fail("vox_offset",
+             std::to_string(data_.skip) + " is beyond the end of the " + std::to_string(size) + "-byte file");
     }
     // The float32 copy counts against the volume limit too, before either is allocated.
     const bool scaled = slope_ != 0.0;

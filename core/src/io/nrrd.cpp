@@ -62,20 +62,34 @@ struct TypeName {
 };
 
 const TypeName kTypeNames[] = {
-    {"uchar", ScalarType::UInt8},        {"unsigned char", ScalarType::UInt8},
-    {"uint8", ScalarType::UInt8},        {"uint8_t", ScalarType::UInt8},
-    {"signed char", ScalarType::Int8},   {"int8", ScalarType::Int8},
-    {"int8_t", ScalarType::Int8},        {"short", ScalarType::Int16},
-    {"short int", ScalarType::Int16},    {"signed short", ScalarType::Int16},
-    {"signed short int", ScalarType::Int16}, {"int16", ScalarType::Int16},
-    {"int16_t", ScalarType::Int16},      {"ushort", ScalarType::UInt16},
-    {"unsigned short", ScalarType::UInt16}, {"unsigned short int", ScalarType::UInt16},
-    {"uint16", ScalarType::UInt16},      {"uint16_t", ScalarType::UInt16},
-    {"int", ScalarType::Int32},          {"signed int", ScalarType::Int32},
-    {"int32", ScalarType::Int32},        {"int32_t", ScalarType::Int32},
-    {"uint", ScalarType::UInt32},        {"unsigned int", ScalarType::UInt32},
-    {"uint32", ScalarType::UInt32},      {"uint32_t", ScalarType::UInt32},
-    {"float", ScalarType::Float32},      {"double", ScalarType::Float64},
+    {"uchar", ScalarType::UInt8},
+    {"unsigned char", ScalarType::UInt8},
+    {"uint8", ScalarType::UInt8},
+    {"uint8_t", ScalarType::UInt8},
+    {"signed char", ScalarType::Int8},
+    {"int8", ScalarType::Int8},
+    {"int8_t", ScalarType::Int8},
+    {"short", ScalarType::Int16},
+    {"short int", ScalarType::Int16},
+    {"signed short", ScalarType::Int16},
+    {"signed short int", ScalarType::Int16},
+    {"int16", ScalarType::Int16},
+    {"int16_t", ScalarType::Int16},
+    {"ushort", ScalarType::UInt16},
+    {"unsigned short", ScalarType::UInt16},
+    {"unsigned short int", ScalarType::UInt16},
+    {"uint16", ScalarType::UInt16},
+    {"uint16_t", ScalarType::UInt16},
+    {"int", ScalarType::Int32},
+    {"signed int", ScalarType::Int32},
+    {"int32", ScalarType::Int32},
+    {"int32_t", ScalarType::Int32},
+    {"uint", ScalarType::UInt32},
+    {"unsigned int", ScalarType::UInt32},
+    {"uint32", ScalarType::UInt32},
+    {"uint32_t", ScalarType::UInt32},
+    {"float", ScalarType::Float32},
+    {"double", ScalarType::Float64},
 };
 
 const char* nrrdTypeName(ScalarType type) {
@@ -191,8 +205,8 @@ long long NrrdReader::skipField(const std::string& field, long long minimum) con
     const std::string* text = find(field);
     if (!text) return 0;
     const auto v = parseInteger(*text);
-    if (!v || *v < minimum) fail(field, "expected an integer >= " + std::to_string(minimum) + ", got \"" +
-                                            printable(*text) + "\"");
+    if (!v || *v < minimum)
+        fail(field, "expected an integer >= " + std::to_string(minimum) + ", got \"" + printable(*text) + "\"");
     return *v;
 }
 

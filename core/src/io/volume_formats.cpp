@@ -10,7 +10,8 @@ namespace isotrack {
 
 namespace {
 
-constexpr const char* kHeaderExtensions = ".nrrd, .nhdr, .nii, .nii.gz, .mhd, .mha, .vtk, .dcm, a DICOM folder or DICOMDIR";
+constexpr const char* kHeaderExtensions =
+    ".nrrd, .nhdr, .nii, .nii.gz, .mhd, .mha, .vtk, .dcm, a DICOM folder or DICOMDIR";
 
 // Headerless samples: the layout the caller gives is the whole header.
 class RawReader : public detail::VolumeReader {
