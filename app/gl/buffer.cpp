@@ -6,19 +6,13 @@
 #include <string>
 
 #include "gl/check.h"
+#include "gl/make_handle.h"
 
 namespace isotrack::gl {
 
 void detail::destroyBuffer(unsigned id) { glDeleteBuffers(1, &id); }
 
 namespace {
-
-GLuint createBuffer() {
-    GLuint id = 0;
-    ISOTRACK_GL_CALL(glGenBuffers(1, &id));
-    if (id == 0) throw Error("glGenBuffers returned no buffer");
-    return id;
-}
 
 void checkRange(const char* what, std::size_t offset, std::size_t bytes, std::size_t size) {
     if (offset > size || bytes > size - offset) {
@@ -30,7 +24,7 @@ void checkRange(const char* what, std::size_t offset, std::size_t bytes, std::si
 
 }  // namespace
 
-Buffer::Buffer() : handle_(createBuffer()) {}
+Buffer::Buffer() : handle_(makeHandle(glGenBuffers, "glGenBuffers", "buffer")) {}
 
 Buffer::Buffer(Buffer&& other) noexcept : handle_(std::move(other.handle_)), size_(std::exchange(other.size_, 0)) {}
 

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "gl/check.h"
+#include "gl/make_handle.h"
 
 namespace isotrack::gl {
 
@@ -43,8 +44,7 @@ void checkSize(const char* what, int width, int height) {
 
 GLuint createTexture(int width, int height, PixelFormat format) {
     checkSize("gl::Texture", width, height);
-    GLuint id = 0;
-    ISOTRACK_GL_CALL(glGenTextures(1, &id));
+    const GLuint id = makeHandle(glGenTextures, "glGenTextures", "texture");
     GLenum layout = GL_RGBA, type = GL_UNSIGNED_BYTE;
     transferFormat(format, layout, type);
     ISOTRACK_GL_CALL(glBindTexture(GL_TEXTURE_2D, id));
@@ -59,18 +59,10 @@ GLuint createTexture(int width, int height, PixelFormat format) {
 
 GLuint createRenderbuffer(int width, int height, PixelFormat format) {
     checkSize("gl::Renderbuffer", width, height);
-    GLuint id = 0;
-    ISOTRACK_GL_CALL(glGenRenderbuffers(1, &id));
+    const GLuint id = makeHandle(glGenRenderbuffers, "glGenRenderbuffers", "renderbuffer");
     ISOTRACK_GL_CALL(glBindRenderbuffer(GL_RENDERBUFFER, id));
     ISOTRACK_GL_CALL(glRenderbufferStorage(GL_RENDERBUFFER, internalFormat(format), width, height));
     ISOTRACK_GL_CALL(glBindRenderbuffer(GL_RENDERBUFFER, 0));
-    return id;
-}
-
-GLuint createFramebuffer() {
-    GLuint id = 0;
-    ISOTRACK_GL_CALL(glGenFramebuffers(1, &id));
-    if (id == 0) throw Error("glGenFramebuffers returned no framebuffer");
     return id;
 }
 
@@ -92,7 +84,7 @@ Texture::Texture(int width, int height, PixelFormat format) : handle_(createText
 Renderbuffer::Renderbuffer(int width, int height, PixelFormat format)
     : handle_(createRenderbuffer(width, height, format)) {}
 
-Framebuffer::Framebuffer() : handle_(createFramebuffer()) {}
+Framebuffer::Framebuffer() : handle_(makeHandle(glGenFramebuffers, "glGenFramebuffers", "framebuffer")) {}
 
 void Framebuffer::attachColour(const Renderbuffer& buffer) {
     bind();

@@ -6,6 +6,8 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <vector>
 
+#include "gl/make_handle.h"
+
 namespace isotrack::gl {
 
 void detail::destroyShader(unsigned id) { glDeleteShader(id); }
@@ -44,9 +46,13 @@ std::string programLog(GLuint program) {
 }
 
 GLuint compile(ShaderStage stage, const ShaderSource& source) {
-    const GLuint id = glCreateShader(stage == ShaderStage::Vertex ? GL_VERTEX_SHADER : GL_FRAGMENT_SHADER);
-    ISOTRACK_GL_CHECK("glCreateShader");
-    if (id == 0) throw ShaderError("shader " + source.name + ": glCreateShader failed");
+    GLuint id = 0;
+    try {
+        id = makeHandle(glCreateShader, stage == ShaderStage::Vertex ? GL_VERTEX_SHADER : GL_FRAGMENT_SHADER,
+                        "glCreateShader", "shader");
+    } catch (const Error& e) {
+        throw ShaderError("shader " + source.name + ": " + e.what());
+    }
     const char* text = source.text.c_str();
     const auto length = static_cast<GLint>(source.text.size());
     glShaderSource(id, 1, &text, &length);
@@ -62,9 +68,12 @@ GLuint compile(ShaderStage stage, const ShaderSource& source) {
 }
 
 GLuint link(const Shader& vertex, const Shader& fragment, const std::string& name) {
-    const GLuint id = glCreateProgram();
-    ISOTRACK_GL_CHECK("glCreateProgram");
-    if (id == 0) throw ShaderError("program " + name + ": glCreateProgram failed");
+    GLuint id = 0;
+    try {
+        id = makeHandle(glCreateProgram, "glCreateProgram", "program");
+    } catch (const Error& e) {
+        throw ShaderError("program " + name + ": " + e.what());
+    }
     glAttachShader(id, vertex.id());
     glAttachShader(id, fragment.id());
     glLinkProgram(id);

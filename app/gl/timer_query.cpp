@@ -3,23 +3,13 @@
 #include <glad/gl.h>
 
 #include "gl/check.h"
+#include "gl/make_handle.h"
 
 namespace isotrack::gl {
 
 void detail::destroyQuery(unsigned id) { glDeleteQueries(1, &id); }
 
-namespace {
-
-GLuint createQuery() {
-    GLuint id = 0;
-    ISOTRACK_GL_CALL(glGenQueries(1, &id));
-    if (id == 0) throw Error("glGenQueries returned no query");
-    return id;
-}
-
-}  // namespace
-
-TimerQuery::TimerQuery() : handle_(createQuery()) {}
+TimerQuery::TimerQuery() : handle_(makeHandle(glGenQueries, "glGenQueries", "query")) {}
 
 void TimerQuery::begin() const { ISOTRACK_GL_CALL(glBeginQuery(GL_TIME_ELAPSED, handle_.id())); }
 

@@ -6,23 +6,13 @@
 
 #include "gl/buffer.h"
 #include "gl/check.h"
+#include "gl/make_handle.h"
 
 namespace isotrack::gl {
 
 void detail::destroyVertexArray(unsigned id) { glDeleteVertexArrays(1, &id); }
 
-namespace {
-
-GLuint createVertexArray() {
-    GLuint id = 0;
-    ISOTRACK_GL_CALL(glGenVertexArrays(1, &id));
-    if (id == 0) throw Error("glGenVertexArrays returned no vertex array");
-    return id;
-}
-
-}  // namespace
-
-VertexArray::VertexArray() : handle_(createVertexArray()) {}
+VertexArray::VertexArray() : handle_(makeHandle(glGenVertexArrays, "glGenVertexArrays", "vertex array")) {}
 
 void VertexArray::setFloatAttribute(unsigned location, const Buffer& buffer, int components, std::size_t stride,
                                     std::size_t offset) {

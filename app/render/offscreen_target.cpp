@@ -3,17 +3,10 @@
 namespace isotrack::render {
 
 OffscreenTarget::OffscreenTarget(int width, int height)
-    : width_(width),
-      height_(height),
-      colour_(width, height, gl::PixelFormat::Rgba8),
-      depth_(width, height, gl::PixelFormat::Depth24Stencil8) {
-    framebuffer_.attachColour(colour_);
-    framebuffer_.attachDepthStencil(depth_);
-    framebuffer_.checkComplete();
-}
+    : target_(width, height, gl::PixelFormat::Rgba8, gl::ColourStorage::Renderbuffer) {}
 
 Image OffscreenTarget::read() const {
-    return imageFromBottomUp(width_, height_, framebuffer_.readRgba(width_, height_));
+    return imageFromBottomUp(width(), height(), target_.framebuffer().readRgba(width(), height()));
 }
 
 }  // namespace isotrack::render

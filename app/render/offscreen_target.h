@@ -3,7 +3,7 @@
 // and tests (no multisampling, so pixels are reproducible).
 #include <cstddef>
 
-#include "gl/framebuffer.h"
+#include "gl/colour_depth_target.h"
 #include "render/image.h"
 
 namespace isotrack::render {
@@ -12,22 +12,20 @@ class OffscreenTarget {
 public:
     OffscreenTarget(int width, int height);  // needs a current context
 
-    void bind() const { framebuffer_.bind(); }
+    void bind() const { target_.framebuffer().bind(); }
     // The pixels, top row first.
     Image read() const;
     // Copies the colour into the default framebuffer with its bottom-left
     // corner at (x, y), and binds the default framebuffer.
-    void blitToDefault(int x, int y) const { framebuffer_.blitColourToDefault(width_, height_, x, y); }
+    void blitToDefault(int x, int y) const { target_.framebuffer().blitColourToDefault(width(), height(), x, y); }
     // Colour and depth/stencil, 4 bytes each per pixel.
-    std::size_t bytes() const { return std::size_t(width_) * std::size_t(height_) * 8; }
+    std::size_t bytes() const { return target_.bytes(); }
 
-    int width() const { return width_; }
-    int height() const { return height_; }
+    int width() const { return target_.width(); }
+    int height() const { return target_.height(); }
 
 private:
-    int width_, height_;
-    gl::Renderbuffer colour_, depth_;
-    gl::Framebuffer framebuffer_;
+    gl::ColourDepthTarget target_;
 };
 
 }  // namespace isotrack::render

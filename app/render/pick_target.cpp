@@ -8,28 +8,22 @@
 namespace isotrack::render {
 
 PickTarget::PickTarget(int width, int height)
-    : width_(width),
-      height_(height),
-      ids_(width, height, gl::PixelFormat::R32UI),
-      depth_(width, height, gl::PixelFormat::Depth24Stencil8) {
-    framebuffer_.attachColour(ids_);
-    framebuffer_.attachDepthStencil(depth_);
-    framebuffer_.checkComplete();
+    : target_(width, height, gl::PixelFormat::R32UI, gl::ColourStorage::Texture) {
     gl::Framebuffer::bindDefault();
 }
 
-void PickTarget::bindAndClear() const { framebuffer_.clearIdAndDepth(0); }
+void PickTarget::bindAndClear() const { target_.framebuffer().clearIdAndDepth(0); }
 
 void PickTarget::unbind() { gl::Framebuffer::bindDefault(); }
 
 std::uint32_t PickTarget::idAt(int x, int y) const {
-    if (x < 0 || y < 0 || x >= width_ || y >= height_) return 0;
-    return framebuffer_.readUint(x, height_ - 1 - y);
+    if (x < 0 || y < 0 || x >= width() || y >= height()) return 0;
+    return target_.framebuffer().readUint(x, height() - 1 - y);
 }
 
 float PickTarget::depthAt(int x, int y) const {
-    if (x < 0 || y < 0 || x >= width_ || y >= height_) return 1.0f;
-    return framebuffer_.readDepth(x, height_ - 1 - y);
+    if (x < 0 || y < 0 || x >= width() || y >= height()) return 1.0f;
+    return target_.framebuffer().readDepth(x, height() - 1 - y);
 }
 
 glm::vec3 unproject(const FrameView& frame, float x, float y, float depth) {

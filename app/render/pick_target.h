@@ -9,7 +9,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "gl/framebuffer.h"
+#include "gl/colour_depth_target.h"
 #include "render/renderer.h"
 
 namespace isotrack::render {
@@ -26,15 +26,12 @@ public:
     std::uint32_t idAt(int x, int y) const;
     float depthAt(int x, int y) const;
 
-    int width() const { return width_; }
-    int height() const { return height_; }
-    std::size_t bytes() const { return std::size_t(width_) * std::size_t(height_) * 8; }  // ids + depth/stencil
+    int width() const { return target_.width(); }
+    int height() const { return target_.height(); }
+    std::size_t bytes() const { return target_.bytes(); }  // ids + depth/stencil
 
 private:
-    int width_, height_;
-    gl::Texture ids_;
-    gl::Renderbuffer depth_;
-    gl::Framebuffer framebuffer_;
+    gl::ColourDepthTarget target_;
 };
 
 // The world point seen at pixel (x, y) from the top-left of the frame's

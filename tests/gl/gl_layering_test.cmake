@@ -1,8 +1,15 @@
-# Fails when a file under app/ outside app/gl/ includes the GL loader <glad/gl.h>.
+# Fails when a file under app/ outside app/gl/ includes the GL loader <glad/gl.h>,
+# or when any file under app/ calls a glGen* or glCreate* function itself: GL
+# object names are made only through gl::makeHandle (app/gl/make_handle.h).
 #   cmake -DAPP_DIR=<app> -P gl_layering_test.cmake
 file(GLOB_RECURSE files ${APP_DIR}/*.h ${APP_DIR}/*.cpp)
 set(offenders "")
+set(makers "")
 foreach(f IN LISTS files)
+  file(STRINGS ${f} calls REGEX "(^|[^A-Za-z0-9_])gl(Gen|Create)[A-Za-z]*[ \t]*\\(")
+  if(calls)
+    list(APPEND makers "${f}: ${calls}")
+  endif()
   if(f MATCHES "^${APP_DIR}/gl/")
     continue()
   endif()
@@ -14,4 +21,7 @@ endforeach()
 if(offenders)
   message(FATAL_ERROR "only app/gl/ may include the GL loader:\n${offenders}")
 endif()
-message(STATUS "the GL loader is included only in app/gl/")
+if(makers)
+  message(FATAL_ERROR "GL object names are made only through gl::makeHandle (app/gl/make_handle.h):\n${makers}")
+endif()
+message(STATUS "the GL loader is included only in app/gl/, and names are made only by gl::makeHandle")

@@ -4,8 +4,10 @@
 
 #include "gl/buffer.h"
 #include "gl/check.h"
+#include "gl/colour_depth_target.h"
 #include "gl/framebuffer.h"
 #include "gl/program.h"
+#include "gl/timer_query.h"
 #include "gl/vertex_array.h"
 #include "gl_test_support.h"
 #include "render/shader_library.h"
@@ -78,4 +80,44 @@ TEST_CASE("render targets refuse absurd sizes", "[gl]") {
     test::useHeadlessGl();
     CHECK_THROWS_AS(gl::Renderbuffer(0, 10, gl::PixelFormat::Rgba8), gl::Error);
     CHECK_THROWS_AS(gl::Renderbuffer(1 << 20, 10, gl::PixelFormat::Rgba8), gl::Error);
+}
+
+TEST_CASE("every GL object type holds a name GL gave it, one per object", "[gl]") {
+    test::useHeadlessGl();
+    const gl::Buffer buffers[2];
+    const gl::VertexArray arrays[2];
+    const gl::Framebuffer framebuffers[2];
+    const gl::TimerQuery queries[2];
+    const gl::Texture textures[2] = {{4, 4, gl::PixelFormat::Rgba8}, {4, 4, gl::PixelFormat::Rgba8}};
+    const gl::Renderbuffer renderbuffers[2] = {{4, 4, gl::PixelFormat::Rgba8}, {4, 4, gl::PixelFormat::Rgba8}};
+    const gl::Program programs[2] = {{render::loadShader("lines.vert"), render::loadShader("lines.frag")},
+                                     {render::loadShader("lines.vert"), render::loadShader("lines.frag")}};
+    auto distinct = [](const auto& pair) {
+        return pair[0].id() != 0 && pair[1].id() != 0 && pair[0].id() != pair[1].id();
+    };
+    CHECK(distinct(buffers));
+    CHECK(distinct(arrays));
+    CHECK(distinct(framebuffers));
+    CHECK(distinct(queries));
+    CHECK(distinct(textures));
+    CHECK(distinct(renderbuffers));
+    CHECK(distinct(programs));
+}
+
+TEST_CASE("a colour + depth target is complete, cleared and read back in either storage", "[gl]") {
+    test::useHeadlessGl();
+    const gl::ColourDepthTarget ids(8, 6, gl::PixelFormat::R32UI, gl::ColourStorage::Texture);
+    CHECK(ids.width() == 8);
+    CHECK(ids.height() == 6);
+    CHECK(ids.bytes() == 8 * 6 * 8);
+    ids.framebuffer().clearIdAndDepth(41);
+    CHECK(ids.framebuffer().readUint(7, 5) == 41);
+    CHECK(ids.framebuffer().readDepth(0, 0) == 1.0f);
+
+    const gl::ColourDepthTarget picture(5, 3, gl::PixelFormat::Rgba8, gl::ColourStorage::Renderbuffer);
+    CHECK(picture.framebuffer().readRgba(5, 3).size() == 5 * 3 * 4);
+    gl::Framebuffer::bindDefault();
+
+    CHECK_THROWS_AS(gl::ColourDepthTarget(0, 6, gl::PixelFormat::Rgba8, gl::ColourStorage::Renderbuffer), gl::Error);
+    CHECK_THROWS_AS(gl::ColourDepthTarget(1 << 20, 6, gl::PixelFormat::R32UI, gl::ColourStorage::Texture), gl::Error);
 }

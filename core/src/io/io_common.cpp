@@ -11,6 +11,7 @@
 #include <cstring>
 #include <filesystem>
 #include <sstream>
+#include <utility>
 
 #include "isotrack/errors.h"
 
@@ -371,6 +372,22 @@ void appendFloatLE(std::string& out, float f) {
     std::uint32_t bits = 0;
     std::memcpy(&bits, &f, 4);
     appendU32LE(out, bits);
+}
+
+VolumeReader::VolumeReader(std::string path, std::string sizeField) {
+    geometry_.path = std::move(path);
+    geometry_.sizeField = std::move(sizeField);
+}
+
+void VolumeReader::failFile(const std::string& problem) const { throw FormatError(path() + ": " + problem); }
+
+void VolumeReader::fail(const std::string& field, const std::string& problem) const {
+    failFile("field \"" + field + "\": " + problem);
+}
+
+const std::string& VolumeReader::required(const std::string* value, const std::string& field) const {
+    if (value == nullptr) failFile("missing required field \"" + field + "\"");
+    return *value;
 }
 
 }  // namespace isotrack::detail

@@ -89,6 +89,29 @@ std::string dataWhere(const VolumeHeader& header, const SampleData& data);
 // Validates every size, then allocates once, reads and converts to host order.
 Volume readSamples(const VolumeHeader& header, const SampleData& data);
 
+// What every volume loader (NRRD, NIfTI, MetaImage, VTK legacy, raw) shares:
+// the file it reads and the header it fills, one-line errors that name the
+// file and the field, and the one way to the samples (readSamples).
+class VolumeReader {
+public:
+    const std::string& path() const { return geometry_.path; }
+
+protected:
+    // `sizeField` is the field blamed for bad sizes: "sizes", "dim", "DimSize"...
+    VolumeReader(std::string path, std::string sizeField);
+
+    // FormatError "PATH: PROBLEM".
+    [[noreturn]] void failFile(const std::string& problem) const;
+    // FormatError "PATH: field \"FIELD\": PROBLEM".
+    [[noreturn]] void fail(const std::string& field, const std::string& problem) const;
+    // `value`, or FormatError "PATH: missing required field \"FIELD\"" when it is null.
+    const std::string& required(const std::string* value, const std::string& field) const;
+    // The samples `data` locates, as geometry_ describes them.
+    Volume readVolume(const SampleData& data) const { return readSamples(geometry_, data); }
+
+    VolumeHeader geometry_;
+};
+
 // A mesh a writer can write: whole triangles, every index in range, and one
 // component per triangle when given; else an InputError naming `path`.
 void checkMesh(const std::string& path, const Mesh& mesh, const std::vector<std::int32_t>* faceComponent);

@@ -30,14 +30,14 @@ using namespace detail;
 constexpr std::uint64_t kMaxHeaderBytes = std::uint64_t(1) << 20;
 
 const std::pair<const char*, ScalarType> kElementTypes[] = {
-    {"MET_UCHAR", ScalarType::UInt8},   {"MET_CHAR", ScalarType::Int8},   {"MET_USHORT", ScalarType::UInt16},
-    {"MET_SHORT", ScalarType::Int16},   {"MET_UINT", ScalarType::UInt32}, {"MET_INT", ScalarType::Int32},
+    {"MET_UCHAR", ScalarType::UInt8},   {"MET_CHAR", ScalarType::Int8},      {"MET_USHORT", ScalarType::UInt16},
+    {"MET_SHORT", ScalarType::Int16},   {"MET_UINT", ScalarType::UInt32},    {"MET_INT", ScalarType::Int32},
     {"MET_FLOAT", ScalarType::Float32}, {"MET_DOUBLE", ScalarType::Float64},
 };
 
 struct Header {
     std::map<std::string, std::pair<std::string, std::string>> fields;  // lower-case key -> (key, value)
-    std::uint64_t length = 0;                                            // bytes up to the data
+    std::uint64_t length = 0;                                           // bytes up to the data
 };
 
 Header readHeader(std::FILE* f, const std::string& path) {
@@ -48,7 +48,8 @@ Header readHeader(std::FILE* f, const std::string& path) {
         int c = 0;
         while ((c = std::fgetc(f)) != EOF && c != '\n') {
             if (++header.length > kMaxHeaderBytes)
-                throw FormatError(path + ": header is longer than 1 MiB or lacks the ElementDataFile line that ends it");
+                throw FormatError(path +
+                                  ": header is longer than 1 MiB or lacks the ElementDataFile line that ends it");
             line += char(c);
         }
         if (c == EOF && std::ferror(f)) throw FormatError(path + ": cannot read: " + std::strerror(errno));
@@ -72,28 +73,18 @@ Header readHeader(std::FILE* f, const std::string& path) {
     }
 }
 
-class MetaImageReader {
+class MetaImageReader : public VolumeReader {
 public:
-    MetaImageReader(std::string path, Header header) : header_(std::move(header)) {
-        geometry_.path = std::move(path);
-        geometry_.sizeField = "DimSize";
-    }
+    MetaImageReader(std::string path, Header header)
+        : VolumeReader(std::move(path), "DimSize"), header_(std::move(header)) {}
     Volume read();
 
 private:
-    const std::string& path() const { return geometry_.path; }
-    [[noreturn]] void fail(const std::string& field, const std::string& problem) const {
-        throw FormatError(path() + ": field \"" + field + "\": " + problem);
-    }
     const std::string* find(const std::string& field) const {
         const auto it = header_.fields.find(lowerCase(field));
         return it == header_.fields.end() ? nullptr : &it->second.second;
     }
-    const std::string& require(const std::string& field) const {
-        const std::string* v = find(field);
-        if (!v) throw FormatError(path() + ": missing required field \"" + field + "\"");
-        return *v;
-    }
+    const std::string& require(const std::string& field) const { return required(find(field), field); }
     bool flag(const std::string& field, bool otherwise) const;
     Vec3d numbers(const std::string& field, Vec3d otherwise, bool positive) const;
     void parseGeometry();
@@ -101,7 +92,6 @@ private:
     SampleData locateData() const;
 
     Header header_;
-    VolumeHeader geometry_;
 };
 
 bool MetaImageReader::flag(const std::string& field, bool otherwise) const {
@@ -117,7 +107,9 @@ Vec3d MetaImageReader::numbers(const std::string& field, Vec3d otherwise, bool p
     const std::string* text = find(field);
     if (!text) return otherwise;
     const auto out = parseVec3(splitWords(*text), positive);
-    if (!out) fail(field, std::string("expected 3 ") + (positive ? "positive " : "") + "numbers, got \"" + printable(*text) + "\"");
+    if (!out)
+        fail(field,
+             std::string("expected 3 ") + (positive ? "positive " : "") + "numbers, got \"" + printable(*text) + "\"");
     return *out;
 }
 
@@ -169,7 +161,8 @@ void MetaImageReader::parseDirection() {
             if (ok) axes[k / 3][k % 3] = *v;
         }
         const auto direction = ok ? directionFromAxes(axes) : std::nullopt;
-        if (!direction) fail(field, "expected 9 numbers making 3 orthogonal unit vectors, got \"" + printable(*text) + "\"");
+        if (!direction)
+            fail(field, "expected 9 numbers making 3 orthogonal unit vectors, got \"" + printable(*text) + "\"");
         geometry_.direction = *direction;
         return;
     }
@@ -193,15 +186,16 @@ void MetaImageReader::parseDirection() {
         direction[a][axis] = k < 3 ? 1.0 : -1.0;
     }
     if (!ok)
-        fail("AnatomicalOrientation", "expected three letters, one from each of R/L, A/P, I/S, got \"" + printable(*code) + "\"");
+        fail("AnatomicalOrientation",
+             "expected three letters, one from each of R/L, A/P, I/S, got \"" + printable(*code) + "\"");
     geometry_.direction = direction;
 }
 
 SampleData MetaImageReader::locateData() const {
     SampleData data;
     if (!flag("BinaryData", true)) fail("BinaryData", "ASCII MetaImage data is not supported");
-    const bool msb = find("BinaryDataByteOrderMSB") ? flag("BinaryDataByteOrderMSB", false)
-                                                     : flag("ElementByteOrderMSB", false);
+    const bool msb =
+        find("BinaryDataByteOrderMSB") ? flag("BinaryDataByteOrderMSB", false) : flag("ElementByteOrderMSB", false);
     data.bigEndian = msb;
     data.compression = flag("CompressedData", false) ? Compression::Zlib : Compression::None;
 
@@ -218,7 +212,8 @@ SampleData MetaImageReader::locateData() const {
 
     if (const std::string* headerSize = find("HeaderSize")) {
         const auto skip = parseInteger(*headerSize);
-        if (!skip || *skip < -1) fail("HeaderSize", "expected an integer >= -1, got \"" + printable(*headerSize) + "\"");
+        if (!skip || *skip < -1)
+            fail("HeaderSize", "expected an integer >= -1, got \"" + printable(*headerSize) + "\"");
         if (data.compression != Compression::None && *skip != 0)
             fail("HeaderSize", "only supported for uncompressed data, got " + *headerSize);
         if (*skip == -1) {
@@ -230,21 +225,24 @@ SampleData MetaImageReader::locateData() const {
             data.offset += std::uint64_t(*skip);
         }
     }
-    if (const std::string* compressedSize = find("CompressedDataSize"); compressedSize && data.compression != Compression::None) {
+    if (const std::string* compressedSize = find("CompressedDataSize");
+        compressedSize && data.compression != Compression::None) {
         const auto n = parseInteger(*compressedSize);
-        if (!n || *n < 1) fail("CompressedDataSize", "expected a positive integer, got \"" + printable(*compressedSize) + "\"");
+        if (!n || *n < 1)
+            fail("CompressedDataSize", "expected a positive integer, got \"" + printable(*compressedSize) + "\"");
         const std::uint64_t size = fileSizeOf(data.path, dataWhere(geometry_, data));
         const std::uint64_t available = size > data.offset ? size - data.offset : 0;
         if (std::uint64_t(*n) != available)
-            fail("CompressedDataSize", *compressedSize + " disagrees with the " + std::to_string(available) +
-                                           " bytes of " + (data.path == path() ? "data in the file" : "\"" + printable(data.path, 200) + "\""));
+            fail("CompressedDataSize",
+                 *compressedSize + " disagrees with the " + std::to_string(available) + " bytes of " +
+                     (data.path == path() ? "data in the file" : "\"" + printable(data.path, 200) + "\""));
     }
     return data;
 }
 
 Volume MetaImageReader::read() {
     parseGeometry();
-    return readSamples(geometry_, locateData());
+    return readVolume(locateData());
 }
 
 }  // namespace

@@ -34,12 +34,12 @@ struct Datatype {
 };
 
 const Datatype kDatatypes[] = {
-    {2, "uint8", ScalarType::UInt8},       {4, "int16", ScalarType::Int16},    {8, "int32", ScalarType::Int32},
-    {16, "float32", ScalarType::Float32},  {64, "float64", ScalarType::Float64}, {256, "int8", ScalarType::Int8},
-    {512, "uint16", ScalarType::UInt16},   {768, "uint32", ScalarType::UInt32}, {1, "binary", std::nullopt},
-    {32, "complex64", std::nullopt},       {128, "rgb24", std::nullopt},       {1024, "int64", std::nullopt},
-    {1280, "uint64", std::nullopt},        {1536, "float128", std::nullopt},   {1792, "complex128", std::nullopt},
-    {2048, "complex256", std::nullopt},    {2304, "rgba32", std::nullopt},
+    {2, "uint8", ScalarType::UInt8},      {4, "int16", ScalarType::Int16},      {8, "int32", ScalarType::Int32},
+    {16, "float32", ScalarType::Float32}, {64, "float64", ScalarType::Float64}, {256, "int8", ScalarType::Int8},
+    {512, "uint16", ScalarType::UInt16},  {768, "uint32", ScalarType::UInt32},  {1, "binary", std::nullopt},
+    {32, "complex64", std::nullopt},      {128, "rgb24", std::nullopt},         {1024, "int64", std::nullopt},
+    {1280, "uint64", std::nullopt},       {1536, "float128", std::nullopt},     {1792, "complex128", std::nullopt},
+    {2048, "complex256", std::nullopt},   {2304, "rgba32", std::nullopt},
 };
 
 class HeaderBytes {
@@ -87,28 +87,24 @@ std::string matrixText(const Mat3d& columns) {
     return text;
 }
 
-class NiftiHeader {
+// Interprets the 348 header bytes and reads the samples they locate.
+class NiftiReader : public VolumeReader {
 public:
-    NiftiHeader(std::string path, const unsigned char* bytes);
-
-    VolumeHeader geometry;
-    SampleData data;
-    double slope = 0.0, inter = 0.0;
+    NiftiReader(std::string path, const unsigned char* bytes);
+    Volume read(bool gzip);
 
 private:
-    [[noreturn]] void fail(const std::string& field, const std::string& problem) const {
-        throw FormatError(geometry.path + ": field \"" + field + "\": " + problem);
-    }
     void readDims(const HeaderBytes& h);
     void readType(const HeaderBytes& h);
     void readGeometry(const HeaderBytes& h);
     Mat3d qformRotation(const HeaderBytes& h) const;
     void readScaling(const HeaderBytes& h);
+
+    SampleData data_;
+    double slope_ = 0.0, inter_ = 0.0;
 };
 
-NiftiHeader::NiftiHeader(std::string path, const unsigned char* bytes) {
-    geometry.path = std::move(path);
-    geometry.sizeField = "dim";
+NiftiReader::NiftiReader(std::string path, const unsigned char* bytes) : VolumeReader(std::move(path), "dim") {
     std::int32_t sizeofHdr = 0;
     std::memcpy(&sizeofHdr, bytes + kSizeofHdr, 4);
     const bool swap = sizeofHdr != 348;
@@ -118,13 +114,12 @@ NiftiHeader::NiftiHeader(std::string path, const unsigned char* bytes) {
         fail("sizeof_hdr", nifti2 ? "540 is NIfTI-2, which is not supported (only NIfTI-1)"
                                   : "expected 348 in either byte order, got " + std::to_string(sizeofHdr));
     }
-    data.bigEndian = swap != hostIsBigEndian();
+    data_.bigEndian = swap != hostIsBigEndian();
 
     const std::string magic(reinterpret_cast<const char*>(bytes + kMagic), 4);
     if (magic == std::string("ni1\0", 4))
         fail("magic", "\"ni1\" is a .hdr/.img pair, which is not supported (only single-file \"n+1\")");
-    if (magic != std::string("n+1\0", 4))
-        fail("magic", "expected \"n+1\", got \"" + printable(magic) + "\"");
+    if (magic != std::string("n+1\0", 4)) fail("magic", "expected \"n+1\", got \"" + printable(magic) + "\"");
 
     readDims(h);
     readType(h);
@@ -134,12 +129,12 @@ NiftiHeader::NiftiHeader(std::string path, const unsigned char* bytes) {
     const float voxOffset = h.f32(kVoxOffset);
     if (!(voxOffset >= float(kHeaderBytes)) || !(voxOffset <= 1e12f) || voxOffset != std::floor(voxOffset))
         fail("vox_offset", "expected a whole number >= 348, got " + numberText(voxOffset));
-    data.path = geometry.path;
-    data.trailingBytesAllowed = true;
-    data.skip = std::uint64_t(voxOffset);
+    data_.path = geometry_.path;
+    data_.trailingBytesAllowed = true;
+    data_.skip = std::uint64_t(voxOffset);
 }
 
-void NiftiHeader::readDims(const HeaderBytes& h) {
+void NiftiReader::readDims(const HeaderBytes& h) {
     std::int16_t dim[8];
     std::string text;
     for (std::size_t i = 0; i < 8; ++i) {
@@ -151,11 +146,11 @@ void NiftiHeader::readDims(const HeaderBytes& h) {
         if (dim[i] != 1) fail("dim", "only 3D volumes are supported, got dim = " + text);
     for (std::size_t a = 0; a < 3; ++a) {
         if (dim[a + 1] < 1) fail("dim", "dimensions must be positive, got dim = " + text);
-        geometry.dims[a] = dim[a + 1];
+        geometry_.dims[a] = dim[a + 1];
     }
 }
 
-void NiftiHeader::readType(const HeaderBytes& h) {
+void NiftiReader::readType(const HeaderBytes& h) {
     const int code = h.i16(kDatatype);
     const Datatype* found = nullptr;
     for (const Datatype& d : kDatatypes)
@@ -164,17 +159,17 @@ void NiftiHeader::readType(const HeaderBytes& h) {
     if (!found->type)
         fail("datatype", "unsupported datatype " + std::to_string(code) + " (" + found->name +
                              "; supported: uint8, int8, int16, uint16, int32, uint32, float32, float64)");
-    geometry.type = *found->type;
+    geometry_.type = *found->type;
     const int bitpix = h.i16(kBitpix);
-    if (std::size_t(bitpix) != 8 * scalarTypeSize(geometry.type))
-        fail("bitpix", std::to_string(bitpix) + " disagrees with datatype " + std::to_string(code) + " (" +
-                           found->name + ")");
+    if (std::size_t(bitpix) != 8 * scalarTypeSize(geometry_.type))
+        fail("bitpix",
+             std::to_string(bitpix) + " disagrees with datatype " + std::to_string(code) + " (" + found->name + ")");
 }
 
-void NiftiHeader::readGeometry(const HeaderBytes& h) {
+void NiftiReader::readGeometry(const HeaderBytes& h) {
     // NIfTI's world is RAS; isotrack's is LPS (isotrack/orientation.h). Without
     // sform or qform (method 1) the grid is taken as given, as ANALYZE files are.
-    for (std::size_t a = 0; a < 3; ++a) geometry.spacing[a] = double(h.f32(kPixdim + 4 * (a + 1)));
+    for (std::size_t a = 0; a < 3; ++a) geometry_.spacing[a] = double(h.f32(kPixdim + 4 * (a + 1)));
     const char* spacingField = "pixdim";
     const char* originField = "qoffset";
     if (h.i16(kSformCode) > 0) {
@@ -185,26 +180,27 @@ void NiftiHeader::readGeometry(const HeaderBytes& h) {
             for (std::size_t c = 0; c < 3; ++c) axes[c][r] = double(h.f32(kSrow + 16 * r + 4 * c));
             translation[r] = double(h.f32(kSrow + 16 * r + 12));
         }
-        const auto direction = directionFromAxes(axes, &geometry.spacing);
+        const auto direction = directionFromAxes(axes, &geometry_.spacing);
         if (!direction)
             fail("srow", "the sform's columns must be non-zero and orthogonal (no shear), got " + matrixText(axes));
-        geometry.direction = flipRasLps(*direction);
-        geometry.origin = flipRasLps(translation);
+        geometry_.direction = flipRasLps(*direction);
+        geometry_.origin = flipRasLps(translation);
     } else if (h.i16(kQformCode) > 0) {
-        geometry.direction = flipRasLps(qformRotation(h));
+        geometry_.direction = flipRasLps(qformRotation(h));
         Vec3d offset{};
         for (std::size_t a = 0; a < 3; ++a) offset[a] = double(h.f32(kQoffset + 4 * a));
-        geometry.origin = flipRasLps(offset);
+        geometry_.origin = flipRasLps(offset);
     }
-    checkGeometry(geometry, spacingField, originField);
+    checkGeometry(geometry_, spacingField, originField);
 }
 
 // The qform's rotation (quatern_b..d, a from the unit norm) with pixdim[0]'s
 // qfac = -1 mirroring k, as nifti1.h defines it.
-Mat3d NiftiHeader::qformRotation(const HeaderBytes& h) const {
+Mat3d NiftiReader::qformRotation(const HeaderBytes& h) const {
     const double b = double(h.f32(kQuatern)), c = double(h.f32(kQuatern + 4)), d = double(h.f32(kQuatern + 8));
     if (!std::isfinite(b) || !std::isfinite(c) || !std::isfinite(d))
-        fail("quatern_b", "the quaternion must be finite, got " + numberText(b) + " " + numberText(c) + " " + numberText(d));
+        fail("quatern_b",
+             "the quaternion must be finite, got " + numberText(b) + " " + numberText(c) + " " + numberText(d));
     const double sum = b * b + c * c + d * d;
     if (sum > 1.0 + 1e-6)
         fail("quatern_b", "the quaternion's (b, c, d) must have length <= 1, got " + numberText(b) + " " +
@@ -220,19 +216,40 @@ Mat3d NiftiHeader::qformRotation(const HeaderBytes& h) const {
     return *direction;
 }
 
-void NiftiHeader::readScaling(const HeaderBytes& h) {
+void NiftiReader::readScaling(const HeaderBytes& h) {
     const double s = double(h.f32(kSclSlope)), i = double(h.f32(kSclInter));
     if (s == 0.0 || std::isnan(s)) return;  // 0 (and, by common practice, NaN) means "not scaled"
     if (!std::isfinite(s)) fail("scl_slope", "expected a finite number, got " + numberText(s));
     if (!std::isfinite(i)) fail("scl_inter", "expected a finite number, got " + numberText(i));
     if (s == 1.0 && i == 0.0) return;
-    slope = s;
-    inter = i;
+    slope_ = s;
+    inter_ = i;
 }
 
 template <class T>
 void scaleInto(const T* in, float* out, std::size_t n, double slope, double inter) {
     for (std::size_t k = 0; k < n; ++k) out[k] = static_cast<float>(slope * double(in[k]) + inter);
+}
+
+Volume NiftiReader::read(bool gzip) {
+    if (gzip) {
+        data_.compression = Compression::Gzip;
+    } else if (const std::uint64_t size = fileSizeOf(path(), path()); data_.skip > size) {
+        fail("vox_offset",
+             std::to_string(data_.skip) + " is beyond the end of the " + std::to_string(size) + "-byte file");
+    }
+    // The float32 copy counts against the volume limit too, before either is allocated.
+    const bool scaled = slope_ != 0.0;
+    if (scaled) sampleBytes(geometry_, ScalarType::Float32);
+
+    Volume native = readVolume(data_);
+    if (!scaled) return native;
+    Volume scaledVolume(native.dims(), ScalarType::Float32, native.spacing(), native.origin());
+    scaledVolume.setDirection(native.direction());
+    visitSamples(native, [&](const auto* samples) {
+        scaleInto(samples, scaledVolume.data<float>(), native.sampleCount(), slope_, inter_);
+    });
+    return scaledVolume;
 }
 
 }  // namespace
@@ -241,25 +258,7 @@ Volume loadNifti(const std::string& path) {
     const bool gzip = lowerExtension(path) == ".nii.gz";
     unsigned char bytes[kHeaderBytes];
     readHeaderBytes(path, gzip, bytes);
-    NiftiHeader header(path, bytes);
-    if (gzip) {
-        header.data.compression = Compression::Gzip;
-    } else if (const std::uint64_t size = fileSizeOf(path, path); header.data.skip > size) {
-        throw FormatError(path + ": field \"vox_offset\": " + std::to_string(header.data.skip) +
-                          " is beyond the end of the " + std::to_string(size) + "-byte file");
-    }
-    // The float32 copy counts against the volume limit too, before either is allocated.
-    const bool scaled = header.slope != 0.0;
-    if (scaled) sampleBytes(header.geometry, ScalarType::Float32);
-
-    Volume native = readSamples(header.geometry, header.data);
-    if (!scaled) return native;
-    Volume scaledVolume(native.dims(), ScalarType::Float32, native.spacing(), native.origin());
-    scaledVolume.setDirection(native.direction());
-    visitSamples(native, [&](const auto* samples) {
-        scaleInto(samples, scaledVolume.data<float>(), native.sampleCount(), header.slope, header.inter);
-    });
-    return scaledVolume;
+    return NiftiReader(path, bytes).read(gzip);
 }
 
 }  // namespace isotrack

@@ -62,20 +62,34 @@ struct TypeName {
 };
 
 const TypeName kTypeNames[] = {
-    {"uchar", ScalarType::UInt8},        {"unsigned char", ScalarType::UInt8},
-    {"uint8", ScalarType::UInt8},        {"uint8_t", ScalarType::UInt8},
-    {"signed char", ScalarType::Int8},   {"int8", ScalarType::Int8},
-    {"int8_t", ScalarType::Int8},        {"short", ScalarType::Int16},
-    {"short int", ScalarType::Int16},    {"signed short", ScalarType::Int16},
-    {"signed short int", ScalarType::Int16}, {"int16", ScalarType::Int16},
-    {"int16_t", ScalarType::Int16},      {"ushort", ScalarType::UInt16},
-    {"unsigned short", ScalarType::UInt16}, {"unsigned short int", ScalarType::UInt16},
-    {"uint16", ScalarType::UInt16},      {"uint16_t", ScalarType::UInt16},
-    {"int", ScalarType::Int32},          {"signed int", ScalarType::Int32},
-    {"int32", ScalarType::Int32},        {"int32_t", ScalarType::Int32},
-    {"uint", ScalarType::UInt32},        {"unsigned int", ScalarType::UInt32},
-    {"uint32", ScalarType::UInt32},      {"uint32_t", ScalarType::UInt32},
-    {"float", ScalarType::Float32},      {"double", ScalarType::Float64},
+    {"uchar", ScalarType::UInt8},
+    {"unsigned char", ScalarType::UInt8},
+    {"uint8", ScalarType::UInt8},
+    {"uint8_t", ScalarType::UInt8},
+    {"signed char", ScalarType::Int8},
+    {"int8", ScalarType::Int8},
+    {"int8_t", ScalarType::Int8},
+    {"short", ScalarType::Int16},
+    {"short int", ScalarType::Int16},
+    {"signed short", ScalarType::Int16},
+    {"signed short int", ScalarType::Int16},
+    {"int16", ScalarType::Int16},
+    {"int16_t", ScalarType::Int16},
+    {"ushort", ScalarType::UInt16},
+    {"unsigned short", ScalarType::UInt16},
+    {"unsigned short int", ScalarType::UInt16},
+    {"uint16", ScalarType::UInt16},
+    {"uint16_t", ScalarType::UInt16},
+    {"int", ScalarType::Int32},
+    {"signed int", ScalarType::Int32},
+    {"int32", ScalarType::Int32},
+    {"int32_t", ScalarType::Int32},
+    {"uint", ScalarType::UInt32},
+    {"unsigned int", ScalarType::UInt32},
+    {"uint32", ScalarType::UInt32},
+    {"uint32_t", ScalarType::UInt32},
+    {"float", ScalarType::Float32},
+    {"double", ScalarType::Float64},
 };
 
 const char* nrrdTypeName(ScalarType type) {
@@ -149,28 +163,18 @@ Header readHeader(std::FILE* f, const std::string& path) {
 }
 
 // Interprets the header and locates the samples; readSamples checks the sizes.
-class NrrdReader {
+class NrrdReader : public VolumeReader {
 public:
-    NrrdReader(std::string path, Header header) : path_(std::move(path)), header_(std::move(header)) {
-        geometry_.path = path_;
-        geometry_.sizeField = "sizes";
-    }
+    NrrdReader(std::string path, Header header) : VolumeReader(std::move(path), "sizes"), header_(std::move(header)) {}
 
     Volume read(std::FILE* headerFile);
 
 private:
-    [[noreturn]] void fail(const std::string& field, const std::string& problem) const {
-        throw FormatError(path_ + ": field \"" + field + "\": " + problem);
-    }
     const std::string* find(const std::string& field) const {
         const auto it = header_.fields.find(field);
         return it == header_.fields.end() ? nullptr : &it->second;
     }
-    const std::string& require(const std::string& field) const {
-        const std::string* v = find(field);
-        if (!v) throw FormatError(path_ + ": missing required field \"" + field + "\"");
-        return *v;
-    }
+    const std::string& require(const std::string& field) const { return required(find(field), field); }
     long long skipField(const std::string& field, long long minimum) const;
     void parseSpace();
     void parseGeometry();
@@ -178,9 +182,7 @@ private:
     Mat3d toLps(const Mat3d& m) const { return {toLps(m[0]), toLps(m[1]), toLps(m[2])}; }
     std::uint64_t skipLines(long long lines, const SampleData& data, std::FILE* headerFile) const;
 
-    std::string path_;
     Header header_;
-    VolumeHeader geometry_;
     Vec3d toLps_{1, 1, 1};  // signs that take "space" to LPS
 };
 
@@ -203,8 +205,8 @@ long long NrrdReader::skipField(const std::string& field, long long minimum) con
     const std::string* text = find(field);
     if (!text) return 0;
     const auto v = parseInteger(*text);
-    if (!v || *v < minimum) fail(field, "expected an integer >= " + std::to_string(minimum) + ", got \"" +
-                                            printable(*text) + "\"");
+    if (!v || *v < minimum)
+        fail(field, "expected an integer >= " + std::to_string(minimum) + ", got \"" + printable(*text) + "\"");
     return *v;
 }
 
@@ -254,12 +256,12 @@ void NrrdReader::parseGeometry() {
 std::uint64_t NrrdReader::skipLines(long long lines, const SampleData& data, std::FILE* headerFile) const {
     FilePtr detached;
     std::FILE* f = headerFile;
-    if (data.path != path_) {
+    if (data.path != path()) {
         detached = openForReading(data.path, dataWhere(geometry_, data));
         f = detached.get();
     }
     std::uint64_t offset = data.offset;
-    if (std::fseek(f, long(offset), SEEK_SET) != 0) throw FormatError(path_ + ": cannot seek: " + std::strerror(errno));
+    if (std::fseek(f, long(offset), SEEK_SET) != 0) failFile(std::string("cannot seek: ") + std::strerror(errno));
     for (long long i = 0; i < lines; ++i) {
         int c = 0;
         while ((c = std::fgetc(f)) != EOF && c != '\n') ++offset;
@@ -283,7 +285,7 @@ Volume NrrdReader::read(std::FILE* headerFile) {
             fail("endian", "expected \"little\" or \"big\", got \"" + printable(*endian) + "\"");
         data.bigEndian = *endian == "big";
     } else if (scalarTypeSize(geometry_.type) > 1) {
-        throw FormatError(path_ + ": missing required field \"endian\" for type " + nrrdTypeName(geometry_.type));
+        failFile(std::string("missing required field \"endian\" for type ") + nrrdTypeName(geometry_.type));
     } else {
         data.bigEndian = hostIsBigEndian();
     }
@@ -292,16 +294,16 @@ Volume NrrdReader::read(std::FILE* headerFile) {
     if (gzip && byteSkip < 0) fail("byte skip", "-1 (data at the end) needs raw encoding");
 
     // Samples follow the header unless a "data file" names where they are.
-    data.path = path_;
+    data.path = path();
     data.offset = header_.length;
     if (const std::string* name = find("data file")) {
         if (*name == "LIST" || name->find('%') != std::string::npos)
             fail("data file", "multi-file data is not supported, got \"" + printable(*name) + "\"");
         const fs::path p(*name);
-        data.path = (p.is_absolute() ? p : fs::path(path_).parent_path() / p).string();
+        data.path = (p.is_absolute() ? p : fs::path(path()).parent_path() / p).string();
         data.offset = 0;
     } else if (!header_.endsWithBlankLine) {
-        throw FormatError(path_ + ": header ends without a blank line and no \"data file\" field");
+        failFile("header ends without a blank line and no \"data file\" field");
     }
     if (lineSkip > 0) data.offset = skipLines(lineSkip, data, headerFile);
     if (byteSkip == -1) {
@@ -316,7 +318,7 @@ Volume NrrdReader::read(std::FILE* headerFile) {
     }
     // Raw data may be followed by anything; a gzip stream must hold the samples exactly.
     data.trailingBytesAllowed = !gzip;
-    return readSamples(geometry_, data);
+    return readVolume(data);
 }
 
 }  // namespace

@@ -10,7 +10,32 @@ namespace isotrack {
 
 namespace {
 
-constexpr const char* kHeaderExtensions = ".nrrd, .nhdr, .nii, .nii.gz, .mhd, .mha, .vtk, .dcm, a DICOM folder or DICOMDIR";
+constexpr const char* kHeaderExtensions =
+    ".nrrd, .nhdr, .nii, .nii.gz, .mhd, .mha, .vtk, .dcm, a DICOM folder or DICOMDIR";
+
+// Headerless samples: the layout the caller gives is the whole header.
+class RawReader : public detail::VolumeReader {
+public:
+    RawReader(const std::string& path, const RawLayout& layout)
+        : VolumeReader(path, "dims"), bigEndian_(layout.bigEndian) {
+        geometry_.dims = layout.dims;
+        geometry_.type = layout.type;
+        geometry_.spacing = layout.spacing;
+        geometry_.origin = layout.origin;
+    }
+
+    Volume read() const {
+        detail::sampleBytes(geometry_);
+        detail::checkGeometry(geometry_, "spacing", "origin");
+        detail::SampleData data;
+        data.path = path();
+        data.bigEndian = bigEndian_;
+        return readVolume(data);
+    }
+
+private:
+    bool bigEndian_;
+};
 
 }  // namespace
 
@@ -55,20 +80,6 @@ Volume loadVolume(const std::string& path) {
                       kHeaderExtensions + ")");
 }
 
-Volume loadRaw(const std::string& path, const RawLayout& layout) {
-    detail::VolumeHeader header;
-    header.path = path;
-    header.sizeField = "dims";
-    header.dims = layout.dims;
-    header.type = layout.type;
-    header.spacing = layout.spacing;
-    header.origin = layout.origin;
-    detail::sampleBytes(header);
-    detail::checkGeometry(header, "spacing", "origin");
-    detail::SampleData data;
-    data.path = path;
-    data.bigEndian = layout.bigEndian;
-    return detail::readSamples(header, data);
-}
+Volume loadRaw(const std::string& path, const RawLayout& layout) { return RawReader(path, layout).read(); }
 
 }  // namespace isotrack

@@ -31,9 +31,11 @@ constexpr std::uint64_t kMaxHeaderBytes = std::uint64_t(1) << 20;
 constexpr std::size_t kMaxTokenChars = 256;
 
 const std::pair<const char*, ScalarType> kScalarTypes[] = {
-    {"unsigned_char", ScalarType::UInt8},   {"char", ScalarType::Int8},     {"signed_char", ScalarType::Int8},
-    {"unsigned_short", ScalarType::UInt16}, {"short", ScalarType::Int16},   {"unsigned_int", ScalarType::UInt32},
-    {"int", ScalarType::Int32},             {"float", ScalarType::Float32}, {"double", ScalarType::Float64},
+    {"unsigned_char", ScalarType::UInt8}, {"char", ScalarType::Int8},
+    {"signed_char", ScalarType::Int8},    {"unsigned_short", ScalarType::UInt16},
+    {"short", ScalarType::Int16},         {"unsigned_int", ScalarType::UInt32},
+    {"int", ScalarType::Int32},           {"float", ScalarType::Float32},
+    {"double", ScalarType::Float64},
 };
 
 // White-space separated words, counting the bytes consumed so that binary data can be found.
@@ -46,7 +48,8 @@ public:
     // The next word, or "" at end of file.
     std::string next() {
         int c = 0;
-        while ((c = get()) != EOF && std::isspace(c)) {}
+        while ((c = get()) != EOF && std::isspace(c)) {
+        }
         std::string word;
         while (c != EOF && !std::isspace(c)) {
             if (word.size() == kMaxTokenChars)
@@ -65,7 +68,8 @@ public:
         int c = 0;
         while ((c = get()) != EOF && c != '\n') {
             if (text.size() == kMaxTokenChars * 4)
-                throw FormatError(path_ + ": header line is longer than " + std::to_string(kMaxTokenChars * 4) + " characters");
+                throw FormatError(path_ + ": header line is longer than " + std::to_string(kMaxTokenChars * 4) +
+                                  " characters");
             text += char(c);
         }
         if (!text.empty() && text.back() == '\r') text.pop_back();
@@ -81,8 +85,7 @@ private:
             if (std::ferror(f_)) throw FormatError(path_ + ": cannot read: " + std::strerror(errno));
             return EOF;
         }
-        if (++consumed_ > kMaxHeaderBytes && limited_)
-            throw FormatError(path_ + ": header is longer than 1 MiB");
+        if (++consumed_ > kMaxHeaderBytes && limited_) throw FormatError(path_ + ": header is longer than 1 MiB");
         return c;
     }
     void unget(int c) {
@@ -96,19 +99,12 @@ private:
     bool limited_ = true;
 };
 
-class VtkReader {
+class VtkReader : public VolumeReader {
 public:
-    VtkReader(std::FILE* f, const std::string& path) : tokens_(f, path) {
-        geometry_.path = path;
-        geometry_.sizeField = "DIMENSIONS";
-    }
+    VtkReader(std::FILE* f, const std::string& path) : VolumeReader(path, "DIMENSIONS"), tokens_(f, path) {}
     Volume read();
 
 private:
-    const std::string& path() const { return geometry_.path; }
-    [[noreturn]] void fail(const std::string& field, const std::string& problem) const {
-        throw FormatError(path() + ": field \"" + field + "\": " + problem);
-    }
     std::string keyword();
     Vec3d numbers(const std::string& field, bool positive);
     std::vector<std::string> threeWords();  // the next three tokens
@@ -122,7 +118,6 @@ private:
 
     Tokens tokens_;
     std::string word_;  // the last keyword as written
-    VolumeHeader geometry_;
     bool binary_ = false;
 };
 
@@ -144,15 +139,17 @@ std::string VtkReader::wordsText(const std::vector<std::string>& words) {
 Vec3d VtkReader::numbers(const std::string& field, bool positive) {
     const std::vector<std::string> words = threeWords();
     const auto v = parseVec3(words, positive);
-    if (!v) fail(field, std::string("expected 3 ") + (positive ? "positive " : "") + "numbers, got \"" + printable(wordsText(words)) + "\"");
+    if (!v)
+        fail(field, std::string("expected 3 ") + (positive ? "positive " : "") + "numbers, got \"" +
+                        printable(wordsText(words)) + "\"");
     return *v;
 }
 
 void VtkReader::readPreamble() {
     const std::string version = tokens_.line();
     if (lowerCase(version).compare(0, 14, "# vtk datafile") != 0)
-        throw FormatError(path() + ": not a VTK legacy file: first line is \"" + printable(version) +
-                          "\", not \"# vtk DataFile Version ...\"");
+        failFile("not a VTK legacy file: first line is \"" + printable(version) +
+                 "\", not \"# vtk DataFile Version ...\"");
     tokens_.line();  // title
     const std::string encoding = joinWords(tokens_.line());
     if (lowerCase(encoding) == "binary")
@@ -184,12 +181,12 @@ void VtkReader::readStructure() {
         } else if (key == "point_data") {
             break;
         } else if (key.empty()) {
-            throw FormatError(path() + ": file ends before POINT_DATA");
+            failFile("file ends before POINT_DATA");
         } else {
             fail("DATASET", "expected DIMENSIONS, SPACING, ORIGIN or POINT_DATA, got \"" + printable(word_) + "\"");
         }
     }
-    if (!haveDims) throw FormatError(path() + ": missing required field \"DIMENSIONS\" before POINT_DATA");
+    if (!haveDims) failFile("missing required field \"DIMENSIONS\" before POINT_DATA");
     sampleBytes(geometry_);
     checkGeometry(geometry_, spacingField, "ORIGIN");
 
@@ -214,13 +211,15 @@ void VtkReader::readScalarsHeader() {
     for (const auto& [name, type] : kScalarTypes)
         if (lowerCase(words[1]) == name) geometry_.type = type, typeOk = true;
     if (!typeOk)
-        fail("SCALARS", "unsupported type \"" + printable(words[1]) +
-                            "\" (supported: unsigned_char, char, unsigned_short, short, unsigned_int, int, float, double)");
+        fail("SCALARS",
+             "unsupported type \"" + printable(words[1]) +
+                 "\" (supported: unsigned_char, char, unsigned_short, short, unsigned_int, int, float, double)");
     if (words.size() == 3 && words[2] != "1")
         fail("SCALARS", "expected 1 component, got \"" + printable(words[2]) + "\"");
     const std::string table = keyword();
-    if (table != "lookup_table") fail("LOOKUP_TABLE", "expected LOOKUP_TABLE after SCALARS, got \"" + printable(word_) + "\"");
-    if (tokens_.next().empty()) throw FormatError(path() + ": file ends in the LOOKUP_TABLE line");
+    if (table != "lookup_table")
+        fail("LOOKUP_TABLE", "expected LOOKUP_TABLE after SCALARS, got \"" + printable(word_) + "\"");
+    if (tokens_.next().empty()) failFile("file ends in the LOOKUP_TABLE line");
 }
 
 template <class T>
@@ -262,7 +261,8 @@ void VtkReader::readAsciiSamples(T* out, std::uint64_t count) {
     for (std::uint64_t i = 0; i < count; ++i) {
         const std::string word = tokens_.next();
         if (word.empty())
-            fail("POINT_DATA", "data is truncated: got " + std::to_string(i) + " of " + std::to_string(count) + " numbers");
+            fail("POINT_DATA",
+                 "data is truncated: got " + std::to_string(i) + " of " + std::to_string(count) + " numbers");
         if (!parseSample(word, out[i]))
             fail("SCALARS", "sample " + std::to_string(i) + " is \"" + printable(word) + "\", not a " +
                                 scalarTypeName(geometry_.type) + " number");
@@ -280,7 +280,7 @@ Volume VtkReader::read() {
     data.offset = tokens_.consumed();
     data.bigEndian = true;
     data.trailingBytesAllowed = true;  // further attributes may follow
-    return readSamples(geometry_, data);
+    return readVolume(data);
 }
 
 }  // namespace
