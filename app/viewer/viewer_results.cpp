@@ -157,8 +157,9 @@ void Viewer::placeUntracked(ExtractionResult& result, Structures& old, std::vect
         next.push_back(std::move(surface));
         for (std::size_t p = 1; p < continuing.size(); ++p) {  // the other parts of a split, right after it
             const std::size_t j = freshIndex[continuing[p]];
-            auto part = std::make_unique<SurfaceStructure>(scene_.newId(), std::move(result.surfaces[j]),
-                                                           std::move(result.footprints[j]), look.style().colour);
+            auto part =
+                std::make_unique<SurfaceStructure>(renderer_->arena(), scene_.newId(), std::move(result.surfaces[j]),
+                                                   std::move(result.footprints[j]), look.style().colour);
             copyLook(look, *part);
             next.push_back(std::move(part));
         }
@@ -170,9 +171,9 @@ void Viewer::placeUntracked(ExtractionResult& result, Structures& old, std::vect
             colour = 0;
             nextColour_ = std::max<std::size_t>(nextColour_ - 1, 1);
         }
-        next.push_back(std::make_unique<SurfaceStructure>(scene_.newId(), std::move(result.surfaces[j]),
-                                                          std::move(result.footprints[j]),
-                                                          render::surfaceColour(colour)));
+        next.push_back(
+            std::make_unique<SurfaceStructure>(renderer_->arena(), scene_.newId(), std::move(result.surfaces[j]),
+                                               std::move(result.footprints[j]), render::surfaceColour(colour)));
     }
 }
 
