@@ -72,6 +72,11 @@ void RangeAllocator::shrink(std::size_t offset, std::size_t size, std::size_t ne
     if (newSize < size) release(offset + newSize, size - newSize);
 }
 
+std::size_t RangeAllocator::freeAt(std::size_t offset) const {
+    const auto range = ranges_.find(offset);
+    return range == ranges_.end() ? 0 : range->second;
+}
+
 std::size_t RangeAllocator::largestFree() const {
     std::size_t largest = 0;
     for (const auto& range : ranges_) largest = std::max(largest, range.second);

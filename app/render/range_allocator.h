@@ -31,6 +31,8 @@ public:
     std::size_t freeSize() const { return free_; }
     std::size_t usedSize() const { return capacity_ - free_; }
     std::size_t largestFree() const;
+    // The free elements starting right at `offset` (0 if it is not free).
+    std::size_t freeAt(std::size_t offset) const;
     std::size_t freeRangeCount() const { return ranges_.size(); }
     // 1 - largest free range / all free space: 0 when the free space is one
     // range (or there is none), towards 1 as it splits into many small ones.

@@ -160,40 +160,54 @@ void SurfaceArena::moveTo(Slot& slot, int pageIndex, std::size_t firstVertex, st
     place.indexCapacity = indexCapacity;
 }
 
-// Capacity for `vertices` and `indices`: in place if the space after the
-// ranges is free, else in a new place (this page or another, or a new page).
-void SurfaceArena::growTo(std::uint32_t index, std::size_t vertices, std::size_t indices) {
+// Grows the slot's ranges where they lie: to the wanted capacity, or as far as
+// the free space right after each goes, as long as that holds what is needed.
+bool SurfaceArena::growInPlace(Slot& slot, std::size_t vertices, std::size_t indices, std::size_t wantVertices,
+                               std::size_t wantIndices) {
+    SlotPlace& place = slot.place;
+    if (place.page < 0) return false;
+    Page& page = *pages_[static_cast<std::size_t>(place.page)];
+    const std::size_t vertexRoom =
+        place.vertexCapacity + page.vertexSpace.freeAt(place.firstVertex + place.vertexCapacity);
+    const std::size_t indexRoom = place.indexCapacity + page.indexSpace.freeAt(place.firstIndex + place.indexCapacity);
+    if (vertexRoom < vertices || indexRoom < indices) return false;
+    const std::size_t newVertices = std::max(place.vertexCapacity, std::min(wantVertices, vertexRoom));
+    const std::size_t newIndices = std::max(place.indexCapacity, std::min(wantIndices, indexRoom));
+    page.vertexSpace.tryGrow(place.firstVertex, place.vertexCapacity, newVertices);
+    page.indexSpace.tryGrow(place.firstIndex, place.indexCapacity, newIndices);
+    place.vertexCapacity = newVertices;
+    place.indexCapacity = newIndices;
+    return true;
+}
+
+// Capacity for at least `vertices` and `indices`, ideally the wanted amounts: in
+// place if the space after the ranges allows, else in a new place (this page or
+// another, or a new page), the contents copied GPU-side.
+void SurfaceArena::growTo(std::uint32_t index, std::size_t vertices, std::size_t indices, std::size_t wantVertices,
+                          std::size_t wantIndices) {
     Slot& slot = slots_[index];
     SlotPlace& place = slot.place;
     // A range is never empty (a mesh of vertices and no indices still gets one index).
-    vertices = std::max({vertices, place.vertexCapacity, std::size_t(1)});
-    indices = std::max({indices, place.indexCapacity, std::size_t(1)});
-    if (place.page >= 0) {
-        Page& page = *pages_[static_cast<std::size_t>(place.page)];
-        // Both or neither: a failed index grow undoes the vertex one.
-        if (page.vertexSpace.tryGrow(place.firstVertex, place.vertexCapacity, vertices)) {
-            if (page.indexSpace.tryGrow(place.firstIndex, place.indexCapacity, indices)) {
-                place.vertexCapacity = vertices;
-                place.indexCapacity = indices;
-                return;
-            }
-            page.vertexSpace.shrink(place.firstVertex, vertices, place.vertexCapacity);
-        }
-    }
+    vertices = std::max(vertices, std::size_t(1));
+    indices = std::max(indices, std::size_t(1));
+    if (vertices <= place.vertexCapacity && indices <= place.indexCapacity && place.page >= 0) return;
+    if (growInPlace(slot, vertices, indices, wantVertices, wantIndices)) return;
+    wantVertices = std::max({wantVertices, vertices, place.vertexCapacity});
+    wantIndices = std::max({wantIndices, indices, place.indexCapacity});
     std::size_t firstVertex = 0, firstIndex = 0;
-    int pageIndex = findSpace(vertices, indices, firstVertex, firstIndex);
+    int pageIndex = findSpace(wantVertices, wantIndices, firstVertex, firstIndex);
     if (pageIndex < 0) {
-        pageIndex = makePage(vertices, indices);
-        firstVertex = *pages_[static_cast<std::size_t>(pageIndex)]->vertexSpace.allocate(vertices);
-        firstIndex = *pages_[static_cast<std::size_t>(pageIndex)]->indexSpace.allocate(indices);
+        pageIndex = makePage(wantVertices, wantIndices);
+        firstVertex = *pages_[static_cast<std::size_t>(pageIndex)]->vertexSpace.allocate(wantVertices);
+        firstIndex = *pages_[static_cast<std::size_t>(pageIndex)]->indexSpace.allocate(wantIndices);
     }
-    moveTo(slot, pageIndex, firstVertex, firstIndex, vertices, indices);
+    moveTo(slot, pageIndex, firstVertex, firstIndex, wantVertices, wantIndices);
     writeEntry(index);
 }
 
 void SurfaceArena::reserve(std::uint32_t index, std::size_t vertices, std::size_t indices) {
     live(index);
-    if (vertices > 0 || indices > 0) growTo(index, vertices, indices);
+    if (vertices > 0 || indices > 0) growTo(index, vertices, indices, vertices, indices);
 }
 
 void SurfaceArena::uploadSlotNumbers(std::uint32_t index, std::size_t first, std::size_t count) {
@@ -217,7 +231,7 @@ void SurfaceArena::append(std::uint32_t index, const Mesh& mesh, const MeshRange
     if (range.vertexCount == 0 && range.indexCount == 0) return;
     const std::size_t vertices = place.vertexCount + range.vertexCount, indices = place.indexCount + range.indexCount;
     if (vertices > place.vertexCapacity || indices > place.indexCapacity || place.page < 0) {
-        growTo(index, grownCapacity(place.vertexCount, vertices, kMinGrowVertices),
+        growTo(index, vertices, indices, grownCapacity(place.vertexCount, vertices, kMinGrowVertices),
                grownCapacity(place.indexCount, indices, kMinGrowIndices));
     }
     Page& page = *pages_[static_cast<std::size_t>(place.page)];

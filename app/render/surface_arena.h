@@ -72,8 +72,11 @@ struct ArenaStats {
 };
 
 struct ArenaOptions {
-    std::size_t pageVertices = std::size_t(1) << 20;  // a new page's vertex capacity
-    std::size_t indicesPerVertex = 6;                 // its index capacity, per vertex
+    // A new page holds at least this many vertices (and indicesPerVertex times as
+    // many indices), more when a batch or a surface needs more. Making a buffer
+    // costs time in proportion to its size on llvmpipe, so pages start modest.
+    std::size_t pageVertices = std::size_t(1) << 18;
+    std::size_t indicesPerVertex = 6;  // its index capacity, per vertex
 };
 
 class SurfaceArena {
@@ -141,7 +144,10 @@ private:
     int makePage(std::size_t vertices, std::size_t indices);
     void moveTo(Slot& slot, int page, std::size_t firstVertex, std::size_t firstIndex, std::size_t vertexCapacity,
                 std::size_t indexCapacity);
-    void growTo(std::uint32_t slot, std::size_t vertices, std::size_t indices);
+    bool growInPlace(Slot& slot, std::size_t vertices, std::size_t indices, std::size_t wantVertices,
+                     std::size_t wantIndices);
+    void growTo(std::uint32_t slot, std::size_t vertices, std::size_t indices, std::size_t wantVertices,
+                std::size_t wantIndices);
     void writeEntry(std::uint32_t slot);
     void uploadSlotNumbers(std::uint32_t slot, std::size_t first, std::size_t count);
 

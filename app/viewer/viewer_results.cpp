@@ -68,9 +68,19 @@ void Viewer::applyResult(ExtractionResult result) {
         const render::FrameOptions options = frameOptions();
         camera_ = render::frameBounds(scene_.volumeBounds(), float(options.width) / float(options.height));
         scene_.clearSurfaces();
+        renderer_->arena().trim();  // pages sized for the old volume's surfaces go
         nextColour_ = 0;
     }
     extraction_.applied(result);
+
+    // Room for the whole result in one page before its surfaces arrive one by
+    // one: they then draw in one call, and no page is made halfway.
+    std::size_t vertices = 0, indices = 0;
+    for (const Surface& surface : result.surfaces) {
+        vertices += surface.mesh.vertices.size();
+        indices += surface.mesh.indices.size();
+    }
+    if (vertices > 0) renderer_->reserveSurfaces(vertices, indices);
 
     Structures old = std::move(scene_.surfaces());
     scene_.surfaces().clear();
