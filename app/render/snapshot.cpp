@@ -56,9 +56,11 @@ Snapshot renderSnapshot(const std::vector<const Mesh*>& surfaces, const Bounds& 
     for (int i = 0; i < options.timedFrames; ++i) {
         const auto start = std::chrono::steady_clock::now();
         renderer.draw(snapshot.camera, frame);
+        const auto submitted = std::chrono::steady_clock::now();
         gl::finish();
-        snapshot.frameMs.push_back(
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        const auto finished = std::chrono::steady_clock::now();
+        snapshot.submitMs.push_back(std::chrono::duration<double, std::milli>(submitted - start).count());
+        snapshot.frameMs.push_back(std::chrono::duration<double, std::milli>(finished - start).count());
     }
     return snapshot;
 }

@@ -27,9 +27,10 @@ struct SnapshotOptions {
 
 struct Snapshot {
     Image image;
-    Camera camera;                // the camera used, e.g. to print for --camera
-    DrawCounters counters;        // of the picture's draw
-    std::vector<double> frameMs;  // each timed frame's milliseconds
+    Camera camera;                 // the camera used, e.g. to print for --camera
+    DrawCounters counters;         // of the picture's draw
+    std::vector<double> frameMs;   // each timed frame's milliseconds, to glFinish
+    std::vector<double> submitMs;  // of which issuing the frame's GL calls (the CPU's part)
 };
 
 // The volume's box in world units: from the first sample to the last.
