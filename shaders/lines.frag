@@ -1,9 +1,9 @@
 #version 330 core
 
-uniform vec3 uColour;
+flat in vec3 vColour;
 
 out vec4 fragColour;
 
 void main() {
-    fragColour = vec4(uColour, 1.0);
+    fragColour = vec4(vColour, 1.0);
 }

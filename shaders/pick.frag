@@ -1,10 +1,10 @@
 #version 330 core
-// Writes the surface's id (index + 1; 0 is the background) to the id buffer.
+// Writes the surface's pick id (0 is the background) to the id buffer.
 
-uniform uint uId;
+flat in uint vId;
 
 out uint pickId;
 
 void main() {
-    pickId = uId;
+    pickId = vId;
 }

@@ -9,10 +9,9 @@
 in vec3 vPositionView;
 in vec3 vNormalView;
 in float vGrowth;  // 0 at the seed .. 1 at the newest vertex, when colouring by growth
-
-uniform vec3 uColour;
-uniform float uHighlight;  // 1 for the selected surface, else 0
-uniform float uGrowthScale;  // > 0: colour by growth order instead of uColour
+flat in vec3 vColour;
+flat in float vHighlight;  // 1 for the selected surface, else 0
+flat in float vGrowthScale;  // > 0: colour by growth order instead of vColour
 
 out vec4 fragColour;
 
@@ -44,8 +43,8 @@ float specular(vec3 n, vec3 l, vec3 v) {
 
 void main() {
     vec3 n = normalize(vNormalView);
-    vec3 albedo = uColour;
-    if (uGrowthScale > 0.0) albedo = growthColour(vGrowth);
+    vec3 albedo = vColour;
+    if (vGrowthScale > 0.0) albedo = growthColour(vGrowth);
     if (!gl_FrontFacing) {
         n = -n;
         albedo *= kBackSideDarkening;
@@ -61,7 +60,7 @@ void main() {
     // screen space: recognisable whatever its own colour is.
     float rim = pow(1.0 - max(dot(n, v), 0.0), 1.5);
     float stripe = step(mod(gl_FragCoord.x + gl_FragCoord.y, kStripePeriod), 0.5 * kStripePeriod);
-    colour = mix(colour, kHighlightColour, uHighlight * (0.12 + 0.30 * stripe + 0.70 * rim));
+    colour = mix(colour, kHighlightColour, vHighlight * (0.12 + 0.30 * stripe + 0.70 * rim));
 
     fragColour = vec4(min(colour, vec3(1.0)), 1.0);
 }

@@ -14,7 +14,7 @@
 namespace isotrack::ui {
 
 // The panel speaks core's vocabulary: the methods and tables the extraction takes.
-using Method = isotrack::Method;  // Exhaustive, Track, All: "mc", "track", "all" (methodName)
+using Method = isotrack::Method;    // Exhaustive, Track, All: "mc", "track", "all" (methodName)
 using Table = isotrack::TableKind;  // Consistent, Classic
 using isotrack::methodName;
 inline const char* tableName(Table table) { return tableKindName(table); }  // "consistent", "classic"
@@ -27,7 +27,7 @@ struct FieldChoice {
 
 struct DataState {
     std::vector<FieldChoice> fields;
-    std::string source;  // file path or field spec; empty before the first load
+    std::string source;      // file path or field spec; empty before the first load
     std::string sourceName;  // what the panel calls it: the file's name or the field spec
     bool sourceIsFile = false;
     bool loaded = false;
@@ -86,6 +86,10 @@ struct StatsState {
     double inputMs = 0, uiMs = 0, extractMs = 0, uploadMs = 0, drawMs = 0, presentMs = 0, gpuMs = -1;
     std::size_t cpuVolumeBytes = 0, cpuMeshBytes = 0, cpuTableBytes = 0;
     std::size_t gpuSurfaceBytes = 0, gpuOtherBytes = 0;
+    // The surfaces' shared GPU pages: how many, their free space, its largest
+    // range, and how split it is (0: one range per buffer, towards 1: many small).
+    std::size_t arenaPages = 0, arenaFreeBytes = 0, arenaLargestFreeBytes = 0;
+    double arenaFragmentation = 0.0;
     std::size_t rssBytes = 0;
     std::string renderer;  // GL_RENDERER
     std::size_t frames = 0;

@@ -79,6 +79,9 @@ void statsSection(const PanelState& state) {
     ImGui::Text("GPU %s: surfaces %s, other %s", formatBytes(stats.gpuSurfaceBytes + stats.gpuOtherBytes).c_str(),
                 formatBytes(stats.gpuSurfaceBytes).c_str(), formatBytes(stats.gpuOtherBytes).c_str());
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", stats.renderer.c_str());
+    ImGui::Text("    %zu page%s, free %s (largest %s), fragmented %.0f%%", stats.arenaPages,
+                stats.arenaPages == 1 ? "" : "s", formatBytes(stats.arenaFreeBytes).c_str(),
+                formatBytes(stats.arenaLargestFreeBytes).c_str(), 100.0 * stats.arenaFragmentation);
 }
 
 }  // namespace isotrack::ui

@@ -1,6 +1,7 @@
 // isotrack render: a PNG of the isosurfaces, drawn headless through EGL (a GPU
 // or Mesa's surfaceless platform) or OSMesa; see docs/headless.md.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -38,7 +39,15 @@ struct RenderOptions {
     std::optional<std::size_t> select;
     std::string gl = "auto";
     bool json = false;
+    int frames = 0;
+    bool oneCallPerSurface = false;
 };
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0.0;
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
+}
 
 using Clock = std::chrono::steady_clock;
 
@@ -90,7 +99,8 @@ Vec3d volumeCentre(const Volume& volume) {
 
 // The meshes to draw, largest first for "all", on one thread (a tracked
 // surface's vertex order is then the same from run to run); seconds in *seconds.
-std::vector<Mesh> extractSurfaces(const RenderOptions& options, const Source& source, TableKind table, double* seconds) {
+std::vector<Mesh> extractSurfaces(const RenderOptions& options, const Source& source, TableKind table,
+                                  double* seconds) {
     const Method method = parseMethod(options.method);
     std::vector<double> seed;
     if (method == Method::Track) {
@@ -114,6 +124,8 @@ int runRender(const RenderOptions& options) {
     snapshotOptions.wireframe = options.wireframe;
     snapshotOptions.boundingBox = !options.noBox;
     snapshotOptions.selected = options.select;
+    snapshotOptions.timedFrames = options.frames;
+    snapshotOptions.oneCallPerSurface = options.oneCallPerSurface;
 
     const Source source = loadSource(options.source);
     double extractSeconds = 0.0;
@@ -147,30 +159,44 @@ int runRender(const RenderOptions& options) {
     const gl::ContextInfo& info = context.info();
     const char* backend = headless::backendName(context.backend());
     if (options.json) {
-        const nlohmann::json report{{"out", options.out},
-                                    {"width", snapshot.image.width},
-                                    {"height", snapshot.image.height},
-                                    {"source", source.name},
-                                    {"method", options.method},
-                                    {"surfaces", meshes.size()},
-                                    {"triangles", triangles},
-                                    {"camera", render::formatCamera(snapshot.camera)},
-                                    {"backend", backend},
-                                    {"platform", context.platform()},
-                                    {"renderer", info.renderer},
-                                    {"version", info.version},
-                                    {"vendor", info.vendor},
-                                    {"extract_ms", extractMs},
-                                    {"context_ms", contextMs},
-                                    {"draw_ms", drawMs}};
+        nlohmann::json report{{"out", options.out},
+                              {"width", snapshot.image.width},
+                              {"height", snapshot.image.height},
+                              {"source", source.name},
+                              {"method", options.method},
+                              {"surfaces", meshes.size()},
+                              {"triangles", triangles},
+                              {"camera", render::formatCamera(snapshot.camera)},
+                              {"backend", backend},
+                              {"platform", context.platform()},
+                              {"renderer", info.renderer},
+                              {"version", info.version},
+                              {"vendor", info.vendor},
+                              {"extract_ms", extractMs},
+                              {"context_ms", contextMs},
+                              {"draw_ms", drawMs},
+                              {"draw_calls", snapshot.counters.drawCalls},
+                              {"triangles_drawn", snapshot.counters.triangles}};
+        if (options.frames > 0) {
+            report["frames"] = options.frames;
+            report["frame_ms"] = median(snapshot.frameMs);
+            report["submit_ms"] = median(snapshot.submitMs);
+        }
         std::printf("%s\n", report.dump(2).c_str());
         return 0;
     }
-    std::printf("%s: %dx%d, %s %s, %zu surface%s, %zu triangles, --camera %s; extract %.1f ms, render %.1f ms "
-                "(context %.1f, draw %.1f)\n",
-                options.out.c_str(), snapshot.image.width, snapshot.image.height, source.name.c_str(),
-                options.method.c_str(), meshes.size(), meshes.size() == 1 ? "" : "s", triangles,
-                render::formatCamera(snapshot.camera).c_str(), extractMs, contextMs + drawMs, contextMs, drawMs);
+    std::printf(
+        "%s: %dx%d, %s %s, %zu surface%s, %zu triangles, --camera %s; extract %.1f ms, render %.1f ms "
+        "(context %.1f, draw %.1f)\n",
+        options.out.c_str(), snapshot.image.width, snapshot.image.height, source.name.c_str(), options.method.c_str(),
+        meshes.size(), meshes.size() == 1 ? "" : "s", triangles, render::formatCamera(snapshot.camera).c_str(),
+        extractMs, contextMs + drawMs, contextMs, drawMs);
+    std::printf("drawn in %zu draw call%s", snapshot.counters.drawCalls, snapshot.counters.drawCalls == 1 ? "" : "s");
+    if (options.frames > 0) {
+        std::printf("; %d more frames, median %.2f ms (issuing the GL calls %.2f ms)", options.frames,
+                    median(snapshot.frameMs), median(snapshot.submitMs));
+    }
+    std::printf("\n");
     std::printf("gl: %s, %s: %s, OpenGL %s\n", backend, context.platform().c_str(), info.renderer.c_str(),
                 info.version.c_str());
     return 0;
@@ -206,6 +232,14 @@ RunCommand addRenderCommand(CLI::App& app) {
                      "surfaceless EGL (no display either way); osmesa: Mesa on the CPU, the golden images' "
                      "reference (default auto)")
         ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
+    command
+        ->add_option("--frames", options->frames,
+                     "Benchmark: draw the picture N more times, each timed to the end of the GPU's work; the "
+                     "median is printed (frame_ms in --json)")
+        ->check(CLI::Range(0, 100000));
+    command->add_flag("--one-call-per-surface", options->oneCallPerSurface,
+                      "Draw each surface with its own call instead of one call per GPU page (a reference for "
+                      "benchmarks; the picture is the same)");
     command->add_flag("--json", options->json,
                       "Print one JSON object on stdout: sizes, triangles, GL backend, renderer, version, timings");
     return [options] { return runRender(*options); };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <stdexcept>
 #include <utility>
 
 #include "gl/state.h"
@@ -41,6 +42,8 @@ std::array<glm::vec3, 24> boxLines(const Bounds& b) {
 
 bool drawable(const GpuMesh& mesh, const SurfaceStyle& style) { return style.visible && mesh.indexCount() > 0; }
 
+constexpr int kSurfaceTableUnit = 0;
+
 }  // namespace
 
 Bounds boundsWithOffsets(const Bounds& bounds, const std::vector<glm::vec3>& offsets) {
@@ -53,24 +56,24 @@ Bounds boundsWithOffsets(const Bounds& bounds, const std::vector<glm::vec3>& off
 }
 
 Renderer::Renderer()
-    : surfaceProgram_{buildProgram("surface.vert", "surface.frag"), 0, 0, 0, 0, 0, 0},
-      lineProgram_{buildProgram("lines.vert", "lines.frag"), 0, 0, 0},
-      pickProgram_{buildProgram("pick.vert", "pick.frag"), 0, 0, 0} {
+    : surfaceProgram_{buildProgram("surface.vert", "surface.frag"), 0, 0},
+      lineProgram_{buildProgram("lines.vert", "lines.frag"), 0, 0, 0, 0, 0},
+      pickProgram_{buildProgram("pick.vert", "pick.frag"), 0} {
     const gl::Program& surface = surfaceProgram_.program;
     surfaceProgram_.view = surface.uniformLocation("uView");
     surfaceProgram_.projection = surface.uniformLocation("uProjection");
-    surfaceProgram_.offset = surface.uniformLocation("uOffset");
-    surfaceProgram_.colour = surface.uniformLocation("uColour");
-    surfaceProgram_.highlight = surface.uniformLocation("uHighlight");
-    surfaceProgram_.growthScale = surface.uniformLocation("uGrowthScale");
     const gl::Program& lines = lineProgram_.program;
     lineProgram_.viewProjection = lines.uniformLocation("uViewProjection");
     lineProgram_.offset = lines.uniformLocation("uOffset");
     lineProgram_.colour = lines.uniformLocation("uColour");
+    lineProgram_.fromTable = lines.uniformLocation("uFromTable");
+    lineProgram_.darkening = lines.uniformLocation("uDarkening");
     const gl::Program& pick = pickProgram_.program;
     pickProgram_.viewProjection = pick.uniformLocation("uViewProjection");
-    pickProgram_.offset = pick.uniformLocation("uOffset");
-    pickProgram_.id = pick.uniformLocation("uId");
+    for (const gl::Program* program : {&surface, &lines, &pick}) {  // every one reads the table from one unit
+        program->use();
+        gl::Program::set(program->uniformLocation("uSurfaces"), kSurfaceTableUnit);
+    }
 
     boxVertices_.allocate(sizeof(glm::vec3) * 24, nullptr, gl::BufferUsage::Static);
     boxArray_.setFloatAttribute(0, boxVertices_, 3, sizeof(glm::vec3), 0);
@@ -83,7 +86,7 @@ std::size_t Renderer::addSurface(GpuMesh mesh, const SurfaceStyle& style) {
 }
 
 std::size_t Renderer::addSurface(const Mesh& mesh, const SurfaceStyle& style) {
-    return addSurface(GpuMesh(mesh), style);
+    return addSurface(GpuMesh(arena_, mesh), style);
 }
 
 void Renderer::setBounds(const Bounds& bounds) {
@@ -106,6 +109,7 @@ void Renderer::draw(const Camera& camera, const FrameOptions& options) const {
 
     beginSurfaces(frame, options.wireframe);
     for (std::size_t i = 0; i < surfaces_.size(); ++i) {
+        if (&surfaces_[i].mesh.arena() != &arena_) throw std::logic_error("Renderer: a surface from another arena");
         SurfaceShading shading;
         shading.highlighted = options.selected == i;
         drawSurface(surfaces_[i].mesh, surfaces_[i].style, shading);
@@ -147,6 +151,7 @@ void Renderer::beginFrame(const FrameView& frame, const FrameOptions& options) {
 }
 
 void Renderer::beginSurfaces(const FrameView& frame, bool underWireframe) const {
+    noted_.clear();
     const SurfaceProgram& p = surfaceProgram_;
     p.program.use();
     gl::Program::set(p.view, frame.view);
@@ -160,19 +165,59 @@ void Renderer::beginSurfaces(const FrameView& frame, bool underWireframe) const 
 
 void Renderer::drawSurface(const GpuMesh& mesh, const SurfaceStyle& style, const SurfaceShading& shading) const {
     if (!drawable(mesh, style)) return;
-    const SurfaceProgram& p = surfaceProgram_;
-    gl::Program::set(p.offset, style.offset);
-    gl::Program::set(p.colour, style.colour);
-    gl::Program::set(p.highlight, shading.highlighted ? 1.0f : 0.0f);
-    gl::Program::set(p.growthScale, shading.colourByGrowth
-                                        ? 1.0f / static_cast<float>(std::max<std::size_t>(mesh.vertexCount(), 1))
-                                        : 0.0f);
-    mesh.draw();
-    count(mesh.indexCount());
+    SurfaceLook look = arena_.look(mesh.slot());
+    look.colour = style.colour;
+    look.offset = style.offset;
+    look.highlight = shading.highlighted ? 1.0f : 0.0f;
+    look.growthScale =
+        shading.colourByGrowth ? 1.0f / static_cast<float>(std::max<std::size_t>(mesh.vertexCount(), 1)) : 0.0f;
+    note(mesh, look);
 }
 
-void Renderer::endSurfaces(bool underWireframe) {
+void Renderer::endSurfaces(bool underWireframe) const {
+    drawNoted(true);
     if (underWireframe) gl::setPolygonOffsetFill(0.0f, 0.0f);
+}
+
+void Renderer::note(const GpuMesh& mesh, const SurfaceLook& look) const {
+    arena_.setLook(mesh.slot(), look);
+    noted_.push_back(mesh.slot());
+}
+
+// The noted surfaces in list order: one multi-draw per run of consecutive
+// surfaces in the same page (or one draw each, as the reference).
+void Renderer::drawNoted(bool counted) const {
+    if (noted_.empty()) return;
+    arena_.sync();
+    arena_.bindTable(kSurfaceTableUnit);
+    std::vector<int> counts, baseVertices;
+    std::vector<std::size_t> firstIndices;
+    std::size_t i = 0;
+    while (i < noted_.size()) {
+        const int page = arena_.place(noted_[i]).page;
+        counts.clear();
+        baseVertices.clear();
+        firstIndices.clear();
+        std::size_t triangles = 0;
+        for (; i < noted_.size() && arena_.place(noted_[i]).page == page; ++i) {
+            const SlotPlace& place = arena_.place(noted_[i]);
+            counts.push_back(static_cast<int>(place.indexCount));
+            firstIndices.push_back(place.firstIndex);
+            baseVertices.push_back(static_cast<int>(place.firstVertex));
+            triangles += place.indexCount / 3;
+            if (oneCallPerSurface_) {
+                ++i;
+                break;
+            }
+        }
+        arena_.page(page)->array.multiDrawTriangles(counts.size(), counts.data(), firstIndices.data(),
+                                                    baseVertices.data());
+        if (counted) {
+            ++counters_.drawCalls;
+            counters_.triangles += triangles;
+        }
+    }
+    noted_.clear();
 }
 
 void Renderer::beginLines(const FrameView& frame) const {
@@ -182,19 +227,30 @@ void Renderer::beginLines(const FrameView& frame) const {
     gl::Program::set(p.viewProjection, frame.viewProjection());
 }
 
-void Renderer::setWireframeMode(bool lines) { gl::setPolygonLines(lines); }
+void Renderer::setWireframeMode(bool lines) const {
+    const LineProgram& p = lineProgram_;
+    if (lines) {
+        noted_.clear();
+        gl::Program::set(p.fromTable, 1);
+        gl::Program::set(p.darkening, kWireDarkening);
+    } else {
+        drawNoted(true);
+        gl::Program::set(p.fromTable, 0);
+    }
+    gl::setPolygonLines(lines);
+}
 
 void Renderer::drawSurfaceWireframe(const GpuMesh& mesh, const SurfaceStyle& style) const {
     if (!drawable(mesh, style)) return;
-    const LineProgram& p = lineProgram_;
-    gl::Program::set(p.offset, style.offset);
-    gl::Program::set(p.colour, style.colour * kWireDarkening);
-    mesh.draw();
-    count(mesh.indexCount());
+    SurfaceLook look = arena_.look(mesh.slot());
+    look.colour = style.colour;
+    look.offset = style.offset;
+    note(mesh, look);
 }
 
 void Renderer::drawBoundingBox() const {
     const LineProgram& p = lineProgram_;
+    gl::Program::set(p.fromTable, 0);
     gl::Program::set(p.offset, glm::vec3(0.0f));
     gl::Program::set(p.colour, kBoxColour);
     boxArray_.drawLines(24);
@@ -214,6 +270,7 @@ void Renderer::beginPick(const FrameView& frame, const PickTarget& target) const
     gl::setDepthWrite(true);
     gl::setDepthLessEqual(false);
     gl::setPolygonOffsetFill(0.0f, 0.0f);
+    noted_.clear();
     const PickProgram& p = pickProgram_;
     p.program.use();
     gl::Program::set(p.viewProjection, frame.viewProjection());
@@ -221,10 +278,12 @@ void Renderer::beginPick(const FrameView& frame, const PickTarget& target) const
 
 void Renderer::drawSurfaceId(const GpuMesh& mesh, const glm::vec3& offset, std::uint32_t id) const {
     if (mesh.indexCount() == 0) return;
-    const PickProgram& p = pickProgram_;
-    gl::Program::set(p.offset, offset);
-    gl::Program::set(p.id, static_cast<unsigned>(id));
-    mesh.draw();
+    SurfaceLook look = arena_.look(mesh.slot());
+    look.offset = offset;
+    look.pickId = id;
+    note(mesh, look);
 }
+
+void Renderer::endPick() const { drawNoted(false); }
 
 }  // namespace isotrack::render

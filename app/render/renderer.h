@@ -3,13 +3,20 @@
 // volume's bounding box, into whatever framebuffer is bound (a window's, or an
 // OffscreenTarget); and surface ids into a PickTarget for picking.
 //
-// Two ways in. The retained one: addSurface() a GpuMesh with a plain
-// SurfaceStyle a viewer can edit between frames, then draw() them all (what
-// `isotrack render` and the golden tests use). The immediate one, for a viewer
-// whose structures own their GpuMeshes and draw themselves: beginFrame(), then
-// beginSurfaces() and drawSurface() per surface, beginLines() and the box;
-// beginPick() and drawSurfaceId() for the id buffer. Each pass sets its state
-// once and only uniforms per surface; nothing here uploads meshes.
+// Surfaces live in the renderer's SurfaceArena (render/surface_arena.h): a few
+// shared pages, each surface a range of one. Two ways in. The retained one:
+// addSurface() a mesh with a plain SurfaceStyle a viewer can edit between
+// frames, then draw() them all (what `isotrack render` and the golden tests
+// use). The immediate one, for a viewer whose structures own their GpuMeshes
+// (made in arena()) and draw themselves: beginFrame(), then beginSurfaces(),
+// drawSurface() per surface and endSurfaces(); beginLines(), the wireframes
+// between setWireframeMode(true) and (false), and the box; beginPick(),
+// drawSurfaceId() per surface and endPick(). drawSurface and its kin only note
+// the surface and its look in the surface table; the end of the pass draws the
+// noted surfaces in list order with one glMultiDrawElementsBaseVertex per run of
+// consecutive surfaces in the same page, so the number of calls follows the
+// pages, not the surfaces. setOneCallPerSurface(true) draws the same list with
+// one call per surface instead (the reference the tests compare against).
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -79,7 +86,14 @@ public:
     // current GL context; throws gl::ShaderError naming a shader that fails.
     Renderer();
 
-    std::size_t addSurface(GpuMesh mesh, const SurfaceStyle& style);
+    SurfaceArena& arena() { return arena_; }
+    const SurfaceArena& arena() const { return arena_; }
+    // Room in one page for surfaces of this many vertices and indices in all,
+    // before adding them one by one.
+    void reserveSurfaces(std::size_t vertices, std::size_t indices) { arena_.prepare(vertices, indices); }
+    void setOneCallPerSurface(bool enabled) { oneCallPerSurface_ = enabled; }
+
+    std::size_t addSurface(GpuMesh mesh, const SurfaceStyle& style);  // a mesh of arena()
     std::size_t addSurface(const Mesh& mesh, const SurfaceStyle& style);
     std::size_t surfaceCount() const { return surfaces_.size(); }
     DrawnSurface& surface(std::size_t index) { return surfaces_.at(index); }
@@ -102,18 +116,19 @@ public:
 
     void beginSurfaces(const FrameView& frame, bool underWireframe) const;
     void drawSurface(const GpuMesh& mesh, const SurfaceStyle& style, const SurfaceShading& shading) const;
-    static void endSurfaces(bool underWireframe);
+    void endSurfaces(bool underWireframe) const;
 
     // Lines: wireframes over surfaces (between setWireframeMode(true) and
     // setWireframeMode(false)) and the volume's box.
     void beginLines(const FrameView& frame) const;
-    static void setWireframeMode(bool lines);
+    void setWireframeMode(bool lines) const;  // false draws the noted wireframes first
     void drawSurfaceWireframe(const GpuMesh& mesh, const SurfaceStyle& style) const;
     void drawBoundingBox() const;
 
     // Binds `target`, clears it to id 0 (nothing) and depth 1, and sets the pick program.
     void beginPick(const FrameView& frame, const PickTarget& target) const;
     void drawSurfaceId(const GpuMesh& mesh, const glm::vec3& offset, std::uint32_t id) const;
+    void endPick() const;
 
     // The counters since the last call, which restarts them.
     DrawCounters takeCounters();
@@ -126,18 +141,20 @@ private:
 
     struct SurfaceProgram {
         gl::Program program;
-        int view, projection, offset, colour, highlight, growthScale;
+        int view, projection;
     };
     struct LineProgram {
         gl::Program program;
-        int viewProjection, offset, colour;
+        int viewProjection, offset, colour, fromTable, darkening;
     };
     struct PickProgram {
         gl::Program program;
-        int viewProjection, offset, id;
+        int viewProjection;
     };
 
     Bounds sceneBounds() const;
+    void note(const GpuMesh& mesh, const SurfaceLook& look) const;
+    void drawNoted(bool counted) const;
 
     SurfaceProgram surfaceProgram_;
     LineProgram lineProgram_;
@@ -145,8 +162,13 @@ private:
     gl::Buffer boxVertices_;
     gl::VertexArray boxArray_;
     Bounds bounds_;
-    std::vector<DrawnSurface> surfaces_;
-    mutable DrawCounters counters_;  // drawing is const; counting what it cost is not the drawing's state
+    // Drawing is const; the surface table it fills, the list of surfaces noted
+    // for the pass and what it cost are not the drawing's state.
+    mutable SurfaceArena arena_;
+    std::vector<DrawnSurface> surfaces_;  // after arena_: freed before it
+    mutable std::vector<std::uint32_t> noted_;
+    mutable DrawCounters counters_;
+    bool oneCallPerSurface_ = false;
 };
 
 }  // namespace isotrack::render

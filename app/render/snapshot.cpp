@@ -1,7 +1,9 @@
 #include "render/snapshot.h"
 
 #include <algorithm>
+#include <chrono>
 
+#include "gl/state.h"
 #include "render/offscreen_target.h"
 #include "render/palette.h"
 #include "render/renderer.h"
@@ -24,6 +26,13 @@ Snapshot renderSnapshot(const std::vector<const Mesh*>& surfaces, const Bounds& 
     OffscreenTarget target(options.width, options.height);
     Renderer renderer;
     renderer.setBounds(bounds);
+    renderer.setOneCallPerSurface(options.oneCallPerSurface);
+    std::size_t vertices = 0, indices = 0;
+    for (const Mesh* mesh : surfaces) {
+        vertices += mesh->vertices.size();
+        indices += mesh->indices.size();
+    }
+    if (vertices > 0) renderer.reserveSurfaces(vertices, indices);  // one page for them all
     for (std::size_t i = 0; i < surfaces.size(); ++i) {
         SurfaceStyle style;
         style.colour = surfaceColour(i);
@@ -42,7 +51,17 @@ Snapshot renderSnapshot(const std::vector<const Mesh*>& surfaces, const Bounds& 
 
     target.bind();
     renderer.draw(snapshot.camera, frame);
+    snapshot.counters = renderer.takeCounters();
     snapshot.image = target.read();
+    for (int i = 0; i < options.timedFrames; ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        renderer.draw(snapshot.camera, frame);
+        const auto submitted = std::chrono::steady_clock::now();
+        gl::finish();
+        const auto finished = std::chrono::steady_clock::now();
+        snapshot.submitMs.push_back(std::chrono::duration<double, std::milli>(submitted - start).count());
+        snapshot.frameMs.push_back(std::chrono::duration<double, std::milli>(finished - start).count());
+    }
     return snapshot;
 }
 

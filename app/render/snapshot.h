@@ -8,6 +8,7 @@
 #include "isotrack/volume.h"
 #include "render/camera.h"
 #include "render/image.h"
+#include "render/renderer.h"
 
 namespace isotrack::render {
 
@@ -17,11 +18,19 @@ struct SnapshotOptions {
     bool wireframe = false;
     bool boundingBox = true;
     std::optional<std::size_t> selected;
+    // For benchmarks: draw the picture this many more times, each timed to the
+    // end of the GPU's work (glFinish), and draw one call per surface instead
+    // of one per arena page.
+    int timedFrames = 0;
+    bool oneCallPerSurface = false;
 };
 
 struct Snapshot {
     Image image;
-    Camera camera;  // the camera used, e.g. to print for --camera
+    Camera camera;                 // the camera used, e.g. to print for --camera
+    DrawCounters counters;         // of the picture's draw
+    std::vector<double> frameMs;   // each timed frame's milliseconds, to glFinish
+    std::vector<double> submitMs;  // of which issuing the frame's GL calls (the CPU's part)
 };
 
 // The volume's box in world units: from the first sample to the last.

@@ -183,6 +183,11 @@ void Profiler::writeTrace() {
                          {"draw_calls", c.drawCalls},
                          {"triangles_drawn", c.trianglesDrawn},
                          {"uploaded_bytes", c.uploadedBytes},
+                         {"arena_pages", c.arenaPages},
+                         {"arena_free_bytes", c.arenaFreeBytes},
+                         {"arena_fragmentation", c.arenaFragmentation},
+                         {"arena_moves", c.arenaMoves},
+                         {"arena_moved_bytes", c.arenaMovedBytes},
                          {"gpu_ms", record.gpuUs >= 0.0 ? json(record.gpuUs / 1000.0) : json(nullptr)}};
         events.push_back(std::move(frame));
         for (const Span& span : record.spans) events.push_back(complete(stageName(span.stage), "stage", 1, span.startUs, span.durationUs));

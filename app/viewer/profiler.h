@@ -29,10 +29,14 @@ struct FrameCounters {
     std::size_t grownCells = 0;  // by growing surfaces this frame
     bool growing = false, extracting = false;
     std::size_t cpuBytes = 0, gpuBytes = 0;
-    double isoShown = 0.0, isoRequested = 0.0;  // the surfaces on screen trail the slider while it is dragged
-    std::size_t extractionsApplied = 0;          // results shown so far in the session
+    double isoShown = 0.0, isoRequested = 0.0;      // the surfaces on screen trail the slider while it is dragged
+    std::size_t extractionsApplied = 0;             // results shown so far in the session
     std::size_t drawCalls = 0, trianglesDrawn = 0;  // into the 3D view (0 when only its cached image was copied)
     std::size_t uploadedBytes = 0;                  // vertices and indices sent to the GPU
+    // The surface arena after the frame (render/surface_arena.h): pages, free
+    // bytes, fragmentation, and slots moved GPU-side so far.
+    std::size_t arenaPages = 0, arenaFreeBytes = 0, arenaMoves = 0, arenaMovedBytes = 0;
+    double arenaFragmentation = 0.0;
 };
 
 class Profiler {

@@ -81,13 +81,13 @@ void Scene::draw(const render::Renderer& renderer, const render::FrameView& fram
     for (const auto& surface : surfaces_) {
         if (!surface->tracked()) surface->draw(renderer, selected == surface->id(), colourByGrowth);
     }
-    render::Renderer::endSurfaces(wireframe);
+    renderer.endSurfaces(wireframe);
     if (!wireframe && !boundingBox) return;
     renderer.beginLines(frame);
     if (wireframe) {
-        render::Renderer::setWireframeMode(true);
+        renderer.setWireframeMode(true);
         for (const auto& surface : surfaces_) surface->drawWireframe(renderer);
-        render::Renderer::setWireframeMode(false);
+        renderer.setWireframeMode(false);
     }
     if (boundingBox && volume_) renderer.drawBoundingBox();
 }
@@ -101,6 +101,7 @@ void Scene::drawPick(const render::Renderer& renderer, const render::FrameView& 
     for (const auto& surface : surfaces_) {
         if (!surface->tracked()) surface->drawPick(renderer);
     }
+    renderer.endPick();
 }
 
 std::uint64_t Scene::signature(const render::Camera& camera, const render::FrameOptions& options) const {

@@ -11,9 +11,13 @@ using Clock = std::chrono::steady_clock;
 
 }  // namespace
 
-SurfaceStructure::SurfaceStructure(std::uint32_t id, Surface surface, SurfaceFootprint footprint,
-                                   const glm::vec3& colour)
-    : id_(id), mesh_(std::move(surface.mesh)), stats_(surface.stats), gpu_(mesh_), footprint_(std::move(footprint)) {
+SurfaceStructure::SurfaceStructure(render::SurfaceArena& arena, std::uint32_t id, Surface surface,
+                                   SurfaceFootprint footprint, const glm::vec3& colour)
+    : id_(id),
+      mesh_(std::move(surface.mesh)),
+      stats_(surface.stats),
+      gpu_(arena, mesh_),
+      footprint_(std::move(footprint)) {
     style_.colour = colour;
 }
 
@@ -21,7 +25,9 @@ void SurfaceStructure::replaceSurface(Surface surface, SurfaceFootprint footprin
     tracker_.reset();
     mesh_ = std::move(surface.mesh);
     stats_ = surface.stats;
-    gpu_ = render::GpuMesh(mesh_);
+    gpu_.clear();
+    gpu_.arena().reserve(gpu_.slot(), mesh_.vertices.size(), mesh_.indices.size());
+    gpu_.appendNew(mesh_);
     footprint_ = std::move(footprint);
     presence_ = Presence::Shown;
 }
@@ -36,7 +42,7 @@ void SurfaceStructure::setAbsent(Presence presence, double iso, std::uint32_t in
     tracker_.reset();
     mesh_ = Mesh{};
     stats_ = SurfaceStats{};
-    gpu_ = render::GpuMesh();
+    gpu_.clear();
     presence_ = presence;
     mergedInto_ = into;
     absentIso_ = iso;
@@ -53,10 +59,10 @@ void SurfaceStructure::startTracking(std::shared_ptr<const LoadedVolume> volume,
     restartGrowth();
 }
 
-SurfaceStructure::SurfaceStructure(std::uint32_t id, std::shared_ptr<const LoadedVolume> volume, double iso,
-                                   TableKind table, const GridEdge& seed, const Vec3d& seedPoint,
-                                   const glm::vec3& colour)
-    : id_(id), seedPoint_(seedPoint), volume_(std::move(volume)), iso_(iso), table_(table), seed_(seed) {
+SurfaceStructure::SurfaceStructure(render::SurfaceArena& arena, std::uint32_t id,
+                                   std::shared_ptr<const LoadedVolume> volume, double iso, TableKind table,
+                                   const GridEdge& seed, const Vec3d& seedPoint, const glm::vec3& colour)
+    : id_(id), gpu_(arena), seedPoint_(seedPoint), volume_(std::move(volume)), iso_(iso), table_(table), seed_(seed) {
     style_.colour = colour;
     restartGrowth();
 }
@@ -69,7 +75,7 @@ void SurfaceStructure::restartGrowth() {
     tracker_->start(seed_);
     mesh_ = Mesh{};
     stats_ = SurfaceStats{};
-    gpu_ = render::GpuMesh();
+    gpu_.clear();
 }
 
 const Mesh& SurfaceStructure::mesh() const { return tracker_ ? tracker_->mesh() : mesh_; }

@@ -44,11 +44,14 @@ enum class Presence { Shown, Gone, Merged };
 
 class SurfaceStructure {
 public:
-    // A finished surface, uploaded in one go.
-    SurfaceStructure(std::uint32_t id, Surface surface, SurfaceFootprint footprint, const glm::vec3& colour);
+    // A finished surface, uploaded in one go. Its GPU mesh lives in `arena`,
+    // which must outlive it (as every constructor's).
+    SurfaceStructure(render::SurfaceArena& arena, std::uint32_t id, Surface surface, SurfaceFootprint footprint,
+                     const glm::vec3& colour);
     // A surface to grow from `seed`, tracked on `volume` (kept alive by this).
-    SurfaceStructure(std::uint32_t id, std::shared_ptr<const LoadedVolume> volume, double iso, TableKind table,
-                     const GridEdge& seed, const Vec3d& seedPoint, const glm::vec3& colour);
+    SurfaceStructure(render::SurfaceArena& arena, std::uint32_t id, std::shared_ptr<const LoadedVolume> volume,
+                     double iso, TableKind table, const GridEdge& seed, const Vec3d& seedPoint,
+                     const glm::vec3& colour);
     ~SurfaceStructure();
 
     // A new mesh for the same surface (another isovalue); style, offset and id stay.

@@ -208,6 +208,12 @@ void Viewer::frame() {
         counters.drawCalls = drawn_.drawCalls;
         counters.trianglesDrawn = drawn_.triangles;
         counters.uploadedBytes = uploaded_;
+        const render::ArenaStats arena = renderer_->arena().stats();
+        counters.arenaPages = arena.pages;
+        counters.arenaFreeBytes = arena.freeBytes;
+        counters.arenaFragmentation = arena.fragmentation;
+        counters.arenaMoves = arena.moves;
+        counters.arenaMovedBytes = arena.movedBytes;
     }
     profiler_.endFrame(counters);
 }
@@ -222,9 +228,10 @@ int runViewer(const ViewerOptions& options) {
         if (file == nullptr) throw InputError("--volume " + options.volumePath + ": cannot open the file");
         std::fclose(file);
         if (!options.raw && !volumeFormatOf(options.volumePath)) {
-            throw InputError("--volume " + options.volumePath +
-                             ": unknown volume format (the viewer reads .nrrd .nhdr .nii .nii.gz .mhd .mha .vtk, or raw "
-                             "samples with --dims and --type)");
+            throw InputError(
+                "--volume " + options.volumePath +
+                ": unknown volume format (the viewer reads .nrrd .nhdr .nii .nii.gz .mhd .mha .vtk, or raw "
+                "samples with --dims and --type)");
         }
     }
     Viewer viewer(options, std::move(script));

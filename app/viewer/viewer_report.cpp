@@ -1,8 +1,8 @@
 // What the viewer reports: the panel's plain state, memory, the --json summary
 // and screenshots.
-#include "render/window_frame.h"
 #include "isotrack/fields.h"
 #include "render/image.h"
+#include "render/window_frame.h"
 #include "viewer/memory.h"
 #include "viewer/viewer.h"
 
@@ -22,6 +22,18 @@ const char* presenceName(Presence presence) {
     return "shown";
 }
 
+nlohmann::json arenaJson(const render::ArenaStats& arena) {
+    return {{"pages", arena.pages},
+            {"capacity_bytes", arena.capacityBytes},
+            {"reserved_bytes", arena.reservedBytes},
+            {"used_bytes", arena.usedBytes},
+            {"free_bytes", arena.freeBytes},
+            {"largest_free_bytes", arena.largestFreeBytes},
+            {"fragmentation", arena.fragmentation},
+            {"moves", arena.moves},
+            {"moved_bytes", arena.movedBytes}};
+}
+
 }  // namespace
 
 std::size_t Viewer::cpuBytes() const { return scene_.cpuVolumeBytes() + scene_.cpuMeshBytes() + tableBytes(); }
@@ -30,7 +42,8 @@ std::size_t Viewer::gpuOtherBytes() const {
     return picker_.gpuBytes() + viewCache_.gpuBytes() + kBoxBytes + Window::imguiFontBytes();
 }
 
-std::size_t Viewer::gpuBytes() const { return scene_.gpuSurfaceBytes() + gpuOtherBytes(); }
+// The surfaces' share is the arena's pages, whole: what the GPU holds for them.
+std::size_t Viewer::gpuBytes() const { return renderer_->arena().stats().capacityBytes + gpuOtherBytes(); }
 
 nlohmann::json Viewer::memoryJson() const {
     std::size_t gone = 0, merged = 0, triangles = 0;
@@ -102,7 +115,12 @@ ui::PanelState Viewer::panelState() const {
     stats.cpuVolumeBytes = scene_.cpuVolumeBytes();
     stats.cpuMeshBytes = scene_.cpuMeshBytes();
     stats.cpuTableBytes = tableBytes();
-    stats.gpuSurfaceBytes = scene_.gpuSurfaceBytes();
+    const render::ArenaStats arena = renderer_->arena().stats();
+    stats.gpuSurfaceBytes = arena.capacityBytes;
+    stats.arenaPages = arena.pages;
+    stats.arenaFreeBytes = arena.freeBytes;
+    stats.arenaLargestFreeBytes = arena.largestFreeBytes;
+    stats.arenaFragmentation = arena.fragmentation;
     stats.gpuOtherBytes = gpuOtherBytes();
     stats.rssBytes = options_.deterministic ? 0 : residentBytes();
     stats.renderer = window_.info().renderer;
@@ -153,11 +171,12 @@ nlohmann::json Viewer::summary() const {
          {{"volume", scene_.cpuVolumeBytes()}, {"meshes", scene_.cpuMeshBytes()}, {"tables", tableBytes()}}},
         {"gpu_bytes", gpuBytes()},
         {"gpu_bytes_detail",
-         {{"surfaces", scene_.gpuSurfaceBytes()},
+         {{"surfaces", renderer_->arena().stats().capacityBytes},
           {"pick_buffer", picker_.gpuBytes()},
           {"view_image", viewCache_.gpuBytes()},
           {"box", kBoxBytes},
           {"font_atlas", Window::imguiFontBytes()}}},
+        {"gpu_surface_arena", arenaJson(renderer_->arena().stats())},
         {"rss_bytes", residentBytes()},
         {"frames", profiler_.frames()},
         {"median_frame_ms", profiler_.medianFrameMs()},

@@ -64,9 +64,19 @@ void Viewer::applyResult(ExtractionResult result) {
         const render::FrameOptions options = frameOptions();
         camera_ = render::frameBounds(scene_.volumeBounds(), float(options.width) / float(options.height));
         scene_.clearSurfaces();
+        renderer_->arena().trim();  // pages sized for the old volume's surfaces go
         nextColour_ = 0;
     }
     extraction_.applied(result);
+
+    // Room for the whole result in one page before its surfaces arrive one by
+    // one: they then draw in one call, and no page is made halfway.
+    std::size_t vertices = 0, indices = 0;
+    for (const Surface& surface : result.surfaces) {
+        vertices += surface.mesh.vertices.size();
+        indices += surface.mesh.indices.size();
+    }
+    if (vertices > 0) renderer_->reserveSurfaces(vertices, indices);
 
     Structures old = std::move(scene_.surfaces());
     scene_.surfaces().clear();
@@ -153,8 +163,9 @@ void Viewer::placeUntracked(ExtractionResult& result, Structures& old, std::vect
         next.push_back(std::move(surface));
         for (std::size_t p = 1; p < continuing.size(); ++p) {  // the other parts of a split, right after it
             const std::size_t j = freshIndex[continuing[p]];
-            auto part = std::make_unique<SurfaceStructure>(scene_.newId(), std::move(result.surfaces[j]),
-                                                           std::move(result.footprints[j]), look.style().colour);
+            auto part =
+                std::make_unique<SurfaceStructure>(renderer_->arena(), scene_.newId(), std::move(result.surfaces[j]),
+                                                   std::move(result.footprints[j]), look.style().colour);
             copyLook(look, *part);
             next.push_back(std::move(part));
         }
@@ -166,9 +177,9 @@ void Viewer::placeUntracked(ExtractionResult& result, Structures& old, std::vect
             colour = 0;
             nextColour_ = std::max<std::size_t>(nextColour_ - 1, 1);
         }
-        next.push_back(std::make_unique<SurfaceStructure>(scene_.newId(), std::move(result.surfaces[j]),
-                                                          std::move(result.footprints[j]),
-                                                          render::surfaceColour(colour)));
+        next.push_back(
+            std::make_unique<SurfaceStructure>(renderer_->arena(), scene_.newId(), std::move(result.surfaces[j]),
+                                               std::move(result.footprints[j]), render::surfaceColour(colour)));
     }
 }
 

@@ -81,7 +81,7 @@ void Viewer::click(float x, float y, bool track) {
     if (!point) {
         glm::vec3 origin, direction;
         render::pixelRay(view, x + 0.5f, y + 0.5f, origin, direction);
-            point = firstIsoCrossing(scene_.volume()->volume, shownIso(), origin, direction);
+        point = firstIsoCrossing(scene_.volume()->volume, shownIso(), origin, direction);
     }
     if (!point) {
         status("no surface at isovalue " + std::to_string(shownIso()) + " under the click");
@@ -114,8 +114,8 @@ void Viewer::trackFrom(const Vec3d& point, std::optional<std::uint32_t> hit) {
         scene_.selected = clicked->id();
         picks_.back()["tracked_surface"] = clicked->id();
     } else {
-        auto surface = std::make_unique<SurfaceStructure>(scene_.newId(), volume, iso, table, seed, point,
-                                                          render::surfaceColour(nextColour_++));
+        auto surface = std::make_unique<SurfaceStructure>(renderer_->arena(), scene_.newId(), volume, iso, table, seed,
+                                                          point, render::surfaceColour(nextColour_++));
         scene_.selected = surface->id();
         picks_.back()["tracked_surface"] = surface->id();
         scene_.add(std::move(surface));

@@ -1,4 +1,6 @@
-// GpuMesh: byte sizes, growth by appending, and that only new data is uploaded.
+// GpuMesh in a SurfaceArena: byte sizes, growth by appending (only new data
+// uploaded, in place while the space after it is free, GPU-side moves
+// otherwise), and freed ranges reused.
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <cstring>
@@ -13,46 +15,31 @@ using namespace isotrack;
 
 namespace {
 
+constexpr std::size_t kSlotBytes = sizeof(std::uint32_t);
+
 Mesh sphereMesh(int n) {
     const Volume volume = makeField(parseFieldSpec("sphere:" + std::to_string(n)));
     return marchingCubes(volume, fieldDefaultIso("sphere"));
 }
 
-// The GPU buffers hold exactly the mesh's vertices and indices.
+// What the arena sends for a mesh: vertices, one slot number per vertex, indices.
+std::size_t sentBytes(const Mesh& mesh) { return mesh.drawByteSize() + mesh.vertices.size() * kSlotBytes; }
+
+// The GPU ranges hold exactly the mesh's vertices and indices, and every vertex the slot's number.
 void requireSameContents(const render::GpuMesh& gpu, const Mesh& mesh) {
     REQUIRE(gpu.vertexCount() == mesh.vertices.size());
     REQUIRE(gpu.indexCount() == mesh.indices.size());
-    std::vector<Vertex> vertices(mesh.vertices.size());
-    Buffer<std::uint32_t> indices(mesh.indices.size());
-    gpu.vertexBuffer().read(0, vertices.size() * sizeof(Vertex), vertices.data());
-    gpu.indexBuffer().read(0, indices.size() * sizeof(std::uint32_t), indices.data());
+    const std::vector<Vertex> vertices = gpu.readVertices();
+    const std::vector<std::uint32_t> indices = gpu.readIndices();
     CHECK(std::memcmp(vertices.data(), mesh.vertices.data(), vertices.size() * sizeof(Vertex)) == 0);
-    CHECK(indices == mesh.indices);
+    CHECK(std::equal(indices.begin(), indices.end(), mesh.indices.begin(), mesh.indices.end()));
+    const std::vector<std::uint32_t> slots = gpu.readSlotNumbers();
+    CHECK(std::count(slots.begin(), slots.end(), gpu.slot()) == static_cast<long>(slots.size()));
 }
 
-}  // namespace
-
-TEST_CASE("a GpuMesh built from a mesh has exactly its size", "[gl]") {
-    test::useHeadlessGl();
-    const Mesh mesh = sphereMesh(24);
-    const render::GpuMesh gpu(mesh);
-    const render::GpuMeshBytes bytes = gpu.bytes();
-    CHECK(bytes.vertexBytes == mesh.vertices.size() * sizeof(Vertex));
-    CHECK(bytes.indexBytes == mesh.indices.size() * sizeof(std::uint32_t));
-    CHECK(bytes.capacityBytes == mesh.drawByteSize());
-    CHECK(gpu.uploadedBytes() == mesh.drawByteSize());
-    requireSameContents(gpu, mesh);
-}
-
-TEST_CASE("appending uploads only the new ranges and doubles capacity", "[gl]") {
-    test::useHeadlessGl();
-    const Mesh whole = sphereMesh(40);
-    // Grow a copy of the mesh a slice of triangles at a time, as a tracker would.
+// Grows `gpu` with `whole`'s triangles a slice at a time, as a tracker would.
+Mesh growInSlices(render::GpuMesh& gpu, const Mesh& whole, std::size_t slice) {
     Mesh growing;
-    render::GpuMesh gpu;
-    CHECK(gpu.bytes().capacityBytes == 0);
-    std::size_t reallocations = 0, previousCapacity = 0;
-    const std::size_t slice = 3 * 97;
     for (std::size_t first = 0; first < whole.indices.size(); first += slice) {
         const std::size_t last = std::min(first + slice, whole.indices.size());
         render::MeshRange range{growing.vertices.size(), 0, growing.indices.size(), last - first};
@@ -66,34 +53,103 @@ TEST_CASE("appending uploads only the new ranges and doubles capacity", "[gl]") 
                                     whole.vertices.begin() + long(highest) + 1);
         }
         gpu.append(growing, range);
-        if (gpu.bytes().capacityBytes != previousCapacity) ++reallocations;
-        previousCapacity = gpu.bytes().capacityBytes;
-        CHECK(gpu.uploadedBytes() == growing.drawByteSize());
+        CHECK(gpu.uploadedBytes() == sentBytes(growing));  // nothing sent twice
     }
-    requireSameContents(gpu, growing);
-    CHECK(growing.indices == whole.indices);
-    // Doubling: a logarithmic number of reallocations, never more than twice the space needed
-    // (beyond the minimum first allocation).
-    CHECK(reallocations <= 2 * 12);
-    CHECK(gpu.bytes().capacityBytes <= 2 * growing.drawByteSize() + 64 * 1024);
+    return growing;
 }
 
-TEST_CASE("appending a range that does not continue the mesh is refused", "[gl]") {
+render::ArenaOptions smallPages() {
+    render::ArenaOptions options;
+    options.pageVertices = 4096;
+    return options;
+}
+
+}  // namespace
+
+TEST_CASE("a GpuMesh built from a mesh has exactly its size", "[gl][arena]") {
     test::useHeadlessGl();
+    render::SurfaceArena arena;
+    const Mesh mesh = sphereMesh(24);
+    const render::GpuMesh gpu(arena, mesh);
+    const render::GpuMeshBytes bytes = gpu.bytes();
+    CHECK(bytes.vertexBytes == mesh.vertices.size() * sizeof(Vertex));
+    CHECK(bytes.indexBytes == mesh.indices.size() * sizeof(std::uint32_t));
+    CHECK(bytes.capacityBytes == sentBytes(mesh));
+    CHECK(gpu.uploadedBytes() == sentBytes(mesh));
+    requireSameContents(gpu, mesh);
+}
+
+TEST_CASE("a growing GpuMesh stays in place while the space after it is free", "[gl][arena]") {
+    test::useHeadlessGl();
+    render::SurfaceArena arena;
+    const Mesh whole = sphereMesh(40);
+    render::GpuMesh gpu(arena);
+    CHECK(gpu.bytes().capacityBytes == 0);
+    const Mesh grown = growInSlices(gpu, whole, 3 * 97);
+    requireSameContents(gpu, grown);
+    CHECK(grown.indices == whole.indices);
+    CHECK(arena.stats().moves == 0);
+    CHECK(gpu.bytes().capacityBytes <= 2 * sentBytes(grown) + 64 * 1024);  // about twice, ahead
+    gpu.shrinkToFit();
+    CHECK(gpu.bytes().capacityBytes == sentBytes(grown));
+    requireSameContents(gpu, grown);
+}
+
+TEST_CASE("a growing GpuMesh boxed in by another moves GPU-side", "[gl][arena]") {
+    test::useHeadlessGl();
+    render::SurfaceArena arena(smallPages());
+    const Mesh whole = sphereMesh(40), small = sphereMesh(8);
+    render::GpuMesh gpu(arena);
+    gpu.append(whole, render::MeshRange{0, 3, 0, 3});  // a first triangle, then a neighbour right after it
+    const render::GpuMesh neighbour(arena, small);
+    CHECK(neighbour.place().page == gpu.place().page);
+    gpu.appendNew(whole);  // the rest of it: more than its reserve, and no room after it
+    const render::ArenaStats stats = arena.stats();
+    CHECK(stats.moves >= 1);
+    CHECK(stats.movedBytes > 0);
+    CHECK(gpu.uploadedBytes() == sentBytes(whole));  // moved, not sent again
+    requireSameContents(gpu, whole);
+    requireSameContents(neighbour, small);
+}
+
+TEST_CASE("freed ranges are reused and fragmentation is reported", "[gl][arena]") {
+    test::useHeadlessGl();
+    render::SurfaceArena arena(smallPages());
+    const Mesh small = sphereMesh(8);
+    std::vector<render::GpuMesh> meshes;
+    for (int i = 0; i < 6; ++i) meshes.emplace_back(arena, small);
+    const render::ArenaStats full = arena.stats();
+    CHECK(full.pages == 1);
+    CHECK(full.fragmentation == 0.0);
+    meshes[1] = render::GpuMesh(arena);  // frees the second surface's ranges: a hole
+    meshes[3] = render::GpuMesh(arena);
+    const render::ArenaStats holes = arena.stats();
+    CHECK(holes.freeBytes == full.freeBytes + 2 * sentBytes(small));
+    CHECK(holes.fragmentation > 0.0);
+    const render::GpuMesh again(arena, small);  // first fit: the first hole
+    CHECK(again.place().firstVertex == small.vertices.size());
+    CHECK(again.place().page == 0);
+    requireSameContents(again, small);
+}
+
+TEST_CASE("appending a range that does not continue the mesh is refused", "[gl][arena]") {
+    test::useHeadlessGl();
+    render::SurfaceArena arena;
     const Mesh mesh = sphereMesh(16);
-    render::GpuMesh gpu(mesh);
+    render::GpuMesh gpu(arena, mesh);
     CHECK_THROWS_AS(gpu.append(mesh, render::MeshRange{0, 3, 0, 3}), std::invalid_argument);
     gpu.appendNew(mesh);  // nothing new: a no-op
-    CHECK(gpu.uploadedBytes() == mesh.drawByteSize());
+    CHECK(gpu.uploadedBytes() == sentBytes(mesh));
 }
 
-TEST_CASE("a GpuMesh follows a SurfaceTracker step by step", "[gl][tracking]") {
+TEST_CASE("a GpuMesh follows a SurfaceTracker step by step", "[gl][tracking][arena]") {
     test::useHeadlessGl();
+    render::SurfaceArena arena;
     const Volume volume = makeField(parseFieldSpec("torus:48"));
     const double iso = fieldDefaultIso("torus");
     SurfaceTracker tracker(volume, iso);
     tracker.start(nearestCrossedEdge(volume, iso, {24.0, 24.0, 24.0}));
-    render::GpuMesh gpu;
+    render::GpuMesh gpu(arena);
     int steps = 0;
     while (!tracker.done()) {
         const SurfaceTracker::Step step = tracker.step(200);
@@ -101,6 +157,6 @@ TEST_CASE("a GpuMesh follows a SurfaceTracker step by step", "[gl][tracking]") {
         ++steps;
     }
     CHECK(steps > 3);
-    CHECK(gpu.uploadedBytes() == tracker.mesh().drawByteSize());
+    CHECK(gpu.uploadedBytes() == sentBytes(tracker.mesh()));
     requireSameContents(gpu, tracker.mesh());
 }

@@ -93,7 +93,7 @@ TEST_CASE("the golden metric catches a changed surface colour", "[gl][shaders]")
     const render::Image embedded = test::renderForGolden({&mesh}, volume);
 
     const ShaderOverride shaders("recoloured");
-    shaders.replace("surface.frag", "vec3 albedo = uColour;", "vec3 albedo = uColour.bgr;");
+    shaders.replace("surface.frag", "vec3 albedo = vColour;", "vec3 albedo = vColour.bgr;");
     const render::Image recoloured = test::renderForGolden({&mesh}, volume);
 
     const test::GoldenTolerance tolerance;
