@@ -5,20 +5,11 @@
 #include <string>
 
 #include "gl/check.h"
+#include "gl/make_handle.h"
 
 namespace isotrack::gl {
-namespace {
 
-GLuint createTexture() {
-    GLuint id = 0;
-    ISOTRACK_GL_CALL(glGenTextures(1, &id));
-    if (id == 0) throw Error("glGenTextures returned no texture");
-    return id;
-}
-
-}  // namespace
-
-TextureBuffer::TextureBuffer() : handle_(createTexture()) {}
+TextureBuffer::TextureBuffer() : handle_(makeHandle(glGenTextures, "glGenTextures", "texture")) {}
 
 std::size_t TextureBuffer::maxTexels() {
     GLint texels = 0;
