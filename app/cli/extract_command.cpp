@@ -24,6 +24,7 @@
 #include "isotrack/orientation.h"
 #include "isotrack/tables.h"
 #include "isotrack/tracking.h"
+#include "isotrack/trilinear.h"
 
 namespace isotrack::cli {
 namespace {
@@ -180,7 +181,12 @@ struct ResidentMemory {
 };
 
 Extraction extract(const ExtractOptions& options, const Source& source, TableKind table) {
-    continuationTable(table);  // the tables are generated once, before any timing
+    // The tables are generated once, before any timing.
+    if (table == TableKind::Trilinear) {
+        trilinearTable();
+    } else {
+        continuationTable(table);
+    }
     std::vector<double> seconds;
     Extraction out;
     ExtractOptions quiet = options;  // only the last run writes --out-dir files

@@ -34,6 +34,10 @@ struct CaseContinuation {
     std::array<std::array<std::int8_t, 3>, kMaxCaseTriangles> triangles{};
 };
 
+// Throws InputError (kTrilinearMcOnly) for TableKind::Trilinear, which has none yet.
 const std::array<CaseContinuation, 256>& continuationTable(TableKind kind);
+
+constexpr const char* kTrilinearMcOnly =
+    "the trilinear table extracts with method mc only; track and all need the consistent or classic table";
 
 }  // namespace isotrack

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "isotrack/cube.h"
+#include "isotrack/errors.h"
 
 namespace isotrack {
 namespace {
@@ -110,6 +111,7 @@ std::array<CaseContinuation, 256> buildTable(TableKind kind) {
 }  // namespace
 
 const std::array<CaseContinuation, 256>& continuationTable(TableKind kind) {
+    if (kind == TableKind::Trilinear) throw InputError(kTrilinearMcOnly);
     static const auto consistent = buildTable(TableKind::Consistent);
     static const auto classic = buildTable(TableKind::Classic);
     return kind == TableKind::Classic ? classic : consistent;
