@@ -24,7 +24,6 @@
 #include "isotrack/orientation.h"
 #include "isotrack/tables.h"
 #include "isotrack/tracking.h"
-#include "isotrack/trilinear.h"
 
 namespace isotrack::cli {
 namespace {
@@ -181,12 +180,7 @@ struct ResidentMemory {
 };
 
 Extraction extract(const ExtractOptions& options, const Source& source, TableKind table) {
-    // The tables are generated once, before any timing.
-    if (table == TableKind::Trilinear) {
-        trilinearTable();
-    } else {
-        continuationTable(table);
-    }
+    prepareTables(table);  // the tables are generated once, before any timing
     std::vector<double> seconds;
     Extraction out;
     ExtractOptions quiet = options;  // only the last run writes --out-dir files

@@ -110,7 +110,7 @@ bool Viewer::runCommand(const ScriptCommand& c) {
     if (name == "iso")
         apply(ui::SetIso{c.numbers[0]});
     else if (name == "table")
-        apply(ui::SetTable{c.text == "classic" ? ui::Table::Classic : ui::Table::Consistent});
+        apply(ui::SetTable{parseTableKind(c.text)});
     else if (name == "method") {
         apply(ui::SetMethod{parseMethod(c.text)});
     } else if (name == "click") {

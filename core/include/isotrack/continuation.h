@@ -37,6 +37,10 @@ struct CaseContinuation {
 // Throws InputError (kTrilinearMcOnly) for TableKind::Trilinear, which has none yet.
 const std::array<CaseContinuation, 256>& continuationTable(TableKind kind);
 
+// Generates the tables extractions with `kind` use (the continuation table, or
+// the trilinear subcases), so that timing them leaves the generation out.
+void prepareTables(TableKind kind);
+
 constexpr const char* kTrilinearMcOnly =
     "the trilinear table extracts with method mc only; track and all need the consistent or classic table";
 

@@ -15,6 +15,7 @@
 
 #include "isotrack/cube.h"
 #include "isotrack/errors.h"
+#include "isotrack/trilinear.h"
 
 namespace isotrack {
 namespace {
@@ -109,6 +110,14 @@ std::array<CaseContinuation, 256> buildTable(TableKind kind) {
 }
 
 }  // namespace
+
+void prepareTables(TableKind kind) {
+    if (kind == TableKind::Trilinear) {
+        trilinearTable();
+    } else {
+        continuationTable(kind);
+    }
+}
 
 const std::array<CaseContinuation, 256>& continuationTable(TableKind kind) {
     if (kind == TableKind::Trilinear) throw InputError(kTrilinearMcOnly);
