@@ -354,8 +354,8 @@ Args:
         names, so code written for scikit-image runs unchanged), or "all" for
         a list of Surface objects, one per connected surface, largest first.
     table: "consistent" (isotrack's, no holes between cells), "classic", or
-        "trilinear" (the trilinear interpolant's topology, MC33; method "mc"
-        only; its subcases may add vertices inside cells).
+        "trilinear" (the trilinear interpolant's topology, MC33; its subcases
+        may add vertices inside cells).
     threads: threads to use; 0 uses every core. With more than one, the
         vertices and triangles come in another order; they are the same.
     origin: the world position of sample (0, 0, 0), in (z, y, x).

@@ -53,7 +53,7 @@ void extractionSection(const PanelState& state, std::vector<Action>& actions) {
     if (ImGui::RadioButton("classic", &table, static_cast<int>(Table::Classic))) actions.push_back(SetTable{Table::Classic});
     ImGui::SameLine();
     if (ImGui::RadioButton("trilinear", &table, static_cast<int>(Table::Trilinear))) actions.push_back(SetTable{Table::Trilinear});
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the trilinear interpolant's topology (MC33); exhaustive only");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the trilinear interpolant's topology (MC33); surfaces are not grown live");
 
     int method = static_cast<int>(extraction.method);
     if (ImGui::RadioButton("exhaustive", &method, static_cast<int>(Method::Exhaustive))) {

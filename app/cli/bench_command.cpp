@@ -53,7 +53,6 @@ int runBench(const BenchOptions& options) {
     const bool tracks = std::find(options.methods.begin(), options.methods.end(), "track") != options.methods.end();
     if (tracks && options.seed.size() != 3) throw InputError("--methods track needs --seed X,Y,Z (world coordinates)");
     const Source source = loadSource(options.source);
-    if (table == TableKind::Trilinear && (options.methods.size() != 1 || options.methods[0] != "mc")) throw InputError(kTrilinearMcOnly);
     prepareTables(table);  // the tables are generated once, before any timing
 
     std::vector<Config> configs;

@@ -34,7 +34,7 @@ ScalarType rawScalarType(const std::string& name) {
 }
 
 void addTableOption(CLI::App& command, std::string& table) {
-    command.add_option("--table", table, "Triangle table: consistent (default), classic or trilinear (mc only)")
+    command.add_option("--table", table, "Triangle table: consistent (default), classic or trilinear")
         ->check(CLI::IsMember({"consistent", "classic", "trilinear"}));
 }
 

@@ -94,9 +94,13 @@ def test_components_and_euler_characteristic_match_lewiner_on_noise(level):
     assert agreeing >= 2
 
 
-def test_the_trilinear_table_refuses_all_and_track():
-    volume = np.random.default_rng(3).random((8, 8, 8)).astype(np.float32)
-    with pytest.raises(ValueError):
-        isotrack.marching_cubes(volume, 0.5, method="all", table="trilinear")
-    with pytest.raises(ValueError):
-        isotrack.track(volume, 0.5, seed=(4, 4, 4), table="trilinear")
+def test_every_surface_and_tracking_with_the_trilinear_table():
+    volume = np.random.default_rng(3).random((12, 13, 14)).astype(np.float32)
+    verts, faces = isotrack.marching_cubes(volume, 0.5, table="trilinear")[:2]
+    surfaces = isotrack.surfaces(volume, 0.5, table="trilinear")
+    assert len(surfaces) == topology(verts, faces)[0]
+    assert sum(s.triangle_count for s in surfaces) == len(faces)
+    largest = surfaces[0]
+    seed = tuple(float(c) for c in largest.vertices[0])
+    tracked = isotrack.track(volume, 0.5, seed=seed, table="trilinear")
+    assert tracked.triangle_count in {s.triangle_count for s in surfaces}

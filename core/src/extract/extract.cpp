@@ -4,7 +4,6 @@
 #include <utility>
 
 #include "cancel.h"
-#include "isotrack/continuation.h"
 #include "isotrack/errors.h"
 #include "isotrack/marching_cubes.h"
 #include "isotrack/tracking.h"
@@ -45,7 +44,6 @@ const char* methodName(Method method) {
 
 std::vector<Surface> extract(const Volume& volume, const ExtractRequest& request) {
     std::vector<Surface> surfaces;
-    if (request.table == TableKind::Trilinear && request.method != Method::Exhaustive) throw InputError(kTrilinearMcOnly);
     if (detail::cancelled(request.cancel)) return surfaces;
     switch (request.method) {
         case Method::Exhaustive:

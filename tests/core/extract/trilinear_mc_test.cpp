@@ -1,13 +1,17 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <array>
 #include <random>
 #include <set>
+#include <tuple>
 
 #include "core/mesh_checks.h"
 #include "isotrack/errors.h"
 #include "isotrack/extract.h"
 #include "isotrack/fields.h"
 #include "isotrack/marching_cubes.h"
+#include "isotrack/tracking.h"
 
 using namespace isotrack;
 using isotrack::testing::topology;
@@ -87,13 +91,81 @@ TEST_CASE("a sphere with the trilinear table is the consistent table's sphere", 
     CHECK(mesh.triangleCount() == marchingCubes(volume, 0.0, TableKind::Consistent).triangleCount());
 }
 
-TEST_CASE("track and all refuse the trilinear table with one line", "[core][trilinear]") {
-    const Volume volume = makeField({"sphere", 16});
-    for (Method method : {Method::Track, Method::All}) {
-        ExtractRequest request;
-        request.method = method;
-        request.table = TableKind::Trilinear;
-        request.seeds = {Vec3d{8, 8, 8}};
-        CHECK_THROWS_AS(extract(volume, request), InputError);
+namespace {
+
+// A vertex as a comparable key: its grid edge, or for an interior vertex its cell and position.
+using VertexKey = std::tuple<std::uint64_t, float, float, float>;
+using TriangleKey = std::array<VertexKey, 3>;
+
+std::multiset<TriangleKey> triangleKeys(const Mesh& mesh, const Dims& dims) {
+    std::multiset<TriangleKey> out;
+    for (std::size_t f = 0; f < mesh.triangleCount(); ++f) {
+        TriangleKey t;
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t v = mesh.indices[3 * f + std::size_t(k)];
+            const GridEdge e = mesh.vertexEdges[v];
+            if (e.axis == kCellInterior) {
+                const float* p = mesh.vertices[v].position;
+                t[std::size_t(k)] = {isotrack::testing::edgeKey(GridEdge{e.x, e.y, e.z, 0}, dims) * 4 + 3, p[0], p[1],
+                                     p[2]};
+            } else {
+                t[std::size_t(k)] = {isotrack::testing::edgeKey(e, dims) / 3 * 4 + std::uint64_t(e.axis), 0.0f, 0.0f,
+                                     0.0f};
+            }
+        }
+        while (t[0] > t[1] || t[0] > t[2]) std::rotate(t.begin(), t.begin() + 1, t.end());
+        out.insert(t);
     }
+    return out;
+}
+
+void requireTrackedAreAllsSurfaces(const Volume& volume, double iso, std::size_t leastSurfaces, bool noisy) {
+    const Mesh exhaustive = marchingCubes(volume, iso, TableKind::Trilinear, 2);
+    const std::vector<Surface> all = extractAllSurfaces(volume, iso, TableKind::Trilinear, 2);
+    REQUIRE(all.size() >= leastSurfaces);
+    if (noisy) CHECK(interiorVertices(exhaustive) > 0);  // noisy volumes exercise the interior vertices
+    std::multiset<TriangleKey> united;
+    std::vector<std::multiset<TriangleKey>> each;
+    for (const Surface& surface : all) {
+        each.push_back(triangleKeys(surface.mesh, volume.dims()));
+        united.insert(each.back().begin(), each.back().end());
+        CHECK(surface.stats.triangles == surface.mesh.triangleCount());
+    }
+    CHECK(united == triangleKeys(exhaustive, volume.dims()));  // every surface together: the exhaustive mesh
+    for (std::size_t k = 1; k < all.size(); ++k) CHECK(all[k - 1].stats.triangles >= all[k].stats.triangles);
+    // From a crossed edge of every surface (its first vertex on an edge), tracking gives that surface exactly.
+    for (std::size_t s = 0; s < all.size(); ++s) {
+        const Mesh& mesh = all[s].mesh;
+        std::size_t v = 0;
+        while (GridEdge(mesh.vertexEdges[v]).axis == kCellInterior) ++v;
+        const Surface tracked = trackSurface(volume, iso, mesh.vertexEdges[v], TableKind::Trilinear);
+        INFO("surface " << s << " of " << all.size());
+        REQUIRE(triangleKeys(tracked.mesh, volume.dims()) == each[s]);
+        CHECK(tracked.stats.triangles == all[s].stats.triangles);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("with the trilinear table, tracking from any surface gives exactly that surface of all",
+          "[core][tracking][trilinear]") {
+    SECTION("random") { requireTrackedAreAllsSurfaces(randomVolume(16, 5), 0.0, 20, true); }
+    SECTION("noise") { requireTrackedAreAllsSurfaces(makeField({"noise", 20}), 0.5, 5, true); }
+    SECTION("gyroid") { requireTrackedAreAllsSurfaces(makeField({"gyroid", 24}), 0.0, 1, false); }
+    SECTION("blobs") { requireTrackedAreAllsSurfaces(makeField({"blobs", 32}), fieldDefaultIso("blobs"), 10, false); }
+}
+
+TEST_CASE("the extraction entry point tracks and splits with the trilinear table", "[core][trilinear]") {
+    const Volume volume = makeField({"blobs", 32});
+    ExtractRequest request;
+    request.table = TableKind::Trilinear;
+    request.iso = fieldDefaultIso("blobs");
+    request.method = Method::All;
+    const std::vector<Surface> all = extract(volume, request);
+    CHECK(all.size() > 10);
+    request.method = Method::Track;
+    request.seeds = {Vec3d{-100, -100, -100}};
+    const std::vector<Surface> tracked = extract(volume, request);
+    REQUIRE(tracked.size() == 1);
+    CHECK(tracked[0].stats.triangles > 0);
 }
