@@ -125,19 +125,22 @@ private:
             }
             return ids[std::size_t(corner)];
         };
-        std::unordered_map<std::uint32_t, int> sides;  // side (a, b) of the piece's triangles: uses
+        std::array<std::uint8_t, kCorners * kCorners> uses{};  // per side (a, b), a < b, of the piece's triangles
+        std::array<std::uint16_t, 3 * kMaxTrilinearTriangles> sides{};
+        int sideCount = 0;
         for (int t = 0; t < subcase.triangleCount; ++t) {
             const auto& tri = subcase.triangles[std::size_t(t)];
             if (piece[std::size_t(tri[0])] != mine) continue;
             for (int k = 0; k < 3; ++k) {
                 mesh_.indices.push_back(id(tri[std::size_t(k)]));
                 const int a = tri[std::size_t(k)], b = tri[std::size_t((k + 1) % 3)];
-                ++sides[std::uint32_t(std::min(a, b) * kCorners + std::max(a, b))];
+                const auto side = static_cast<std::uint16_t>(std::min(a, b) * kCorners + std::max(a, b));
+                if (uses[side]++ == 0) sides[std::size_t(sideCount++)] = side;
             }
         }
-        for (const auto& [side, uses] : sides) {
-            const int a = int(side) / kCorners, b = int(side) % kCorners;
-            if (uses != 1 || b >= kInteriorVertex) continue;
+        for (int s = 0; s < sideCount; ++s) {
+            const int a = sides[std::size_t(s)] / kCorners, b = sides[std::size_t(s)] % kCorners;
+            if (uses[sides[std::size_t(s)]] != 1 || b >= kInteriorVertex) continue;
             for (int f = 0; f < cube::kFaceCount; ++f) {
                 if (!cube::edgeOnFace(a, f) || !cube::edgeOnFace(b, f)) continue;
                 std::array<int, 3> next = c;
