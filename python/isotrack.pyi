@@ -13,7 +13,7 @@ Volume = npt.NDArray[
     Union[np.uint8, np.int8, np.uint16, np.int16, np.uint32, np.int32, np.float32, np.float64]
 ]
 Triple = Tuple[float, float, float]
-Table = Literal["consistent", "classic"]
+Table = Literal["consistent", "classic", "trilinear"]
 
 class Surface:
     """One isosurface: an indexed triangle mesh (numpy views, no copy) and its measures."""

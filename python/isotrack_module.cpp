@@ -141,7 +141,8 @@ double levelOf(const Volume& volume, const std::optional<double>& level) {
 TableKind tableOf(const std::string& name) {
     if (name == "consistent") return TableKind::Consistent;
     if (name == "classic") return TableKind::Classic;
-    throw InputError("table: unknown table \"" + name + "\" (expected consistent or classic)");
+    if (name == "trilinear") return TableKind::Trilinear;
+    throw InputError("table: unknown table \"" + name + "\" (expected consistent, classic or trilinear)");
 }
 
 // threads = 0: every core.
@@ -171,7 +172,8 @@ py::array faceView(const Mesh& mesh, py::handle owner) {
                      mesh.indices.data(), owner);
 }
 
-// Per vertex, the larger of the two samples at the ends of its grid edge.
+// Per vertex, the larger of the two samples at the ends of its grid edge (for
+// a vertex inside a cell, the trilinear table's, the largest of the cell's eight).
 py::array_t<float> edgeMaxima(const Mesh& mesh, const Volume& volume) {
     py::array_t<float> values(py::ssize_t(mesh.vertices.size()));
     float* out = values.mutable_data();
@@ -180,6 +182,12 @@ py::array_t<float> edgeMaxima(const Mesh& mesh, const Volume& volume) {
         for (std::size_t v = 0; v < mesh.vertexEdges.size(); ++v) {
             const GridEdge e = mesh.vertexEdges[v];
             const std::size_t i = volume.index(e.x, e.y, e.z);
+            if (e.axis == kCellInterior) {
+                double largest = double(samples[i]);
+                for (int c = 1; c < 8; ++c) largest = std::max(largest, double(samples[i + (c & 1) * step[0] + (c >> 1 & 1) * step[1] + (c >> 2) * step[2]]));
+                out[v] = float(largest);
+                continue;
+            }
             out[v] = float(std::max(double(samples[i]), double(samples[i + step[e.axis]])));
         }
     });
@@ -345,7 +353,9 @@ Args:
     method: "mc" for one mesh ("lewiner" and "lorensen" are accepted as its
         names, so code written for scikit-image runs unchanged), or "all" for
         a list of Surface objects, one per connected surface, largest first.
-    table: "consistent" (isotrack's, no holes between cells) or "classic".
+    table: "consistent" (isotrack's, no holes between cells), "classic", or
+        "trilinear" (the trilinear interpolant's topology, MC33; its subcases
+        may add vertices inside cells).
     threads: threads to use; 0 uses every core. With more than one, the
         vertices and triangles come in another order; they are the same.
     origin: the world position of sample (0, 0, 0), in (z, y, x).

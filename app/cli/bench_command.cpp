@@ -53,7 +53,7 @@ int runBench(const BenchOptions& options) {
     const bool tracks = std::find(options.methods.begin(), options.methods.end(), "track") != options.methods.end();
     if (tracks && options.seed.size() != 3) throw InputError("--methods track needs --seed X,Y,Z (world coordinates)");
     const Source source = loadSource(options.source);
-    continuationTable(table);  // the tables are generated once, before any timing
+    prepareTables(table);  // the tables are generated once, before any timing
 
     std::vector<Config> configs;
     for (const std::string& method : options.methods) {

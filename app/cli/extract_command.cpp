@@ -180,7 +180,7 @@ struct ResidentMemory {
 };
 
 Extraction extract(const ExtractOptions& options, const Source& source, TableKind table) {
-    continuationTable(table);  // the tables are generated once, before any timing
+    prepareTables(table);  // the tables are generated once, before any timing
     std::vector<double> seconds;
     Extraction out;
     ExtractOptions quiet = options;  // only the last run writes --out-dir files

@@ -34,8 +34,8 @@ ScalarType rawScalarType(const std::string& name) {
 }
 
 void addTableOption(CLI::App& command, std::string& table) {
-    command.add_option("--table", table, "Triangle table: consistent (default) or classic")
-        ->check(CLI::IsMember({"consistent", "classic"}));
+    command.add_option("--table", table, "Triangle table: consistent (default), classic or trilinear")
+        ->check(CLI::IsMember({"consistent", "classic", "trilinear"}));
 }
 
 void addRawOptions(CLI::App& command, RawOptions& raw, CLI::Option* volume) {

@@ -30,7 +30,7 @@ const std::map<std::string, Syntax>& commands() {
         {"load", {"P", 0, {}}},
         {"field", {"W", 0, {}}},
         {"iso", {"N", 0, {}}},
-        {"table", {"K", 0, {"consistent", "classic"}}},
+        {"table", {"K", 0, {"consistent", "classic", "trilinear"}}},
         {"method", {"K", 0, {"mc", "track", "all"}}},
         {"click", {"NNK", 1, {"ctrl"}}},
         {"track", {"NNN", 0, {}}},

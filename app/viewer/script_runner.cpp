@@ -115,7 +115,7 @@ bool ScriptRunner::runCommand(const ScriptCommand& c) {
     if (name == "iso") {
         host_.apply(ui::SetIso{c.numbers[0]});
     } else if (name == "table") {
-        host_.apply(ui::SetTable{c.text == "classic" ? ui::Table::Classic : ui::Table::Consistent});
+        host_.apply(ui::SetTable{parseTableKind(c.text)});
     } else if (name == "method") {
         host_.apply(ui::SetMethod{parseMethod(c.text)});
     } else if (name == "click") {

@@ -38,8 +38,8 @@ ViewerCommandLine addViewerOptions(CLI::App& app) {
     cli::addRawOptions(*group, *commandLine.raw, volume);
     group->add_option("--iso", o.iso,
                       "Isovalue (default: the field's own, or the valley above a file's tallest histogram peak)");
-    group->add_option("--table", o.table, "Triangle table: consistent (default) or classic")
-        ->check(CLI::IsMember({"consistent", "classic"}));
+    group->add_option("--table", o.table, "Triangle table: consistent (default), classic or trilinear (no live growth)")
+        ->check(CLI::IsMember({"consistent", "classic", "trilinear"}));
     group->add_option("--method", o.method, "mc: exhaustive; track: surfaces you click; all: every surface (default)")
         ->check(CLI::IsMember({"mc", "track", "all"}));
     group->add_option("--script", o.script, "Run the commands in FILE, one per line, in the window");

@@ -43,8 +43,13 @@ struct Vertex {
     float normal[3];  // unit, pointing from above the isovalue towards below it
 };
 
+// The axis of a vertex inside cell (x, y, z) rather than on an edge: the
+// trilinear table's interior vertices.
+constexpr int kCellInterior = 3;
+
 // Identifies the grid edge a vertex lies on: the edge from sample (x, y, z)
-// one step along `axis` (0 = x, 1 = y, 2 = z).
+// one step along `axis` (0 = x, 1 = y, 2 = z; kCellInterior for a cell's
+// interior vertex).
 struct GridEdge {
     int x = 0, y = 0, z = 0;
     int axis = 0;

@@ -21,9 +21,12 @@
 
 namespace isotrack {
 
-enum class TableKind : std::uint8_t { Consistent, Classic };
+// Trilinear: the topology of the trilinear interpolant, decided per cube from its
+// samples (isotrack/trilinear.h); it has no TriangleTable and no continuation
+// table, and extracts with marchingCubes only.
+enum class TableKind : std::uint8_t { Consistent, Classic, Trilinear };
 const char* tableKindName(TableKind kind);
-// "consistent" or "classic"; throws InputError otherwise.
+// "consistent", "classic" or "trilinear"; throws InputError otherwise.
 TableKind parseTableKind(const std::string& name);
 
 constexpr int kMaxCaseTriangles = 12;
@@ -60,6 +63,8 @@ private:
     std::array<CaseOrigin, 256> origins_;
 };
 
+// The consistent or classic table (the consistent one for TableKind::Trilinear,
+// whose cubes outside its ambiguous cases it equals up to triangulation).
 const TriangleTable& triangleTable(TableKind kind);
 
 struct BaseCase {

@@ -26,6 +26,7 @@
 #include "support/huge_pages.h"
 #include "support/parallel.h"
 #include "surface_measure.h"
+#include "trilinear_march.h"
 
 namespace isotrack {
 namespace {
@@ -508,6 +509,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
 
 std::vector<Surface> detail::extractAllSurfaces(const Volume& volume, double iso, TableKind table, int threads,
                                                 const std::atomic<bool>* cancel) {
+    if (table == TableKind::Trilinear) return detail::allTrilinear(volume, iso, threads);
     detail::LabelledMesh labelled = detail::marchLabelled(volume, iso, table, threads);
     if (detail::cancelled(cancel)) return {};
     Split split(labelled, volume, table, threads);

@@ -45,6 +45,7 @@
 #include "support/parallel.h"
 #include "surface_labels.h"
 #include "surface_measure.h"
+#include "trilinear_march.h"
 
 namespace isotrack {
 namespace {
@@ -550,6 +551,7 @@ std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int 
 }  // namespace
 
 Mesh marchingCubes(const Volume& volume, double iso, TableKind table, int threads) {
+    if (table == TableKind::Trilinear) return detail::marchTrilinear(volume, iso, threads);
     Mesh mesh;
     march(volume, iso, table, threads, mesh, nullptr, nullptr);
     return mesh;

@@ -3,7 +3,9 @@
 // continuation table), and the joining of surfaces across a seam between chunks.
 #include "surface_labels.h"
 
+#include "isotrack/continuation.h"
 #include "isotrack/cube.h"
+#include "isotrack/errors.h"
 
 namespace isotrack::detail {
 namespace {
@@ -61,6 +63,7 @@ PieceUnions pieceUnionsFor(TableKind kind) {
 }  // namespace
 
 const PieceUnions& pieceUnions(TableKind kind) {
+    if (kind == TableKind::Trilinear) throw InputError(kTrilinearNotLive);
     if (kind == TableKind::Consistent) {
         static const PieceUnions consistent = pieceUnionsFor(kind);
         return consistent;

@@ -19,6 +19,7 @@ namespace isotrack::detail {
 // True when the grid edge lies in one of the volume's boundary planes: a surface
 // through it is cut open by the border.
 inline bool edgeOnVolumeBorder(const GridEdge& e, const Dims& dims) {
+    if (e.axis == kCellInterior) return false;  // the trilinear table's vertex inside a cell
     const int p[3] = {e.x, e.y, e.z};
     for (int k = 0; k < 3; ++k) {
         if (k != e.axis && (p[k] == 0 || p[k] == dims[k] - 1)) return true;

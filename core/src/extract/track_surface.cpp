@@ -10,6 +10,7 @@
 #include "isotrack/continuation.h"
 #include "isotrack/tracking.h"
 #include "track_walker.h"
+#include "trilinear_march.h"
 
 namespace isotrack {
 
@@ -35,6 +36,7 @@ Surface walkWhole(const TrackWorker& worker, TrackState& state, TableKind table,
 }  // namespace
 
 Surface trackSurface(const Volume& volume, double iso, const GridEdge& seed, TableKind table, int threads) {
+    if (table == TableKind::Trilinear) return detail::trackTrilinear(volume, iso, seed);
     const auto start = Clock::now();
     threads = std::min(threads, kMaxTrackThreads);
     const auto worker = makeWorker(volume, iso, table);

@@ -14,6 +14,8 @@
 #include <vector>
 
 #include "isotrack/cube.h"
+#include "isotrack/errors.h"
+#include "isotrack/trilinear.h"
 
 namespace isotrack {
 namespace {
@@ -109,7 +111,16 @@ std::array<CaseContinuation, 256> buildTable(TableKind kind) {
 
 }  // namespace
 
+void prepareTables(TableKind kind) {
+    if (kind == TableKind::Trilinear) {
+        trilinearTable();
+    } else {
+        continuationTable(kind);
+    }
+}
+
 const std::array<CaseContinuation, 256>& continuationTable(TableKind kind) {
+    if (kind == TableKind::Trilinear) throw InputError(kTrilinearNotLive);
     static const auto consistent = buildTable(TableKind::Consistent);
     static const auto classic = buildTable(TableKind::Classic);
     return kind == TableKind::Classic ? classic : consistent;

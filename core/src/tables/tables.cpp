@@ -155,12 +155,20 @@ TriangleTable buildConsistent() {
 
 }  // namespace
 
-const char* tableKindName(TableKind kind) { return kind == TableKind::Classic ? "classic" : "consistent"; }
+const char* tableKindName(TableKind kind) {
+    switch (kind) {
+        case TableKind::Classic: return "classic";
+        case TableKind::Trilinear: return "trilinear";
+        case TableKind::Consistent: break;
+    }
+    return "consistent";
+}
 
 TableKind parseTableKind(const std::string& name) {
     if (name == "consistent") return TableKind::Consistent;
     if (name == "classic") return TableKind::Classic;
-    throw InputError("--table: unknown table \"" + name + "\" (expected consistent or classic)");
+    if (name == "trilinear") return TableKind::Trilinear;
+    throw InputError("--table: unknown table \"" + name + "\" (expected consistent, classic or trilinear)");
 }
 
 int TriangleTable::totalTriangles() const {
