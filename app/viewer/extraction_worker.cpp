@@ -35,6 +35,7 @@ const char* methodPhase(ui::Method method) {
         case ui::Method::Exhaustive: return "marching cubes";
         case ui::Method::Track: return "tracking";
         case ui::Method::All: return "every surface";
+        case ui::Method::Tree: return "contour tree";
     }
     return "extracting";
 }

@@ -80,15 +80,22 @@ struct ArcSeed {
     GridEdge edge;
     bool certain = true;
 };
-// One seed for each arc crossing v (arcsAt's order). Throws InputError when the
-// volume is not the tree's.
+// One seed for each arc crossing v (arcsAt's order), or for each of `arcs`
+// (each must cross v). Throws InputError when the volume is not the tree's.
 std::vector<ArcSeed> arcSeeds(const ContourTree& tree, const Volume& volume, double v);
+std::vector<ArcSeed> arcSeeds(const ContourTree& tree, const Volume& volume, double v,
+                              const std::vector<std::size_t>& arcs);
+
+// The `count` arcs crossing v that sweep the most samples, most first.
+std::vector<std::size_t> largestArcsAt(const ContourTree& tree, double v, std::size_t count);
 
 // The surfaces of the arcs crossing v, tracked from arcSeeds with the consistent
-// table, largest first, each with its arc in `arcs` (same order). Seeds that are
+// table, largest first, each with its arc in `arcs` (same order) and in its
+// stats (with the arc's persistence and the surface's topology, measureTopology). Seeds that are
 // not certain are tracked last and skipped when their edge is on a surface
-// already tracked, so the surfaces are those of extractAllSurfaces at v.
+// already tracked, so the surfaces are those of extractAllSurfaces at v. With
+// `largest` > 0, only the surfaces of largestArcsAt(tree, v, largest).
 std::vector<Surface> trackTreeSurfaces(const ContourTree& tree, const Volume& volume, double v, int threads = 1,
-                                       std::vector<std::size_t>* arcs = nullptr);
+                                       std::vector<std::size_t>* arcs = nullptr, std::size_t largest = 0);
 
 }  // namespace isotrack

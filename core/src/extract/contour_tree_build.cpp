@@ -7,10 +7,10 @@
 // contour tree, whose one edge goes to its neighbour in the join (split) tree.
 //
 // Passes: sortSamples (stable radix sort on the native values, so ties stay in
-// index order), joinTree and splitTree (union-find by the lowest/highest
-// sample of each component, path halving), mergeTrees. Memory: the order, the
-// two trees and their two union-find forests, 4 bytes each per sample, and a
-// degree byte per tree: 22 bytes per sample at the peak. The forests are gone
+// index order), the two sweeps (union-find with randomized linking and path
+// halving, each root keeping its component's newest sample), mergeTrees. Memory:
+// the order, the two trees and their two union-find forests, 4 bytes each per
+// sample, and a degree byte per tree: 22 bytes per sample at the peak. The forests are gone
 // by the merge, which adds the contour tree's edges (4 bytes), a byte per
 // sample peeled and its stack of leaves (at most 4 bytes): 23 at most.
 #include <algorithm>
@@ -70,17 +70,33 @@ std::vector<std::uint32_t> radixSort(const T* values, std::uint32_t n) {
     return order;
 }
 
+// The union-find forest of a sweep, 4 bytes a sample: a sample's entry is its
+// parent, or for a root, kRootBit and its component's newest sample (the one
+// its tree link hangs from), so no array of those is needed. Roots are linked
+// by a hash of their index (randomized linking: as fast as union by rank with
+// path halving, without storing ranks).
+constexpr std::uint32_t kRootBit = 0x80000000u;
+
 std::uint32_t findRoot(std::vector<std::uint32_t>& forest, std::uint32_t s) {
-    while (forest[s] != s) {
-        forest[s] = forest[forest[s]];
-        s = forest[s];
+    for (;;) {
+        const std::uint32_t parent = forest[s];
+        if (parent & kRootBit) return s;
+        const std::uint32_t grandparent = forest[parent];
+        if (grandparent & kRootBit) return parent;
+        forest[s] = grandparent;
+        s = grandparent;
     }
+}
+
+std::uint32_t linkPriority(std::uint32_t s) {
+    s ^= s >> 16, s *= 0x7feb352du, s ^= s >> 15, s *= 0x846ca68bu, s ^= s >> 16;
     return s;
 }
 
-// One sweep: the join tree when Up (from the top, 6 neighbours, link[r] the
-// sample below the component rooted at r), the split tree otherwise (from the
-// bottom, 18 neighbours). degree[s] counts the components s meets.
+// One sweep: the join tree when Up (from the top, 6 neighbours), the split tree
+// otherwise (from the bottom, 18 neighbours). When sample s meets a component,
+// the component's newest sample gets link = s; degree[s] counts the components
+// s meets.
 template <bool Up, class T>
 void sweep(const T* values, const Dims& dims, const std::vector<std::uint32_t>& order, std::vector<std::uint32_t>& link,
            std::vector<std::uint8_t>& degree) {
@@ -92,14 +108,19 @@ void sweep(const T* values, const Dims& dims, const std::vector<std::uint32_t>& 
     degree.assign(n, 0);
     for (std::uint32_t k = 0; k < n; ++k) {
         const std::uint32_t s = order[Up ? n - 1 - k : k];
-        forest[s] = s;
+        forest[s] = s | kRootBit;
+        std::uint32_t root = s;
         neighbours.forEach<Up ? 6 : 18>(s, [&](std::uint32_t m) {
             if (Up ? !cmp.below(s, m) : !cmp.below(m, s)) return;  // not swept yet
             const std::uint32_t r = findRoot(forest, m);
-            if (r == s) return;
-            link[r] = s;
-            forest[r] = s;
+            if (r == root) return;
+            link[forest[r] & ~kRootBit] = s;
             ++degree[s];
+            const bool keep = linkPriority(root) > linkPriority(r);
+            const std::uint32_t winner = keep ? root : r;
+            forest[keep ? r : root] = winner;
+            forest[winner] = s | kRootBit;
+            root = winner;
         });
     }
 }
@@ -108,7 +129,7 @@ void sweep(const T* values, const Dims& dims, const std::vector<std::uint32_t>& 
 std::uint32_t liveLink(std::vector<std::uint32_t>& link, const std::vector<std::uint8_t>& removed, std::uint32_t s) {
     std::uint32_t t = link[s];
     while (t != kNoSample && removed[t]) t = link[t];
-    link[s] = t;
+    for (std::uint32_t u = s; u != t;) u = std::exchange(link[u], t);  // the whole path points past them now
     return t;
 }
 

@@ -208,17 +208,34 @@ std::uint64_t edgeKey(const GridEdge& e, const Dims& dims) {
 }  // namespace
 
 std::vector<ArcSeed> arcSeeds(const ContourTree& tree, const Volume& volume, double v) {
+    return arcSeeds(tree, volume, v, tree.arcsAt(v));
+}
+
+std::vector<ArcSeed> arcSeeds(const ContourTree& tree, const Volume& volume, double v,
+                              const std::vector<std::size_t>& arcs) {
     if (volume.dims() != tree.dims) throw InputError("the contour tree is not this volume's (its dimensions differ)");
     std::vector<ArcSeed> seeds;
     visitSamples(volume, [&](const auto* values) {
-        for (const std::size_t a : tree.arcsAt(v)) seeds.push_back(seedOf(tree, a, values, v));
+        for (const std::size_t a : arcs) seeds.push_back(seedOf(tree, a, values, v));
     });
     return seeds;
 }
 
+std::vector<std::size_t> largestArcsAt(const ContourTree& tree, double v, std::size_t count) {
+    std::vector<std::size_t> arcs = tree.arcsAt(v);
+    auto larger = [&](std::size_t a, std::size_t b) { return tree.arcs[a].size() > tree.arcs[b].size(); };
+    if (arcs.size() > count) {
+        std::nth_element(arcs.begin(), arcs.begin() + std::ptrdiff_t(count), arcs.end(), larger);
+        arcs.resize(count);
+    }
+    std::stable_sort(arcs.begin(), arcs.end(), larger);
+    return arcs;
+}
+
 std::vector<Surface> trackTreeSurfaces(const ContourTree& tree, const Volume& volume, double v, int threads,
-                                       std::vector<std::size_t>* arcs) {
-    std::vector<ArcSeed> seeds = arcSeeds(tree, volume, v);
+                                       std::vector<std::size_t>* arcs, std::size_t largest) {
+    std::vector<ArcSeed> seeds =
+        largest > 0 ? arcSeeds(tree, volume, v, largestArcsAt(tree, v, largest)) : arcSeeds(tree, volume, v);
     std::stable_partition(seeds.begin(), seeds.end(), [](const ArcSeed& s) { return s.certain; });
     std::vector<std::pair<Surface, std::size_t>> tracked;
     std::unordered_set<std::uint64_t> covered;  // the edges of the surfaces tracked, once a seed is not certain
@@ -244,6 +261,9 @@ std::vector<Surface> trackTreeSurfaces(const ContourTree& tree, const Volume& vo
     std::vector<Surface> out;
     if (arcs) arcs->clear();
     for (auto& [surface, arc] : tracked) {
+        surface.stats.arc = arc;
+        surface.stats.persistence = tree.persistence(arc);
+        measureTopology(surface);
         out.push_back(std::move(surface));
         if (arcs) arcs->push_back(arc);
     }

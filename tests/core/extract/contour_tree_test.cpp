@@ -156,7 +156,7 @@ TEST_CASE("contour tree: simplification prunes small branches only", "[core][con
     CHECK(bySize.arcsAt(v).size() < before);
 }
 
-TEST_CASE("contour tree of the CT: arcs are the surfaces; 240 at 400.5", "[core][contour-tree][ct]") {
+TEST_CASE("contour tree of the CT: arcs are the surfaces, 240 at 400.5", "[core][contour-tree][ct]") {
     const std::string path = std::string(ISOTRACK_SOURCE_DIR) + "/assets/ct/cranium.nrrd";
     if (!std::ifstream(path)) {
         WARN("skipped: " << path << " is missing (scripts/get_ct.sh makes it)");
@@ -170,4 +170,26 @@ TEST_CASE("contour tree of the CT: arcs are the surfaces; 240 at 400.5", "[core]
         CHECK(tree.arcsAt(v).size() == extractAllSurfaces(volume, v, TableKind::Consistent, 2).size());
     }
     requireTreeSurfacesEqualAll(volume, tree, 400.5);
+}
+
+TEST_CASE("topology per surface: Euler characteristic, border loops, genus", "[core][contour-tree]") {
+    const Volume sphere = makeField({"sphere", 32});
+    const std::vector<Surface> spheres =
+        trackTreeSurfaces(computeContourTree(sphere), sphere, fieldDefaultIso("sphere"));
+    REQUIRE(spheres.size() == 1);
+    CHECK(*spheres[0].stats.euler == 2);
+    CHECK(*spheres[0].stats.borderLoops == 0);
+    CHECK(*spheres[0].stats.genus == 0);
+    CHECK(spheres[0].stats.persistence.has_value());
+    const Volume torus = makeField({"torus", 32});
+    const std::vector<Surface> tori = trackTreeSurfaces(computeContourTree(torus), torus, fieldDefaultIso("torus"));
+    REQUIRE(tori.size() == 1);
+    CHECK(*tori[0].stats.euler == 0);
+    CHECK(*tori[0].stats.genus == 1);
+    // A gyroid cut by the border: its loops are counted, the topology adds up.
+    const Volume gyroid = makeField({"gyroid", 24});
+    Surface open = extractAllSurfaces(gyroid, 0.0).front();
+    measureTopology(open);
+    CHECK(*open.stats.borderLoops > 0);
+    CHECK(*open.stats.euler == 2 - 2 * *open.stats.genus - *open.stats.borderLoops);
 }
