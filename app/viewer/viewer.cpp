@@ -10,7 +10,6 @@
 #include "isotrack/errors.h"
 #include "isotrack/io.h"
 #include "render/window_frame.h"
-#include "viewer/script_run.h"
 
 namespace isotrack::viewer {
 namespace {
@@ -26,13 +25,6 @@ int extractionThreads(int requested) {
     if (requested > 0) return requested;
     const int cores = static_cast<int>(std::thread::hardware_concurrency());
     return std::max(1, cores - 1);  // leave a core to draw with
-}
-
-// The script loads its own volume first: skip building the default one.
-bool scriptLoadsFirst(const std::optional<Script>& script) {
-    if (!script || script->commands.empty()) return false;
-    const std::string& first = script->commands.front().name;
-    return first == "load" || first == "field";
 }
 
 }  // namespace
@@ -53,10 +45,9 @@ Viewer::Viewer(const ViewerOptions& options, std::optional<Script> script)
     if (options.iso) extraction_.setIso(*options.iso);
     if (options.deterministic) cellsPerFrame_ = kDeterministicCellsPerFrame;
     if (!options.profile.empty()) profiler_.startRecording(options.profile);
-    const bool loadNow = !scriptLoadsFirst(script);
-    if (script) script_ = std::make_unique<ScriptRun>(std::move(*script));
+    if (script) script_ = std::make_unique<ScriptRunner>(std::move(*script), static_cast<ScriptHost&>(*this));
     layout();
-    if (loadNow) submit();
+    if (!script_ || !script_->loadsFirst()) submit();  // a script that loads first skips the default volume
 }
 
 Viewer::~Viewer() = default;
@@ -156,7 +147,7 @@ void Viewer::frame() {
         if (input.click) click(input.click->x * pixelScale_, input.click->y * pixelScale_, input.trackClick);
         if (script_) {
             Profiler::Scope scope(profiler_, Stage::Script);
-            advanceScript();
+            script_->advance();
         }
         takeResult();
         grow();
@@ -169,7 +160,7 @@ void Viewer::frame() {
         }
     } catch (const std::exception& e) {
         if (script_) {
-            failScript(e.what());
+            script_->fail(e.what());
         } else {
             status(e.what());
         }
@@ -191,7 +182,7 @@ void Viewer::frame() {
             writeScreenshot(path);
         } catch (const std::exception& e) {
             if (script_)
-                failScript(e.what());
+                script_->fail(e.what());
             else
                 status(e.what());
         }

@@ -29,6 +29,7 @@
 #include "viewer/profiler.h"
 #include "viewer/scene.h"
 #include "viewer/script.h"
+#include "viewer/script_runner.h"
 #include "viewer/view_cache.h"
 #include "viewer/window.h"
 
@@ -53,11 +54,11 @@ struct ViewerOptions {
 inline constexpr const char* kDefaultField = "blobs:128";
 inline constexpr std::size_t kPicksKept = 16;  // the last clicks, for the summary
 
-class Viewer {
+class Viewer : private ScriptHost {
 public:
     // Opens the window (throws DisplayError without a display).
     Viewer(const ViewerOptions& options, std::optional<Script> script);
-    ~Viewer();
+    ~Viewer() override;
     Viewer(const Viewer&) = delete;
     Viewer& operator=(const Viewer&) = delete;
 
@@ -68,8 +69,6 @@ public:
     nlohmann::json summary() const;
 
 private:
-    struct ScriptRun;
-
     void frame();
     bool idle() const;
 
@@ -91,10 +90,10 @@ private:
                         std::vector<bool>& claimed, std::vector<std::unique_ptr<SurfaceStructure>>& next);
 
     // viewer_actions.cpp
-    void apply(const ui::Action& action);
+    void apply(const ui::Action& action) override;
     void applyKey(KeyCommand key);
-    void frameCamera(bool selectionOnly);
-    void exportSurface(std::uint32_t id, const std::string& path);
+    void frameCamera(bool selectionOnly) override;
+    void exportSurface(std::uint32_t id, const std::string& path) override;
 
     // viewer_report.cpp: panel state, summary, screenshots
     ui::PanelState panelState() const;
@@ -104,12 +103,24 @@ private:
     nlohmann::json memoryJson() const;
     void writeScreenshot(const std::string& path) const;
 
-    // viewer_script.cpp
-    void advanceScript();
-    bool runCommand(const ScriptCommand& command);  // false: wait before the next one
-    bool waitDone();
-    void failScript(const std::string& message);
-    SurfaceStructure& surfaceAt(const ScriptCommand& command, std::size_t argument);
+    // viewer_script.cpp: the ScriptHost a --script session drives (the rest
+    // of it is apply, frameCamera and exportSurface above)
+    bool extracting() const override;
+    bool growing() const override;
+    bool sourceShown() const override;
+    bool hasVolume() const override;
+    bool screenshotPending() const override;
+    std::size_t surfaceCount() const override;
+    std::uint32_t surfaceId(std::size_t index) const override;
+    void load(const VolumeSource& source) override;
+    void clickView(float fx, float fy, bool track) override;
+    void trackPoint(const Vec3d& point) override;
+    void requestScreenshot(const std::string& path) override;
+    void startProfile(const std::string& path) override;
+    void checkpoint(const std::string& name, int line) override;
+    void setCamera(const std::string& spec) override;
+    void quit() override;
+    void fail(const std::string& message) override;
 
     void layout();
     void drawView();
@@ -161,7 +172,7 @@ private:
     ViewRect view_;
     float pixelScale_ = 1.0f;
 
-    std::unique_ptr<ScriptRun> script_;
+    std::unique_ptr<ScriptRunner> script_;
     std::optional<std::string> screenshotPath_;
     int screenshots_ = 0;  // taken with F12
     nlohmann::json checkpoints_ = nlohmann::json::array();

@@ -18,7 +18,6 @@
 #include <map>
 
 #include "render/palette.h"
-#include "viewer/script_run.h"
 #include "viewer/viewer.h"
 
 namespace isotrack::viewer {
@@ -55,10 +54,7 @@ void Viewer::applyResult(ExtractionResult result) {
     profiler_.addWorkerSpan(requestName(result.method), result.started, result.finished);
     if (!result.error.empty()) {
         extractionError_ = result.error;
-        if (script_) {
-            const ScriptCommand* command = script_->jobCommand ? script_->jobCommand : script_->current;
-            throw command ? script_->script.error(*command, result.error) : ScriptError(result.error);
-        }
+        if (script_) throw script_->extractionError(result.error);
         status(result.error);
         return;
     }

@@ -4,7 +4,6 @@
 
 #include "isotrack/errors.h"
 #include "render/palette.h"
-#include "viewer/script_run.h"
 #include "viewer/viewer.h"
 
 namespace isotrack::viewer {
@@ -25,7 +24,7 @@ std::vector<SeedRequest> Viewer::trackedSeeds() const {
 
 void Viewer::submit() {
     extraction_.submit(trackedSeeds());
-    if (script_) script_->jobCommand = script_->current;
+    if (script_) script_->noteSubmitted();
 }
 
 void Viewer::grow() {
