@@ -90,7 +90,7 @@ std::vector<ArcSeed> arcSeeds(const ContourTree& tree, const Volume& volume, dou
 std::vector<std::size_t> largestArcsAt(const ContourTree& tree, double v, std::size_t count);
 
 // The surfaces of the arcs crossing v, tracked from arcSeeds with the consistent
-// table, largest first, each with its arc in `arcs` (same order) and in its
+// table, on `threads` threads (a surface each), largest first, each with its arc in `arcs` (same order) and in its
 // stats (with the arc's persistence and the surface's topology, measureTopology). Seeds that are
 // not certain are tracked last and skipped when their edge is on a surface
 // already tracked, so the surfaces are those of extractAllSurfaces at v. With

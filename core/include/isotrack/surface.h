@@ -42,7 +42,8 @@ struct Surface {
 SurfaceStats measureSurface(const Mesh& mesh, const Volume& volume, bool closedUnlessOnBorder = false);
 
 // Fills stats' euler, borderLoops and genus from the mesh's connectivity (a
-// sort of its edges: O(F log F)). A sphere: 2, 0, 0; a torus: 0, 0, 1.
+// sort of its edges, O(F log F), unless stats.closed says every edge has two
+// triangles). A sphere: 2, 0, 0; a torus: 0, 0, 1.
 void measureTopology(Surface& surface);
 
 }  // namespace isotrack

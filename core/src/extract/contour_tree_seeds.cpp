@@ -24,6 +24,7 @@
 #include "contour_tree_build.h"
 #include "isotrack/errors.h"
 #include "isotrack/tracking.h"
+#include "support/parallel.h"
 
 namespace isotrack {
 namespace {
@@ -236,24 +237,26 @@ std::vector<Surface> trackTreeSurfaces(const ContourTree& tree, const Volume& vo
                                        std::vector<std::size_t>* arcs, std::size_t largest) {
     std::vector<ArcSeed> seeds =
         largest > 0 ? arcSeeds(tree, volume, v, largestArcsAt(tree, v, largest)) : arcSeeds(tree, volume, v);
-    std::stable_partition(seeds.begin(), seeds.end(), [](const ArcSeed& s) { return s.certain; });
-    std::vector<std::pair<Surface, std::size_t>> tracked;
+    const auto firstUncertain =
+        std::stable_partition(seeds.begin(), seeds.end(), [](const ArcSeed& s) { return s.certain; });
+    const auto certain = std::size_t(firstUncertain - seeds.begin());
+    // Certain seeds are distinct surfaces: tracked at once, one surface per thread.
+    std::vector<std::pair<Surface, std::size_t>> tracked(certain);
+    detail::parallelFor(int(certain), std::max(1, threads), [&](int i) {
+        const ArcSeed& seed = seeds[std::size_t(i)];
+        tracked[std::size_t(i)] = {trackSurface(volume, v, seed.edge, TableKind::Consistent, 1), seed.arc};
+    });
     std::unordered_set<std::uint64_t> covered;  // the edges of the surfaces tracked, once a seed is not certain
-    bool coveredFilled = false;
-    for (const ArcSeed& seed : seeds) {
-        if (!seed.certain) {
-            if (!coveredFilled) {
-                for (const auto& [surface, arc] : tracked) {
-                    for (const GridEdge e : surface.mesh.vertexEdges) covered.insert(edgeKey(e, tree.dims));
-                }
-                coveredFilled = true;
-            }
-            if (!edgeIsCrossed(volume, v, seed.edge) || covered.count(edgeKey(seed.edge, tree.dims))) continue;
-        }
-        Surface surface = trackSurface(volume, v, seed.edge, TableKind::Consistent, threads);
-        if (coveredFilled) {
+    if (certain < seeds.size()) {
+        for (const auto& [surface, arc] : tracked) {
             for (const GridEdge e : surface.mesh.vertexEdges) covered.insert(edgeKey(e, tree.dims));
         }
+    }
+    for (std::size_t k = certain; k < seeds.size(); ++k) {
+        const ArcSeed& seed = seeds[k];
+        if (!edgeIsCrossed(volume, v, seed.edge) || covered.count(edgeKey(seed.edge, tree.dims))) continue;
+        Surface surface = trackSurface(volume, v, seed.edge, TableKind::Consistent, 1);
+        for (const GridEdge e : surface.mesh.vertexEdges) covered.insert(edgeKey(e, tree.dims));
         tracked.emplace_back(std::move(surface), seed.arc);
     }
     std::stable_sort(tracked.begin(), tracked.end(),

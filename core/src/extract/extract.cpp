@@ -38,7 +38,7 @@ std::vector<Surface> treeSurfaces(const Volume& volume, const ExtractRequest& re
         tree = &own;
     }
     if (detail::cancelled(request.cancel)) return {};
-    return trackTreeSurfaces(*tree, volume, request.iso, 1, nullptr, request.largestArcs);
+    return trackTreeSurfaces(*tree, volume, request.iso, request.threads, nullptr, request.largestArcs);
 }
 
 }  // namespace

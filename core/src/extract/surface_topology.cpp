@@ -19,6 +19,13 @@ std::uint32_t loopRoot(std::vector<std::uint32_t>& forest, std::uint32_t v) {
 
 void measureTopology(Surface& surface) {
     const Mesh& mesh = surface.mesh;
+    if (surface.stats.closed) {  // every edge has two triangles: E = 3F / 2, no border
+        const long euler = long(mesh.vertices.size()) - long(mesh.triangleCount()) / 2;
+        surface.stats.euler = euler;
+        surface.stats.borderLoops = 0;
+        surface.stats.genus = (2 - euler) / 2;
+        return;
+    }
     std::vector<std::uint64_t> edges;
     edges.reserve(mesh.indices.size());
     for (std::size_t f = 0; f < mesh.triangleCount(); ++f) {

@@ -181,6 +181,11 @@ TEST_CASE("topology per surface: Euler characteristic, border loops, genus", "[c
     CHECK(*spheres[0].stats.borderLoops == 0);
     CHECK(*spheres[0].stats.genus == 0);
     CHECK(spheres[0].stats.persistence.has_value());
+    Surface counted = spheres[0];  // the same figures from the edges themselves
+    counted.stats.closed = false;
+    measureTopology(counted);
+    CHECK(*counted.stats.euler == 2);
+    CHECK(*counted.stats.borderLoops == 0);
     const Volume torus = makeField({"torus", 32});
     const std::vector<Surface> tori = trackTreeSurfaces(computeContourTree(torus), torus, fieldDefaultIso("torus"));
     REQUIRE(tori.size() == 1);
