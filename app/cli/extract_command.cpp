@@ -6,6 +6,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 #include <memory>
 #include <optional>
@@ -46,6 +47,7 @@ struct ExtractOptions {
     bool json = false;
     double minPersistence = 0.0;  // --method tree: prune the tree's leaf branches below it
     std::size_t largestArcs = 0;  // --method tree: only the surfaces of the arcs sweeping the most samples
+    std::vector<std::string> arcIso;  // --method tree: I:V, surface I at its own isovalue V
 };
 
 struct Extraction {
@@ -78,6 +80,37 @@ nlohmann::json surfaceJson(const SurfaceStats& s) {
     if (s.arc) j["arc"] = *s.arc;
     if (s.persistence) j["persistence"] = std::isfinite(*s.persistence) ? nlohmann::json(*s.persistence) : nlohmann::json(nullptr);
     return j;
+}
+
+// --arc-iso I:V: surface I (its rank at --iso) at its own isovalue V, followed
+// along the contour tree (followArc); the other surfaces stay as they are.
+void applyArcIsovalues(const ExtractOptions& options, const Volume& volume, const ContourTree& tree,
+                       std::vector<Surface>& surfaces, std::vector<double>& isovalues) {
+    for (const std::string& item : options.arcIso) {
+        const std::size_t colon = item.find(':');
+        std::size_t index = 0;
+        double iso = 0.0;
+        try {
+            if (colon == std::string::npos) throw std::invalid_argument(item);
+            index = std::stoul(item.substr(0, colon));
+            iso = std::stod(item.substr(colon + 1));
+        } catch (const std::exception&) {
+            throw InputError("--arc-iso " + item + ": expected SURFACE:ISOVALUE, e.g. 0:350");
+        }
+        if (index >= surfaces.size() || !surfaces[index].stats.arc) {
+            throw InputError("--arc-iso " + item + ": there is no surface " + std::to_string(index) + " (" +
+                             std::to_string(surfaces.size()) + " at --iso)");
+        }
+        const std::size_t arc = followArc(tree, *surfaces[index].stats.arc, iso);
+        if (arc == tree.arcs.size()) throw InputError("--arc-iso " + item + ": the surface vanishes before that isovalue");
+        const ArcSeed seed = arcSeeds(tree, volume, iso, {arc}).front();
+        Surface surface = trackSurface(volume, iso, seed.edge, TableKind::Consistent, 1);
+        surface.stats.arc = arc;
+        surface.stats.persistence = tree.persistence(arc);
+        measureTopology(surface);
+        surfaces[index] = std::move(surface);
+        isovalues[index] = iso;
+    }
 }
 
 // Concatenates surfaces into one mesh, labelling each face with its surface's rank.
@@ -142,6 +175,8 @@ Extraction extractOnce(const ExtractOptions& options, const Source& source, Tabl
     TimedExtraction run = extractTimed(source.volume, request);
     Extraction out;
     out.seconds.push_back(run.seconds);
+    std::vector<double> isovalues(run.surfaces.size(), source.iso);
+    if (tree && !options.arcIso.empty()) applyArcIsovalues(options, source.volume, *tree, run.surfaces, isovalues);
     // Meshes leave the grid for the --frame here, after the timing.
     const FrameTransform transform = gridToFrame(source.volume, frame);
     for (Surface& surface : run.surfaces) {
@@ -168,6 +203,7 @@ Extraction extractOnce(const ExtractOptions& options, const Source& source, Tabl
     for (std::size_t i = 0; i < surfaces.size(); ++i) {
         cells += surfaces[i].stats.cellsVisited;
         out.surfaces.push_back(surfaceJson(surfaces[i].stats));
+        if (!options.arcIso.empty()) out.surfaces.back()["isovalue"] = isovalues[i];
         // One labelled mesh is only needed for --out; the counts come from the surfaces.
         if (!options.out.empty()) appendSurface(surfaces[i], static_cast<std::int32_t>(i), out);
         out.triangles += surfaces[i].mesh.triangleCount();
@@ -235,8 +271,8 @@ int runExtract(const ExtractOptions& options) {
     const bool perSurface = options.method == "all" || options.method == "tree";
     if (!options.outDir.empty() && !perSurface)
         throw InputError("--out-dir writes one file per surface and needs --method all or tree, not " + options.method);
-    if ((options.minPersistence > 0 || options.largestArcs > 0) && options.method != "tree")
-        throw InputError("--min-persistence and --largest-arcs need --method tree, not " + options.method);
+    if ((options.minPersistence > 0 || options.largestArcs > 0 || !options.arcIso.empty()) && options.method != "tree")
+        throw InputError("--min-persistence, --largest-arcs and --arc-iso need --method tree, not " + options.method);
     const Source source = loadSource(options.source);
     const Dims& dims = source.volume.dims();
 
@@ -308,6 +344,10 @@ RunCommand addExtractCommand(CLI::App& app) {
         ->check(CLI::NonNegativeNumber);
     command->add_option("--largest-arcs", options->largestArcs,
                         "With --method tree: track only the N arcs crossing --iso that sweep the most samples");
+    command->add_option("--arc-iso", options->arcIso,
+                        "With --method tree: I:V,... surface I (its rank at --iso, 0 the largest) at its own "
+                        "isovalue V, followed along the contour tree; the others stay")
+        ->delimiter(',');
     command->add_option("--seed", options->seed,
                         "Point X,Y,Z in --frame: tracking starts at the crossed edge nearest to it")
         ->delimiter(',')

@@ -33,6 +33,23 @@ assert len(t['arcs_at']) == $(field all.json components)
 "$isotrack" tree --field blobs:32 --min-persistence 0.05 --out tree.svg > /dev/null
 grep -q "<svg" tree.svg || fail "tree.svg is not an SVG"
 
+# Flexible isosurfaces: surface 0 at its own isovalue, the others untouched.
+"$isotrack" extract --field blobs:48 --method tree --json > base.json
+"$isotrack" extract --field blobs:48 --method tree --arc-iso 0:0.3 --json > flex.json
+python3 -c "
+import json; a=json.load(open('base.json'))['surfaces']; b=json.load(open('flex.json'))['surfaces']
+assert len(a) == len(b)
+assert b[0]['isovalue'] == 0.3 and b[1]['isovalue'] == a[1].get('isovalue', b[1]['isovalue'])
+assert b[0]['triangles'] != a[0]['triangles']
+assert [s['triangles'] for s in a[1:]] == [s['triangles'] for s in b[1:]]
+assert [s['bounds'] for s in a[1:]] == [s['bounds'] for s in b[1:]]
+" || fail "--arc-iso changed other surfaces or not its own"
+set +e
+"$isotrack" extract --field blobs:48 --method tree --arc-iso 0:100 2> err.txt
+status=$?
+set -e
+[[ $status == 1 ]] && grep -q "^isotrack: --arc-iso 0:100: the surface vanishes" err.txt || fail "--arc-iso past the maximum: $status"
+
 set +e
 "$isotrack" extract --field blobs:32 --method tree --table classic 2> err.txt
 status=$?

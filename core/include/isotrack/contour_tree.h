@@ -59,6 +59,15 @@ struct ContourTree {
     std::size_t byteSize() const;
 };
 
+// Flexible isosurfaces: the arc that the surface on `arc` is on at isovalue
+// `to`, following the tree. The arc itself when it crosses `to`; else the walk
+// leaves it at its end toward `to` and goes on through the nodes: where the
+// surface meets others (a node with one arc on the far side) it becomes the
+// merged surface; where it splits (several arcs on the far side) it keeps the
+// branch that sweeps the most samples. Pruned arcs are not taken. Returns
+// arcs.size() when the surface vanishes on the way (an extremum is passed).
+std::size_t followArc(const ContourTree& tree, std::size_t arc, double to);
+
 // Builds the contour tree on up to two threads (the join and split trees at
 // once). Throws InputError for an empty volume or one of 2^31 samples or more.
 ContourTree computeContourTree(const Volume& volume, int threads = 2);

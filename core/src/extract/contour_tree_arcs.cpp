@@ -171,6 +171,27 @@ std::vector<std::size_t> ContourTree::arcsAt(double v) const {
     return out;
 }
 
+std::size_t followArc(const ContourTree& tree, std::size_t arc, double to) {
+    auto crosses = [&](std::size_t a) {
+        const double lo = tree.nodes[tree.arcs[a].lower].value, hi = tree.nodes[tree.arcs[a].upper].value;
+        return (std::isnan(lo) || lo < to) && hi >= to;
+    };
+    if (crosses(arc)) return arc;
+    const bool up = tree.nodes[tree.arcs[arc].upper].value < to;
+    std::size_t node = up ? tree.arcs[arc].upper : tree.arcs[arc].lower;
+    for (;;) {
+        std::size_t next = tree.arcs.size();
+        for (std::uint32_t k = tree.nodeArcBegin[node]; k < tree.nodeArcBegin[node + 1]; ++k) {
+            const std::size_t a = tree.nodeArcs[k];
+            const ContourTree::Arc& candidate = tree.arcs[a];
+            if (candidate.pruned || (up ? candidate.lower : candidate.upper) != node) continue;
+            if (next == tree.arcs.size() || candidate.size() > tree.arcs[next].size()) next = a;
+        }
+        if (next == tree.arcs.size() || crosses(next)) return next;
+        node = up ? tree.arcs[next].upper : tree.arcs[next].lower;
+    }
+}
+
 double ContourTree::persistence(std::size_t arc) const {
     const double lo = nodes[arcs[arc].lower].value, hi = nodes[arcs[arc].upper].value;
     if (std::isnan(lo) || std::isnan(hi)) return std::numeric_limits<double>::infinity();

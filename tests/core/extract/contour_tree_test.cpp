@@ -198,3 +198,33 @@ TEST_CASE("topology per surface: Euler characteristic, border loops, genus", "[c
     CHECK(*open.stats.borderLoops > 0);
     CHECK(*open.stats.euler == 2 - 2 * *open.stats.genus - *open.stats.borderLoops);
 }
+
+TEST_CASE("flexible isosurfaces: a surface followed along its arc to its own isovalue", "[core][contour-tree]") {
+    const Volume volume = makeField({"noise", 24});
+    const ContourTree tree = computeContourTree(volume, 2);
+    const double from = 0.6, to = 0.45;
+    std::vector<std::size_t> arcs;
+    const std::vector<Surface> surfaces = trackTreeSurfaces(tree, volume, from, 1, &arcs);
+    const std::vector<std::size_t> alive = tree.arcsAt(to);
+    const auto all = surfaceSets(extractAllSurfaces(volume, to), volume.dims());
+    std::size_t vanished = 0, followed = 0;
+    for (const std::size_t arc : arcs) {
+        CHECK(followArc(tree, arc, from) == arc);
+        const std::size_t next = followArc(tree, arc, to);
+        if (next == tree.arcs.size()) {
+            ++vanished;
+            continue;
+        }
+        REQUIRE(std::find(alive.begin(), alive.end(), next) != alive.end());
+        if (followed++ % 16 != 0) continue;  // a sample of them tracked: one of all's surfaces at `to`
+        const ArcSeed seed = arcSeeds(tree, volume, to, {next}).front();
+        const Surface surface = trackSurface(volume, to, seed.edge);
+        const auto set = testing::triangleSet(surface.mesh, volume.dims());
+        const std::vector<std::array<std::uint64_t, 3>> sorted(set.begin(), set.end());
+        CHECK(std::binary_search(all.begin(), all.end(), sorted));
+    }
+    CHECK(followed + vanished == arcs.size());
+    CHECK(followed > 0);
+    // Above the volume's maximum every surface vanishes.
+    for (const std::size_t arc : arcs) CHECK(followArc(tree, arc, volume.range()[1] + 1) == tree.arcs.size());
+}
