@@ -44,6 +44,7 @@ int main(int argc, char** argv) {
     add(isotrack::cli::addRenderCommand);
     add(isotrack::cli::addInfoCommand);
     add(isotrack::cli::addBenchCommand);
+    add(isotrack::cli::addTreeCommand);
     app.require_subcommand(0, 1);
     // No subcommand: the interactive viewer, with its own top-level options.
     const isotrack::viewer::ViewerCommandLine viewer = isotrack::viewer::addViewerOptions(app);

@@ -70,6 +70,13 @@ void extractionSection(const PanelState& state, std::vector<Action>& actions) {
         actions.push_back(SetMethod{Method::Track});
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("click in the view: the surface there grows from the click");
+    ImGui::SameLine();
+    if (ImGui::RadioButton("contour tree", &method, static_cast<int>(Method::Tree))) {
+        actions.push_back(SetMethod{Method::Tree});
+    }
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("every surface from its contour-tree arc's seed: no scan once the tree is built");
+    }
     progress(extraction, state.stats.deterministic);
     if (!extraction.error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));

@@ -70,6 +70,10 @@ struct SurfaceRow {
     std::size_t triangles = 0, vertices = 0, cellsVisited = 0;
     std::size_t cpuBytes = 0, gpuBytes = 0;
     double area = 0.0;
+    // Topology (Euler characteristic, border loops, genus) and the contour-tree
+    // arc's persistence, when the extraction measured them (method tree).
+    std::optional<long> euler, borderLoops, genus;
+    std::optional<double> persistence;
     bool tracked = false;  // has a seed, kept across isovalues
     // A tracked surface may have no mesh at this isovalue: gone, or merged into another tracked surface.
     enum Presence { Shown, Gone, Merged } presence = Shown;

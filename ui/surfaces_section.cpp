@@ -82,6 +82,11 @@ void selectedDetails(const SurfaceRow& row, PanelScratch& scratch, std::vector<A
                 row.area);
     ImGui::Text("%s vertices, %s cells visited", formatCount(row.vertices).c_str(),
                 formatCount(row.cellsVisited).c_str());
+    if (row.euler && row.genus && row.borderLoops) {
+        ImGui::Text("Euler characteristic %ld, genus %ld, %ld border loop%s", *row.euler, *row.genus, *row.borderLoops,
+                    *row.borderLoops == 1 ? "" : "s");
+    }
+    if (row.persistence) ImGui::Text("contour-tree arc persistence %.5g", *row.persistence);
     std::array<float, 3> offset = row.offset;
     if (ImGui::DragFloat3("offset", offset.data(), 0.25f)) actions.push_back(SetOffset{row.id, offset});
     if (ImGui::Button("Isolate")) actions.push_back(Isolate{row.id});

@@ -16,5 +16,6 @@ RunCommand addFieldCommand(CLI::App& app);
 RunCommand addRenderCommand(CLI::App& app);
 RunCommand addInfoCommand(CLI::App& app);
 RunCommand addBenchCommand(CLI::App& app);
+RunCommand addTreeCommand(CLI::App& app);
 
 }  // namespace isotrack::cli

@@ -2,9 +2,11 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 #include <memory>
 #include <optional>
@@ -18,6 +20,7 @@
 #include "cli/source.h"
 #include "cli/timed_extraction.h"
 #include "isotrack/continuation.h"
+#include "isotrack/contour_tree.h"
 #include "isotrack/extract.h"
 #include "isotrack/io.h"
 #include "isotrack/marching_cubes.h"
@@ -42,6 +45,9 @@ struct ExtractOptions {
     std::string outFormat;  // of the --out-dir files: ply, obj or stl
     std::string frame = "lps";  // of the written meshes, the seed and the bounds
     bool json = false;
+    double minPersistence = 0.0;  // --method tree: prune the tree's leaf branches below it
+    std::size_t largestArcs = 0;  // --method tree: only the surfaces of the arcs sweeping the most samples
+    std::vector<std::string> arcIso;  // --method tree: I:V, surface I at its own isovalue V
 };
 
 struct Extraction {
@@ -54,6 +60,7 @@ struct Extraction {
     std::size_t triangles = 0, vertices = 0, meshBytes = 0;  // of every surface together
     std::vector<double> seconds;  // one per run
     std::size_t residentBefore = 0, residentPeak = 0;  // bytes, around the first run
+    double treeSeconds = 0.0;  // --method tree: building (and simplifying) the contour tree, not timed with the extraction
 };
 
 nlohmann::json surfaceJson(const SurfaceStats& s) {
@@ -67,7 +74,43 @@ nlohmann::json surfaceJson(const SurfaceStats& s) {
                      {"closed", s.closed},
                      {"touches_border", s.touchesBorder}};
     j["enclosed_volume"] = s.enclosedVolume ? nlohmann::json(*s.enclosedVolume) : nlohmann::json(nullptr);
+    if (s.euler) j["euler"] = *s.euler;
+    if (s.borderLoops) j["border_loops"] = *s.borderLoops;
+    if (s.genus) j["genus"] = *s.genus;
+    if (s.arc) j["arc"] = *s.arc;
+    if (s.persistence) j["persistence"] = std::isfinite(*s.persistence) ? nlohmann::json(*s.persistence) : nlohmann::json(nullptr);
     return j;
+}
+
+// --arc-iso I:V: surface I (its rank at --iso) at its own isovalue V, followed
+// along the contour tree (followArc); the other surfaces stay as they are.
+void applyArcIsovalues(const ExtractOptions& options, const Volume& volume, const ContourTree& tree,
+                       std::vector<Surface>& surfaces, std::vector<double>& isovalues) {
+    for (const std::string& item : options.arcIso) {
+        const std::size_t colon = item.find(':');
+        std::size_t index = 0;
+        double iso = 0.0;
+        try {
+            if (colon == std::string::npos) throw std::invalid_argument(item);
+            index = std::stoul(item.substr(0, colon));
+            iso = std::stod(item.substr(colon + 1));
+        } catch (const std::exception&) {
+            throw InputError("--arc-iso " + item + ": expected SURFACE:ISOVALUE, e.g. 0:350");
+        }
+        if (index >= surfaces.size() || !surfaces[index].stats.arc) {
+            throw InputError("--arc-iso " + item + ": there is no surface " + std::to_string(index) + " (" +
+                             std::to_string(surfaces.size()) + " at --iso)");
+        }
+        const std::size_t arc = followArc(tree, *surfaces[index].stats.arc, iso);
+        if (arc == tree.arcs.size()) throw InputError("--arc-iso " + item + ": the surface vanishes before that isovalue");
+        const ArcSeed seed = arcSeeds(tree, volume, iso, {arc}).front();
+        Surface surface = trackSurface(volume, iso, seed.edge, TableKind::Consistent, 1);
+        surface.stats.arc = arc;
+        surface.stats.persistence = tree.persistence(arc);
+        measureTopology(surface);
+        surfaces[index] = std::move(surface);
+        isovalues[index] = iso;
+    }
 }
 
 // Concatenates surfaces into one mesh, labelling each face with its surface's rank.
@@ -120,17 +163,26 @@ void countMesh(Extraction& out) {
     out.meshBytes = out.mesh.byteSize();
 }
 
-// One run of the chosen method; only extraction is timed.
-Extraction extractOnce(const ExtractOptions& options, const Source& source, TableKind table) {
+// One run of the chosen method; only extraction is timed (for tree, the
+// tree is built once, before, and timed on its own).
+Extraction extractOnce(const ExtractOptions& options, const Source& source, TableKind table, const ContourTree* tree) {
     const Method method = parseMethod(options.method);
     const WorldFrame frame = parseWorldFrame(options.frame);
     const std::vector<double> seed = seedInGrid(source.volume, options.seed, frame);
-    TimedExtraction run = extractTimed(source.volume, extractRequest(method, source.iso, table, options.threads, seed));
+    ExtractRequest request = extractRequest(method, source.iso, table, options.threads, seed);
+    request.tree = tree;
+    request.largestArcs = options.largestArcs;
+    TimedExtraction run = extractTimed(source.volume, request);
     Extraction out;
     out.seconds.push_back(run.seconds);
+    std::vector<double> isovalues(run.surfaces.size(), source.iso);
+    if (tree && !options.arcIso.empty()) applyArcIsovalues(options, source.volume, *tree, run.surfaces, isovalues);
     // Meshes leave the grid for the --frame here, after the timing.
     const FrameTransform transform = gridToFrame(source.volume, frame);
-    for (Surface& surface : run.surfaces) surfaceToFrame(surface, transform);
+    for (Surface& surface : run.surfaces) {
+        surfaceToFrame(surface, transform);
+        if (options.json && method != Method::Exhaustive && !surface.stats.euler) measureTopology(surface);
+    }
     if (method == Method::Exhaustive) {
         out.mesh = std::move(run.surfaces.front().mesh);
         countMesh(out);
@@ -151,6 +203,7 @@ Extraction extractOnce(const ExtractOptions& options, const Source& source, Tabl
     for (std::size_t i = 0; i < surfaces.size(); ++i) {
         cells += surfaces[i].stats.cellsVisited;
         out.surfaces.push_back(surfaceJson(surfaces[i].stats));
+        if (!options.arcIso.empty()) out.surfaces.back()["isovalue"] = isovalues[i];
         // One labelled mesh is only needed for --out; the counts come from the surfaces.
         if (!options.out.empty()) appendSurface(surfaces[i], static_cast<std::int32_t>(i), out);
         out.triangles += surfaces[i].mesh.triangleCount();
@@ -186,17 +239,27 @@ Extraction extract(const ExtractOptions& options, const Source& source, TableKin
     ExtractOptions quiet = options;  // only the last run writes --out-dir files
     quiet.outDir.clear();
     std::size_t before = 0, peak = 0;
+    std::optional<ContourTree> tree;
+    double treeSeconds = 0.0;
+    if (parseMethod(options.method) == Method::Tree) {
+        if (table != TableKind::Consistent) throw InputError("--method tree works with the consistent table only");
+        treeSeconds = secondsOf([&] {
+            tree = computeContourTree(source.volume, options.threads);
+            if (options.minPersistence > 0) simplifyContourTree(*tree, options.minPersistence);
+        });
+    }
     for (int run = 0; run < options.repeat; ++run) {
         if (run == 0) {
             ResidentMemory::resetPeak();
             before = ResidentMemory::current();
         }
         out = Extraction{};  // the previous run's mesh is freed first, as a re-extraction would
-        out = extractOnce(run + 1 == options.repeat ? options : quiet, source, table);
+        out = extractOnce(run + 1 == options.repeat ? options : quiet, source, table, tree ? &*tree : nullptr);
         if (run == 0) peak = ResidentMemory::peak();
         seconds.push_back(out.seconds.front());
     }
     out.seconds = seconds;
+    out.treeSeconds = treeSeconds;
     out.residentBefore = before;
     out.residentPeak = peak;
     return out;
@@ -205,14 +268,17 @@ Extraction extract(const ExtractOptions& options, const Source& source, TableKin
 int runExtract(const ExtractOptions& options) {
     const TableKind table = parseTableKind(options.table);
     if (!options.out.empty()) meshFormatOf(options.out);  // an unknown extension fails before the work
-    if (!options.outDir.empty() && options.method != "all")
-        throw InputError("--out-dir writes one file per surface and needs --method all, not " + options.method);
+    const bool perSurface = options.method == "all" || options.method == "tree";
+    if (!options.outDir.empty() && !perSurface)
+        throw InputError("--out-dir writes one file per surface and needs --method all or tree, not " + options.method);
+    if ((options.minPersistence > 0 || options.largestArcs > 0 || !options.arcIso.empty()) && options.method != "tree")
+        throw InputError("--min-persistence, --largest-arcs and --arc-iso need --method tree, not " + options.method);
     const Source source = loadSource(options.source);
     const Dims& dims = source.volume.dims();
 
     const Extraction result = extract(options, source, table);
     const double seconds = median(result.seconds);
-    if (!options.out.empty()) writeMesh(options.out, result.mesh, options.method == "all" ? &result.faceComponent : nullptr);
+    if (!options.out.empty()) writeMesh(options.out, result.mesh, perSurface ? &result.faceComponent : nullptr);
 
     const std::size_t cellsTotal =
         std::size_t(std::max(dims[0] - 1, 0)) * std::size_t(std::max(dims[1] - 1, 0)) * std::size_t(std::max(dims[2] - 1, 0));
@@ -244,6 +310,7 @@ int runExtract(const ExtractOptions& options) {
             {"peak_above_start_bytes", result.residentPeak > result.residentBefore ? result.residentPeak - result.residentBefore : 0},
             {"volume_bytes", source.volume.byteSize()},
         };
+        if (options.method == "tree") report["tree_seconds"] = result.treeSeconds;
         if (!options.out.empty()) report["out"] = options.out;
         if (!options.outDir.empty()) report["out_files"] = result.surfaceFiles;
         if (options.method != "mc") report["surfaces"] = result.surfaces;
@@ -253,6 +320,7 @@ int runExtract(const ExtractOptions& options) {
         if (result.components) std::printf(" in %zu surface%s", *result.components, *result.components == 1 ? "" : "s");
         std::printf(" at iso %g (%s table, method %s) in %.3f ms%s%s\n", source.iso, tableKindName(table),
                     options.method.c_str(), seconds * 1e3, options.out.empty() ? "" : " -> ", options.out.c_str());
+        if (options.method == "tree") std::printf("contour tree built in %.3f ms\n", result.treeSeconds * 1e3);
         if (!options.outDir.empty())
             std::printf("%zu surface file%s in %s\n", result.surfaceFiles.size(), result.surfaceFiles.size() == 1 ? "" : "s",
                         options.outDir.c_str());
@@ -268,8 +336,18 @@ RunCommand addExtractCommand(CLI::App& app) {
     addSourceOptions(*command, options->source);
     addTableOption(*command, options->table);
     command->add_option("--method", options->method,
-                        "mc: every cell, one mesh; track: the one surface through --seed; all: every surface separately")
-        ->check(CLI::IsMember({"mc", "track", "all"}));
+                        "mc: every cell, one mesh; track: the one surface through --seed; all: every surface separately; "
+                        "tree: every surface, each from its contour-tree arc's seed")
+        ->check(CLI::IsMember({"mc", "track", "all", "tree"}));
+    command->add_option("--min-persistence", options->minPersistence,
+                        "With --method tree: leave out the surfaces of leaf branches less persistent than P")
+        ->check(CLI::NonNegativeNumber);
+    command->add_option("--largest-arcs", options->largestArcs,
+                        "With --method tree: track only the N arcs crossing --iso that sweep the most samples");
+    command->add_option("--arc-iso", options->arcIso,
+                        "With --method tree: I:V,... surface I (its rank at --iso, 0 the largest) at its own "
+                        "isovalue V, followed along the contour tree; the others stay")
+        ->delimiter(',');
     command->add_option("--seed", options->seed,
                         "Point X,Y,Z in --frame: tracking starts at the crossed edge nearest to it")
         ->delimiter(',')

@@ -35,6 +35,7 @@ const char* methodPhase(ui::Method method) {
         case ui::Method::Exhaustive: return "marching cubes";
         case ui::Method::Track: return "tracking";
         case ui::Method::All: return "every surface";
+        case ui::Method::Tree: return "surfaces from the contour tree";
     }
     return "extracting";
 }
@@ -199,6 +200,7 @@ std::shared_ptr<const LoadedVolume> ExtractionWorker::volumeFor(const VolumeSour
     setPhase(source.kind == VolumeSource::Kind::Field ? "building " + source.text : "loading " + displayName(source), 0.0);
     const auto start = Clock::now();
     cache_.reset();  // the old volume goes before the new one is read
+    tree_.reset();
     cache_ = loadForView(source);
     loadMs = msSince(start);
     return cache_;
@@ -218,6 +220,10 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
         exhaustive.threads = threads_;
         exhaustive.measure = true;
         exhaustive.cancel = &cancel_;
+        if (request.method == Method::Tree && request.table == TableKind::Consistent) {
+            exhaustive.tree = &treeOf(volume);
+            setPhase(methodPhase(request.method), known != lastMs_.end() ? known->second : 0.0);
+        }
         result.surfaces = isotrack::extract(volume, exhaustive);
     }
     if (cancelling()) throw Cancelled{};
@@ -226,6 +232,17 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
     for (const Surface& surface : result.surfaces) result.footprints.push_back(footprintOf(surface.mesh));
     result.extractMs = msSince(start);
     lastMs_[key] = result.extractMs;
+}
+
+// The volume's contour tree, built once (the phase says so while it is built).
+const ContourTree& ExtractionWorker::treeOf(const Volume& volume) {
+    if (!tree_) {
+        setPhase("building the contour tree", lastMs_.count("tree") ? lastMs_["tree"] : 0.0);
+        const auto start = Clock::now();
+        tree_ = std::make_unique<const ContourTree>(computeContourTree(volume, threads_));
+        lastMs_["tree"] = msSince(start);
+    }
+    return *tree_;
 }
 
 // Each seed is followed to the new isovalue; in `all` it names the surface that
@@ -242,11 +259,12 @@ void ExtractionWorker::trackSeeds(const ExtractionRequest& request, const Volume
         seed.seed = followSeed(volume, result.iso, wanted.point);
         if (seed.seed) {
             const GridEdge edge = seed.seed->edge;
-            const std::size_t from = request.method == ui::Method::All ? 0 : exhaustive;
+            const bool every = request.method == ui::Method::All || request.method == ui::Method::Tree;
+            const std::size_t from = every ? 0 : exhaustive;
             for (std::size_t i = from; i < result.surfaces.size() && seed.index < 0; ++i) {
                 if (meshHasEdge(result.surfaces[i].mesh, edge)) seed.index = static_cast<int>(i);
             }
-            if (seed.index < 0 && request.method != ui::Method::All) {
+            if (seed.index < 0 && !every) {
                 result.surfaces.push_back(trackSurface(volume, result.iso, edge, request.table, threads_));
                 seed.index = static_cast<int>(result.surfaces.size() - 1);
             }

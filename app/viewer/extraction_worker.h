@@ -28,6 +28,7 @@
 #include <thread>
 #include <vector>
 
+#include "isotrack/contour_tree.h"
 #include "isotrack/follow.h"
 #include "isotrack/io.h"
 #include "isotrack/source.h"
@@ -130,6 +131,7 @@ private:
     ExtractionResult work(const ExtractionRequest& request);
     std::shared_ptr<const LoadedVolume> volumeFor(const VolumeSource& source, double& loadMs);
     void extract(const ExtractionRequest& request, const LoadedVolume& volume, ExtractionResult& result);
+    const ContourTree& treeOf(const Volume& volume);
     void trackSeeds(const ExtractionRequest& request, const Volume& volume, ExtractionResult& result);
     bool cancelling() const { return cancel_.load(std::memory_order_relaxed); }
     void setPhase(const std::string& what, double expectedMs);
@@ -152,6 +154,7 @@ private:
 
     // Worker-thread only.
     std::shared_ptr<const LoadedVolume> cache_;
+    std::unique_ptr<const ContourTree> tree_;  // cache_'s contour tree, built on the first tree request
     std::map<std::string, double> lastMs_;  // per source and method: how long extraction took last time
 
     std::thread thread_;

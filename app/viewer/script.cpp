@@ -31,7 +31,7 @@ const std::map<std::string, Syntax>& commands() {
         {"field", {"W", 0, {}}},
         {"iso", {"N", 0, {}}},
         {"table", {"K", 0, {"consistent", "classic", "trilinear"}}},
-        {"method", {"K", 0, {"mc", "track", "all"}}},
+        {"method", {"K", 0, {"mc", "track", "all", "tree"}}},
         {"click", {"NNK", 1, {"ctrl"}}},
         {"track", {"NNN", 0, {}}},
         {"frames", {"I", 0, {}}},

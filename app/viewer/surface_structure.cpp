@@ -151,6 +151,10 @@ void SurfaceStructure::buildUI(ui::PanelState& state) const {
     row.cpuBytes = cpuBytes();
     row.gpuBytes = gpuBytes();
     row.area = stats_.area;
+    row.euler = stats_.euler;
+    row.borderLoops = stats_.borderLoops;
+    row.genus = stats_.genus;
+    row.persistence = stats_.persistence;
     row.tracked = tracked();
     if (presence_ == Presence::Gone) {
         row.presence = ui::SurfaceRow::Gone;

@@ -28,6 +28,7 @@ const char* requestName(ui::Method method) {
         case ui::Method::Exhaustive: return "marching cubes";
         case ui::Method::Track: return "re-track seeds";
         case ui::Method::All: return "every surface";
+        case ui::Method::Tree: return "contour tree";
     }
     return "extract";
 }

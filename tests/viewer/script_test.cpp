@@ -73,7 +73,7 @@ TEST_CASE("script errors name the file and the line", "[viewer][script]") {
     CHECK(errorOf("frames 1.5") == "s.isotrack:1: frames: \"1.5\" is not a whole number >= 0");
     CHECK(errorOf("select -1") == "s.isotrack:1: select: \"-1\" is not a whole number >= 0");
     CHECK(errorOf("select 1.7") == "s.isotrack:1: select: \"1.7\" is not a whole number >= 0");
-    CHECK(errorOf("method fast") == "s.isotrack:1: method: \"fast\" is not one of all|mc|track");
+    CHECK(errorOf("method fast") == "s.isotrack:1: method: \"fast\" is not one of all|mc|track|tree");
     CHECK(errorOf("click 0.5") == "s.isotrack:1: click: expected 2 to 3 arguments, got 1");
     CHECK(errorOf("click 0.5 1.2") == "s.isotrack:1: click: 1.2 is outside 0..1 (a fraction of the 3D view)");
     CHECK(errorOf("quit now") == "s.isotrack:1: quit: expected 0 arguments, got 1");

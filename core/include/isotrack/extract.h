@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "isotrack/contour_tree.h"
 #include "isotrack/surface.h"
 #include "isotrack/tables.h"
 #include "isotrack/volume.h"
@@ -13,12 +14,14 @@ namespace isotrack {
 
 // Exhaustive ("mc"): every cell, one mesh (marchingCubes). Track ("track"): the
 // surface through each seed (trackSurface). All ("all"): every surface
-// separately (extractAllSurfaces).
-enum class Method { Exhaustive, Track, All };
+// separately (extractAllSurfaces). Tree ("tree"): every surface, each tracked
+// from its contour-tree arc's seed (trackTreeSurfaces), with no scan of the
+// volume once the tree is built; consistent table only.
+enum class Method { Exhaustive, Track, All, Tree };
 
-// "mc", "track" or "all"; throws InputError naming the text otherwise.
+// "mc", "track", "all" or "tree"; throws InputError naming the text otherwise.
 Method parseMethod(const std::string& name);
-// "mc", "track" or "all".
+// "mc", "track", "all" or "tree".
 const char* methodName(Method method);
 
 struct ExtractRequest {
@@ -31,6 +34,12 @@ struct ExtractRequest {
     // Exhaustive: also measure the mesh (area, bounds, closed, enclosed volume).
     // Off, its stats hold only its counts and bytes: measuring costs a pass over it.
     bool measure = false;
+    // Tree: the volume's contour tree (computed here when null), and the
+    // persistence below which its leaf branches are pruned (0: none).
+    const ContourTree* tree = nullptr;
+    double minPersistence = 0.0;
+    // Tree: only the surfaces of this many arcs, those sweeping the most samples (0: all).
+    std::size_t largestArcs = 0;
     // When another thread sets it, the extraction stops at its next check and
     // returns what it finished; the caller that set it discards the result.
     // Checked between passes and between seeds only, never in their loops.
@@ -39,8 +48,9 @@ struct ExtractRequest {
 
 // Exhaustive: one surface, the whole mesh. Track: one surface per seed, in the
 // seeds' order (two seeds on one surface give it twice). All: every surface,
-// largest first. Throws InputError for a track without seeds, and as
-// nearestCrossedEdge and trackSurface do.
+// largest first. Tree: the surfaces of the arcs crossing iso, largest first.
+// Throws InputError for a track without seeds, a tree with a table other than
+// the consistent one, and as nearestCrossedEdge and trackSurface do.
 std::vector<Surface> extract(const Volume& volume, const ExtractRequest& request);
 
 }  // namespace isotrack

@@ -20,6 +20,14 @@ struct SurfaceStats {
     bool closed = false;                   // every mesh edge has exactly two triangles
     std::optional<double> enclosedVolume;  // for closed surfaces
     bool touchesBorder = false;            // reaches a boundary cell of the volume
+    // Set by measureTopology: V - E + F, the loops of edges with one triangle,
+    // and the genus of the orientable surface that has them (2 - 2g - b = euler).
+    std::optional<long> euler;
+    std::optional<long> borderLoops;
+    std::optional<long> genus;
+    // The tree method: the surface's contour-tree arc and that arc's persistence.
+    std::optional<std::size_t> arc;
+    std::optional<double> persistence;
 };
 
 struct Surface {
@@ -32,5 +40,10 @@ struct Surface {
 // the mesh counts as closed exactly when no vertex lies on the volume's border,
 // instead of checking every edge.
 SurfaceStats measureSurface(const Mesh& mesh, const Volume& volume, bool closedUnlessOnBorder = false);
+
+// Fills stats' euler, borderLoops and genus from the mesh's connectivity (a
+// sort of its edges, O(F log F), unless stats.closed says every edge has two
+// triangles). A sphere: 2, 0, 0; a torus: 0, 0, 1.
+void measureTopology(Surface& surface);
 
 }  // namespace isotrack

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "cancel.h"
+#include "isotrack/contour_tree.h"
 #include "isotrack/errors.h"
 #include "isotrack/marching_cubes.h"
 #include "isotrack/tracking.h"
@@ -24,13 +25,30 @@ Surface exhaustiveSurface(const Volume& volume, const ExtractRequest& request) {
     return surface;
 }
 
+std::vector<Surface> treeSurfaces(const Volume& volume, const ExtractRequest& request) {
+    if (request.table != TableKind::Consistent) {
+        throw InputError(std::string("method tree works with the consistent table only, not the ") +
+                         tableKindName(request.table) + " table");
+    }
+    ContourTree own;
+    const ContourTree* tree = request.tree;
+    if (!tree || request.minPersistence > 0) {
+        own = tree ? *tree : computeContourTree(volume, request.threads);
+        if (request.minPersistence > 0) simplifyContourTree(own, request.minPersistence);
+        tree = &own;
+    }
+    if (detail::cancelled(request.cancel)) return {};
+    return trackTreeSurfaces(*tree, volume, request.iso, request.threads, nullptr, request.largestArcs);
+}
+
 }  // namespace
 
 Method parseMethod(const std::string& name) {
     if (name == "mc") return Method::Exhaustive;
     if (name == "track") return Method::Track;
     if (name == "all") return Method::All;
-    throw InputError("unknown method \"" + name + "\" (mc, track or all)");
+    if (name == "tree") return Method::Tree;
+    throw InputError("unknown method \"" + name + "\" (mc, track, all or tree)");
 }
 
 const char* methodName(Method method) {
@@ -38,6 +56,7 @@ const char* methodName(Method method) {
         case Method::Exhaustive: return "mc";
         case Method::Track: return "track";
         case Method::All: return "all";
+        case Method::Tree: return "tree";
     }
     return "mc";
 }
@@ -59,6 +78,9 @@ std::vector<Surface> extract(const Volume& volume, const ExtractRequest& request
                 const GridEdge edge = nearestCrossedEdge(volume, request.iso, point);
                 surfaces.push_back(trackSurface(volume, request.iso, edge, request.table, request.threads));
             }
+            break;
+        case Method::Tree:
+            surfaces = treeSurfaces(volume, request);
             break;
     }
     return surfaces;

@@ -2,17 +2,20 @@
 
 #include <atomic>
 
+#include "core/mesh_checks.h"
 #include "isotrack/errors.h"
 #include "isotrack/extract.h"
 #include "isotrack/fields.h"
 #include "isotrack/marching_cubes.h"
 #include "isotrack/tracking.h"
-#include "core/mesh_checks.h"
 
 using namespace isotrack;
 
 TEST_CASE("methods by name", "[core][extract]") {
-    for (const Method method : {Method::Exhaustive, Method::Track, Method::All}) CHECK(parseMethod(methodName(method)) == method);
+    for (const Method method : {Method::Exhaustive, Method::Track, Method::All, Method::Tree}) {
+        CHECK(parseMethod(methodName(method)) == method);
+    }
+    CHECK(std::string(methodName(Method::Tree)) == "tree");
     CHECK(std::string(methodName(Method::Exhaustive)) == "mc");
     CHECK(std::string(methodName(Method::Track)) == "track");
     CHECK(std::string(methodName(Method::All)) == "all");
@@ -43,6 +46,18 @@ TEST_CASE("extract gives what each method's own function gives", "[core][extract
     const std::vector<Surface> all = extract(volume, request);
     CHECK(all.size() == 3);
     CHECK(all.size() == extractAllSurfaces(volume, iso, TableKind::Consistent, 2).size());
+
+    request.method = Method::Tree;
+    const std::vector<Surface> fromTree = extract(volume, request);
+    REQUIRE(fromTree.size() == all.size());
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        CHECK(testing::triangleSet(fromTree[i].mesh, volume.dims()) ==
+              testing::triangleSet(all[i].mesh, volume.dims()));
+        CHECK(fromTree[i].stats.arc.has_value());
+    }
+    request.table = TableKind::Classic;
+    CHECK_THROWS_WITH(extract(volume, request), Catch::Contains("consistent table only"));
+    request.table = TableKind::Consistent;
 
     request.method = Method::Track;
     request.threads = 1;

@@ -1,0 +1,217 @@
+// The contour tree, built as Carr, Snoeyink & Axen (2003) build it: sort the
+// samples, sweep them from the top to grow the join tree (how the components
+// of the superlevel sets merge, 6-connected) and from the bottom to grow the
+// split tree (sublevel sets, 18-connected), on two threads at once, then merge
+// the two by peeling leaves: a sample that is a leaf above in the join tree
+// and has one arc down in the split tree (or the mirror) is a leaf of the
+// contour tree, whose one edge goes to its neighbour in the join (split) tree.
+//
+// Passes: sortSamples (stable radix sort on the native values, so ties stay in
+// index order), the two sweeps (union-find with randomized linking and path
+// halving, each root keeping its component's newest sample), mergeTrees. Memory:
+// the order, the two trees and their two union-find forests, 4 bytes each per
+// sample, and a degree byte per tree: 22 bytes per sample at the peak. The forests are gone
+// by the merge, which adds the contour tree's edges (4 bytes), a byte per
+// sample peeled and its stack of leaves (at most 4 bytes): 23 at most.
+#include <algorithm>
+#include <cstring>
+#include <numeric>
+#include <thread>
+#include <utility>
+
+#include "contour_tree_build.h"
+#include "isotrack/errors.h"
+
+namespace isotrack::detail {
+namespace {
+
+// An unsigned key in the order of the values; NaN is 0, below every number.
+template <class T>
+auto sortKey(T v) {
+    if constexpr (std::is_floating_point_v<T>) {
+        using U = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
+        if (std::isnan(v)) return U(0);
+        if (v == T(0)) v = T(0);  // -0 sorts with +0
+        U bits;
+        std::memcpy(&bits, &v, sizeof bits);
+        const U sign = U(1) << (8 * sizeof(U) - 1);
+        return (bits & sign) ? U(~bits) : U(bits | sign);
+    } else {
+        using U = std::make_unsigned_t<T>;
+        return U(U(v) ^ (std::is_signed_v<T> ? U(U(1) << (8 * sizeof(T) - 1)) : U(0)));
+    }
+}
+
+template <class T>
+std::vector<std::uint32_t> radixSort(const T* values, std::uint32_t n) {
+    constexpr int kKeyBits = 8 * sizeof(T), kDigitBits = kKeyBits < 16 ? kKeyBits : 16;
+    constexpr std::size_t kBuckets = std::size_t(1) << kDigitBits;
+    std::vector<std::uint32_t> order(n), spare(kKeyBits > kDigitBits ? n : 0);
+    std::vector<std::uint32_t> count(kBuckets);
+    for (int shift = 0; shift < kKeyBits; shift += kDigitBits) {
+        const bool first = shift == 0;
+        const std::uint32_t* in = first ? nullptr : order.data();
+        std::uint32_t* out = first ? order.data() : spare.data();
+        auto digit = [&](std::uint32_t s) { return std::size_t(sortKey(values[s]) >> shift) & (kBuckets - 1); };
+        std::fill(count.begin(), count.end(), 0u);
+        for (std::uint32_t i = 0; i < n; ++i) ++count[digit(first ? i : in[i])];
+        if (count[digit(first ? 0 : in[0])] == n) {  // one digit for all: nothing moves
+            if (first) std::iota(order.begin(), order.end(), 0u);
+            continue;
+        }
+        std::uint32_t sum = 0;
+        for (std::uint32_t& c : count) sum += std::exchange(c, sum);
+        for (std::uint32_t i = 0; i < n; ++i) {
+            const std::uint32_t s = first ? i : in[i];
+            out[count[digit(s)]++] = s;
+        }
+        if (!first) order.swap(spare);
+    }
+    return order;
+}
+
+// The union-find forest of a sweep, 4 bytes a sample: a sample's entry is its
+// parent, or for a root, kRootBit and its component's newest sample (the one
+// its tree link hangs from), so no array of those is needed. Roots are linked
+// by a hash of their index (randomized linking: as fast as union by rank with
+// path halving, without storing ranks).
+constexpr std::uint32_t kRootBit = 0x80000000u;
+
+std::uint32_t findRoot(std::vector<std::uint32_t>& forest, std::uint32_t s) {
+    for (;;) {
+        const std::uint32_t parent = forest[s];
+        if (parent & kRootBit) return s;
+        const std::uint32_t grandparent = forest[parent];
+        if (grandparent & kRootBit) return parent;
+        forest[s] = grandparent;
+        s = grandparent;
+    }
+}
+
+std::uint32_t linkPriority(std::uint32_t s) {
+    s ^= s >> 16, s *= 0x7feb352du, s ^= s >> 15, s *= 0x846ca68bu, s ^= s >> 16;
+    return s;
+}
+
+// One sweep: the join tree when Up (from the top, 6 neighbours), the split tree
+// otherwise (from the bottom, 18 neighbours). When sample s meets a component,
+// the component's newest sample gets link = s; degree[s] counts the components
+// s meets.
+template <bool Up, class T>
+void sweep(const T* values, const Dims& dims, const std::vector<std::uint32_t>& order, std::vector<std::uint32_t>& link,
+           std::vector<std::uint8_t>& degree) {
+    const auto n = std::uint32_t(order.size());
+    const SampleOrder<T> cmp{values};
+    const Neighbours neighbours{dims};
+    std::vector<std::uint32_t> forest(n);
+    link.assign(n, kNoSample);
+    degree.assign(n, 0);
+    for (std::uint32_t k = 0; k < n; ++k) {
+        const std::uint32_t s = order[Up ? n - 1 - k : k];
+        forest[s] = s | kRootBit;
+        std::uint32_t root = s;
+        neighbours.forEach<Up ? 6 : 18>(s, [&](std::uint32_t m) {
+            if (Up ? !cmp.below(s, m) : !cmp.below(m, s)) return;  // not swept yet
+            const std::uint32_t r = findRoot(forest, m);
+            if (r == root) return;
+            link[forest[r] & ~kRootBit] = s;
+            ++degree[s];
+            const bool keep = linkPriority(root) > linkPriority(r);
+            const std::uint32_t winner = keep ? root : r;
+            forest[keep ? r : root] = winner;
+            forest[winner] = s | kRootBit;
+            root = winner;
+        });
+    }
+}
+
+// Follows link past removed samples, shortening the path on the way.
+std::uint32_t liveLink(std::vector<std::uint32_t>& link, const std::vector<std::uint8_t>& removed, std::uint32_t s) {
+    std::uint32_t t = link[s];
+    while (t != kNoSample && removed[t]) t = link[t];
+    for (std::uint32_t u = s; u != t;) u = std::exchange(link[u], t);  // the whole path points past them now
+    return t;
+}
+
+// Carr's merge: up counts the join tree's arcs above each sample, down the split
+// tree's below; `gone` marks the samples peeled off.
+std::vector<std::uint32_t> mergeTrees(std::vector<std::uint32_t>& joinDown, std::vector<std::uint8_t>& up,
+                                      std::vector<std::uint32_t>& splitUp, std::vector<std::uint8_t>& down) {
+    const auto n = std::uint32_t(up.size());
+    std::vector<std::uint32_t> next(n, kNoSample), leaves;
+    auto isLeaf = [&](std::uint32_t s) { return up[s] + down[s] == 1; };
+    for (std::uint32_t s = 0; s < n; ++s) {
+        if (isLeaf(s)) leaves.push_back(s);
+    }
+    std::vector<std::uint8_t> gone(n, 0);
+    std::uint32_t remaining = n;
+    while (!leaves.empty() && remaining > 1) {
+        const std::uint32_t s = leaves.back();
+        leaves.pop_back();
+        std::uint32_t t;
+        if (up[s] == 0 && down[s] == 1) {  // a maximum of what is left: its edge goes down the join tree
+            t = liveLink(joinDown, gone, s);
+            --up[t];
+            next[s] = t | AugmentedTree::kDownBit;
+        } else if (down[s] == 0 && up[s] == 1) {  // a minimum: up the split tree
+            t = liveLink(splitUp, gone, s);
+            --down[t];
+            next[s] = t;
+        } else {
+            continue;
+        }
+        gone[s] = 1;
+        --remaining;
+        if (isLeaf(t)) leaves.push_back(t);
+    }
+    return next;
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> sortSamples(const Volume& volume) {
+    const auto n = std::uint32_t(volume.sampleCount());
+    return visitSamples(volume, [&](const auto* values) { return radixSort(values, n); });
+}
+
+AugmentedTree augmentedContourTree(const Volume& volume, int threads) {
+    const Dims& dims = volume.dims();
+    if (dims[0] < 2 || dims[1] < 2 || dims[2] < 2) {
+        throw InputError("the contour tree needs at least 2 samples along each axis (a volume with cells)");
+    }
+    if (volume.sampleCount() >= std::size_t(AugmentedTree::kIndexMask)) {
+        throw InputError("the contour tree takes volumes of fewer than 2^31 samples");
+    }
+    AugmentedTree tree;
+    tree.order = sortSamples(volume);
+    std::vector<std::uint32_t> joinDown, splitUp;
+    std::vector<std::uint8_t> up, down;
+    visitSamples(volume, [&](const auto* values) {
+        auto join = [&] { sweep<true>(values, volume.dims(), tree.order, joinDown, up); };
+        auto split = [&] { sweep<false>(values, volume.dims(), tree.order, splitUp, down); };
+        if (threads > 1) {
+            std::thread joiner(join);
+            split();
+            joiner.join();
+        } else {
+            join();
+            split();
+        }
+    });
+    tree.next = mergeTrees(joinDown, up, splitUp, down);
+    return tree;
+}
+
+ContourTree computeContourTreeImpl(const Volume& volume, int threads) {
+    return compressContourTree(volume, augmentedContourTree(volume, threads));
+}
+
+}  // namespace isotrack::detail
+
+namespace isotrack {
+
+ContourTree computeContourTree(const Volume& volume, int threads) {
+    return detail::computeContourTreeImpl(volume, threads);
+}
+
+}  // namespace isotrack

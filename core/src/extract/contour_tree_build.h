@@ -1,0 +1,74 @@
+#pragma once
+// The passes of computeContourTree, shared by its files.
+#include <cmath>
+#include <cstdint>
+#include <type_traits>
+#include <vector>
+
+#include "isotrack/contour_tree.h"
+
+namespace isotrack::detail {
+
+constexpr std::uint32_t kNoSample = ~std::uint32_t(0);
+
+// The total order of the samples: by value, NaN lowest, ties by index.
+template <class T>
+struct SampleOrder {
+    const T* values;
+    bool below(std::uint32_t a, std::uint32_t b) const {
+        const T x = values[a], y = values[b];
+        if constexpr (std::is_floating_point_v<T>) {
+            const bool nx = std::isnan(x), ny = std::isnan(y);
+            if (nx || ny) return nx != ny ? nx : a < b;
+        }
+        return x < y || (x == y && a < b);
+    }
+};
+
+// The six face neighbours, and the twelve face-diagonal ones, of a sample.
+struct Neighbours {
+    Dims dims;
+    // Calls fn(neighbour) for the face (6) or face and face-diagonal (18) neighbours.
+    template <int Count, class Fn>
+    void forEach(std::uint32_t s, Fn&& fn) const {
+        const std::uint32_t nx = std::uint32_t(dims[0]), ny = std::uint32_t(dims[1]);
+        const std::uint32_t x = s % nx, y = (s / nx) % ny, z = s / (nx * ny);
+        const std::uint32_t n[3] = {nx, ny, std::uint32_t(dims[2])};
+        const std::int64_t stride[3] = {1, std::int64_t(nx), std::int64_t(nx) * ny};
+        const std::uint32_t p[3] = {x, y, z};
+        for (int a = 0; a < 3; ++a) {
+            if (p[a] > 0) fn(std::uint32_t(s - stride[a]));
+            if (p[a] + 1 < n[a]) fn(std::uint32_t(s + stride[a]));
+        }
+        if constexpr (Count == 18) {
+            for (int a = 0; a < 3; ++a) {
+                const int b = (a + 1) % 3;
+                for (int da = -1; da <= 1; da += 2) {
+                    if ((da < 0 && p[a] == 0) || (da > 0 && p[a] + 1 == n[a])) continue;
+                    for (int db = -1; db <= 1; db += 2) {
+                        if ((db < 0 && p[b] == 0) || (db > 0 && p[b] + 1 == n[b])) continue;
+                        fn(std::uint32_t(std::int64_t(s) + da * stride[a] + db * stride[b]));
+                    }
+                }
+            }
+        }
+    }
+};
+
+// The augmented contour tree as the merge leaves it: each sample but the last
+// has one edge, to next[s] & kIndexMask, going down when kDownBit is set.
+struct AugmentedTree {
+    static constexpr std::uint32_t kDownBit = 0x80000000u;
+    static constexpr std::uint32_t kIndexMask = 0x7fffffffu;
+    std::vector<std::uint32_t> order;  // the samples, ascending
+    std::vector<std::uint32_t> next;
+};
+
+// Samples sorted ascending in the order above (a stable radix sort).
+std::vector<std::uint32_t> sortSamples(const Volume& volume);
+// Join tree, split tree and their merge (Carr et al.'s algorithm).
+AugmentedTree augmentedContourTree(const Volume& volume, int threads);
+// Chains of regular samples into arcs between the critical ones.
+ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented);
+
+}  // namespace isotrack::detail

@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# isotrack extract --method tree against --method all, isotrack tree --out
+# .json/.svg, and the refusals (another table, an unknown --out extension).
+# Usage: contour_tree.sh ISOTRACK WORK_DIR
+set -euo pipefail
+isotrack=$1
+work=$2
+rm -rf "$work" && mkdir -p "$work" && cd "$work"
+fail() { echo "FAIL: $*"; exit 1; }
+field() { python3 -c "import json,sys; print(json.load(open(sys.argv[1]))[sys.argv[2]])" "$1" "$2"; }
+
+for spec in blobs:48 noise:24 gyroid:32; do
+    "$isotrack" extract --field "$spec" --method all --json > all.json
+    "$isotrack" extract --field "$spec" --method tree --json > tree.json
+    [[ $(field all.json components) == $(field tree.json components) ]] || fail "$spec: tree and all differ in surfaces"
+    [[ $(field all.json triangles) == $(field tree.json triangles) ]] || fail "$spec: tree and all differ in triangles"
+    python3 -c "import json; s=json.load(open('tree.json'))['surfaces']; assert all('arc' in x and 'genus' in x for x in s)" \
+        || fail "$spec: surfaces without arc or genus"
+done
+
+# Pruning by persistence keeps fewer surfaces, never more.
+"$isotrack" extract --field noise:24 --iso 0.5 --method tree --min-persistence 0.1 --json > pruned.json
+"$isotrack" extract --field noise:24 --iso 0.5 --method all --json > all.json
+(( $(field pruned.json components) < $(field all.json components) )) || fail "--min-persistence pruned nothing"
+
+"$isotrack" tree --field noise:24 --at 0.5 --out tree.json > tree.txt
+grep -q "surfaces at iso 0.5" tree.txt || fail "no summary line"
+python3 -c "
+import json; t=json.load(open('tree.json'))
+assert len(t['arcs']) + 1 == len(t['nodes'])
+assert len(t['arcs_at']) == $(field all.json components)
+" || fail "tree.json does not hold the tree"
+"$isotrack" tree --field blobs:32 --min-persistence 0.05 --out tree.svg > /dev/null
+grep -q "<svg" tree.svg || fail "tree.svg is not an SVG"
+
+# Flexible isosurfaces: surface 0 at its own isovalue, the others untouched.
+"$isotrack" extract --field blobs:48 --method tree --json > base.json
+"$isotrack" extract --field blobs:48 --method tree --arc-iso 0:0.3 --json > flex.json
+python3 -c "
+import json; a=json.load(open('base.json'))['surfaces']; b=json.load(open('flex.json'))['surfaces']
+assert len(a) == len(b)
+assert b[0]['isovalue'] == 0.3 and b[1]['isovalue'] == a[1].get('isovalue', b[1]['isovalue'])
+assert b[0]['triangles'] != a[0]['triangles']
+assert [s['triangles'] for s in a[1:]] == [s['triangles'] for s in b[1:]]
+assert [s['bounds'] for s in a[1:]] == [s['bounds'] for s in b[1:]]
+" || fail "--arc-iso changed other surfaces or not its own"
+set +e
+"$isotrack" extract --field blobs:48 --method tree --arc-iso 0:100 2> err.txt
+status=$?
+set -e
+[[ $status == 1 ]] && grep -q "^isotrack: --arc-iso 0:100: the surface vanishes" err.txt || fail "--arc-iso past the maximum: $status"
+
+set +e
+"$isotrack" extract --field blobs:32 --method tree --table classic 2> err.txt
+status=$?
+set -e
+[[ $status == 1 ]] || fail "--method tree --table classic exited $status"
+[[ $(wc -l < err.txt) == 1 ]] && grep -q "^isotrack: .*consistent table" err.txt || fail "unclear refusal: $(cat err.txt)"
+set +e
+"$isotrack" tree --field blobs:32 --out tree.txt 2> err.txt
+status=$?
+set -e
+[[ $status == 1 ]] && grep -q "^isotrack: .*tree.txt" err.txt || fail "--out tree.txt: status $status, $(cat err.txt)"
+echo "contour tree CLI: ok"

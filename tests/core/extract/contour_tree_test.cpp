@@ -1,0 +1,230 @@
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "core/mesh_checks.h"
+#include "isotrack/contour_tree.h"
+#include "isotrack/fields.h"
+#include "isotrack/io.h"
+#include "isotrack/tracking.h"
+
+using namespace isotrack;
+
+namespace {
+
+// Isovalues spread over the volume's range, ends excluded.
+std::vector<double> isovalues(const Volume& volume, int count) {
+    const auto [lo, hi] = volume.range();
+    std::vector<double> out;
+    for (int k = 1; k <= count; ++k) out.push_back(lo + (hi - lo) * k / (count + 1));
+    return out;
+}
+
+void requireArcsCountSurfaces(const Volume& volume, const std::vector<double>& values) {
+    const ContourTree tree = computeContourTree(volume, 2);
+    for (const double v : values) {
+        INFO("iso " << v);
+        REQUIRE(tree.arcsAt(v).size() == extractAllSurfaces(volume, v, TableKind::Consistent, 2).size());
+    }
+}
+
+// Each surface as its sorted triangles; the surfaces sorted.
+std::vector<std::vector<std::array<std::uint64_t, 3>>> surfaceSets(const std::vector<Surface>& surfaces,
+                                                                   const Dims& dims) {
+    std::vector<std::vector<std::array<std::uint64_t, 3>>> out;
+    for (const Surface& s : surfaces) {
+        const auto set = testing::triangleSet(s.mesh, dims);
+        out.emplace_back(set.begin(), set.end());
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+void requireTreeSurfacesEqualAll(const Volume& volume, const ContourTree& tree, double v) {
+    INFO("iso " << v);
+    const std::vector<Surface> all = extractAllSurfaces(volume, v, TableKind::Consistent, 2);
+    std::vector<std::size_t> arcs;
+    const std::vector<Surface> fromTree = trackTreeSurfaces(tree, volume, v, 1, &arcs);
+    REQUIRE(fromTree.size() == all.size());
+    REQUIRE(arcs.size() == fromTree.size());
+    CHECK(surfaceSets(fromTree, volume.dims()) == surfaceSets(all, volume.dims()));
+}
+
+// Small integers, many equal samples and saddles.
+Volume randomIntegers(int n, int levels, unsigned seed) {
+    Volume volume({n, n, n}, ScalarType::UInt8);
+    std::mt19937 random(seed);
+    std::uniform_int_distribution<int> pick(0, levels - 1);
+    auto* samples = volume.data<std::uint8_t>();
+    for (std::size_t i = 0; i < volume.sampleCount(); ++i) samples[i] = std::uint8_t(pick(random));
+    return volume;
+}
+
+}  // namespace
+
+TEST_CASE("contour tree: arcs crossing v are the surfaces at v", "[core][contour-tree]") {
+    SECTION("sphere") { requireArcsCountSurfaces(makeField({"sphere", 24}), isovalues(makeField({"sphere", 24}), 50)); }
+    SECTION("torus") { requireArcsCountSurfaces(makeField({"torus", 24}), isovalues(makeField({"torus", 24}), 50)); }
+    SECTION("noise") { requireArcsCountSurfaces(makeField({"noise", 24}), isovalues(makeField({"noise", 24}), 50)); }
+    SECTION("blobs") { requireArcsCountSurfaces(makeField({"blobs", 40}), isovalues(makeField({"blobs", 40}), 50)); }
+    SECTION("gyroid") { requireArcsCountSurfaces(makeField({"gyroid", 32}), isovalues(makeField({"gyroid", 32}), 50)); }
+    SECTION("random small integers, at and between the values") {
+        for (unsigned seed = 1; seed <= 6; ++seed) {
+            const Volume volume = randomIntegers(12 + int(seed), 3 + int(seed % 3), seed);
+            std::vector<double> values;
+            for (double v = 0.5; v < 6; v += 0.5) values.push_back(v);
+            requireArcsCountSurfaces(volume, values);
+        }
+    }
+}
+
+TEST_CASE("contour tree: every sample is a node or on one arc, arcs sorted", "[core][contour-tree]") {
+    const Volume volume = makeField({"noise", 16});
+    const ContourTree tree = computeContourTree(volume, 1);
+    CHECK(tree.nodes.size() + tree.samples.size() == volume.sampleCount());
+    CHECK(tree.arcs.size() + 1 == tree.nodes.size());  // a tree
+    for (const ContourTree::Arc& arc : tree.arcs) {
+        CHECK(tree.nodes[arc.lower].value <= tree.nodes[arc.upper].value);
+        for (std::size_t k = arc.begin; k + 1 < arc.end; ++k) {
+            const auto a = tree.samples[k], b = tree.samples[k + 1];
+            CHECK(volume.data<float>()[a] <= volume.data<float>()[b]);
+        }
+    }
+    // One thread and two give the same tree.
+    const ContourTree two = computeContourTree(volume, 2);
+    CHECK(two.samples == tree.samples);
+    CHECK(two.arcs.size() == tree.arcs.size());
+}
+
+TEST_CASE("contour tree: tracking each arc's seed gives every surface", "[core][contour-tree]") {
+    for (const char* name : {"sphere", "torus", "noise", "blobs", "gyroid"}) {
+        INFO(name);
+        const Volume volume = makeField({name, 24});
+        const ContourTree tree = computeContourTree(volume, 2);
+        for (const double v : isovalues(volume, 12)) requireTreeSurfacesEqualAll(volume, tree, v);
+    }
+    for (unsigned seed = 1; seed <= 4; ++seed) {
+        const Volume volume = randomIntegers(14, 4, seed);
+        const ContourTree tree = computeContourTree(volume, 2);
+        for (const double v : {0.5, 1.0, 1.5, 2.0, 2.5, 3.0}) requireTreeSurfacesEqualAll(volume, tree, v);
+    }
+}
+
+TEST_CASE("contour tree: NaN is below everything, every sample type", "[core][contour-tree]") {
+    Volume volume = makeField({"blobs", 24});
+    volume.data<float>()[5] = NAN;
+    volume.data<float>()[3000] = NAN;
+    requireArcsCountSurfaces(volume, isovalues(volume, 10));
+    for (const ScalarType type : {ScalarType::Int8, ScalarType::Int16, ScalarType::UInt16, ScalarType::Int32,
+                                  ScalarType::UInt32, ScalarType::Float64}) {
+        INFO(scalarTypeName(type));
+        const Volume noise = makeField({"noise", 16});
+        Volume typed(noise.dims(), type);
+        for (int z = 0; z < 16; ++z)
+            for (int y = 0; y < 16; ++y)
+                for (int x = 0; x < 16; ++x) typed.setValue(x, y, z, std::round(noise.value(x, y, z) * 100));
+        requireArcsCountSurfaces(typed, {10.5, 30.0, 49.5, 50.0, 60.0, 75.5});
+    }
+}
+
+TEST_CASE("contour tree: simplification prunes small branches only", "[core][contour-tree]") {
+    const Volume volume = makeField({"noise", 20});
+    ContourTree tree = computeContourTree(volume, 2);
+    const double v = 0.5;
+    const std::size_t before = tree.arcsAt(v).size();
+    simplifyContourTree(tree, 0.0);
+    CHECK(tree.arcsAt(v).size() == before);
+    simplifyContourTree(tree, 0.2);
+    const std::size_t after = tree.arcsAt(v).size();
+    CHECK(after < before);
+    CHECK(after > 0);
+    // What is left is still a tree: as many arcs kept as nodes with an arc, less one.
+    std::vector<int> used(tree.nodes.size(), 0);
+    std::size_t kept = 0;
+    for (const ContourTree::Arc& arc : tree.arcs) {
+        if (arc.pruned) continue;
+        ++kept, used[arc.lower] = 1, used[arc.upper] = 1;
+    }
+    CHECK(kept + 1 == std::size_t(std::count(used.begin(), used.end(), 1)));
+    ContourTree bySize = computeContourTree(volume, 2);
+    simplifyContourTree(bySize, 0.0, 50);
+    CHECK(bySize.arcsAt(v).size() < before);
+}
+
+TEST_CASE("contour tree of the CT: arcs are the surfaces, 240 at 400.5", "[core][contour-tree][ct]") {
+    const std::string path = std::string(ISOTRACK_SOURCE_DIR) + "/assets/ct/cranium.nrrd";
+    if (!std::ifstream(path)) {
+        WARN("skipped: " << path << " is missing (scripts/get_ct.sh makes it)");
+        return;
+    }
+    const Volume volume = loadVolume(path);
+    const ContourTree tree = computeContourTree(volume, 2);
+    CHECK(tree.arcsAt(400.5).size() == 240);
+    for (const double v : isovalues(volume, 50)) {
+        INFO("iso " << v);
+        CHECK(tree.arcsAt(v).size() == extractAllSurfaces(volume, v, TableKind::Consistent, 2).size());
+    }
+    requireTreeSurfacesEqualAll(volume, tree, 400.5);
+}
+
+TEST_CASE("topology per surface: Euler characteristic, border loops, genus", "[core][contour-tree]") {
+    const Volume sphere = makeField({"sphere", 32});
+    const std::vector<Surface> spheres =
+        trackTreeSurfaces(computeContourTree(sphere), sphere, fieldDefaultIso("sphere"));
+    REQUIRE(spheres.size() == 1);
+    CHECK(*spheres[0].stats.euler == 2);
+    CHECK(*spheres[0].stats.borderLoops == 0);
+    CHECK(*spheres[0].stats.genus == 0);
+    CHECK(spheres[0].stats.persistence.has_value());
+    Surface counted = spheres[0];  // the same figures from the edges themselves
+    counted.stats.closed = false;
+    measureTopology(counted);
+    CHECK(*counted.stats.euler == 2);
+    CHECK(*counted.stats.borderLoops == 0);
+    const Volume torus = makeField({"torus", 32});
+    const std::vector<Surface> tori = trackTreeSurfaces(computeContourTree(torus), torus, fieldDefaultIso("torus"));
+    REQUIRE(tori.size() == 1);
+    CHECK(*tori[0].stats.euler == 0);
+    CHECK(*tori[0].stats.genus == 1);
+    // A gyroid cut by the border: its loops are counted, the topology adds up.
+    const Volume gyroid = makeField({"gyroid", 24});
+    Surface open = extractAllSurfaces(gyroid, 0.0).front();
+    measureTopology(open);
+    CHECK(*open.stats.borderLoops > 0);
+    CHECK(*open.stats.euler == 2 - 2 * *open.stats.genus - *open.stats.borderLoops);
+}
+
+TEST_CASE("flexible isosurfaces: a surface followed along its arc to its own isovalue", "[core][contour-tree]") {
+    const Volume volume = makeField({"noise", 24});
+    const ContourTree tree = computeContourTree(volume, 2);
+    const double from = 0.6, to = 0.45;
+    std::vector<std::size_t> arcs;
+    const std::vector<Surface> surfaces = trackTreeSurfaces(tree, volume, from, 1, &arcs);
+    const std::vector<std::size_t> alive = tree.arcsAt(to);
+    const auto all = surfaceSets(extractAllSurfaces(volume, to), volume.dims());
+    std::size_t vanished = 0, followed = 0;
+    for (const std::size_t arc : arcs) {
+        CHECK(followArc(tree, arc, from) == arc);
+        const std::size_t next = followArc(tree, arc, to);
+        if (next == tree.arcs.size()) {
+            ++vanished;
+            continue;
+        }
+        REQUIRE(std::find(alive.begin(), alive.end(), next) != alive.end());
+        if (followed++ % 16 != 0) continue;  // a sample of them tracked: one of all's surfaces at `to`
+        const ArcSeed seed = arcSeeds(tree, volume, to, {next}).front();
+        const Surface surface = trackSurface(volume, to, seed.edge);
+        const auto set = testing::triangleSet(surface.mesh, volume.dims());
+        const std::vector<std::array<std::uint64_t, 3>> sorted(set.begin(), set.end());
+        CHECK(std::binary_search(all.begin(), all.end(), sorted));
+    }
+    CHECK(followed + vanished == arcs.size());
+    CHECK(followed > 0);
+    // Above the volume's maximum every surface vanishes.
+    for (const std::size_t arc : arcs) CHECK(followArc(tree, arc, volume.range()[1] + 1) == tree.arcs.size());
+}
