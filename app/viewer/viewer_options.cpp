@@ -42,8 +42,9 @@ ViewerCommandLine addViewerOptions(CLI::App& app) {
         ->check(CLI::IsMember({"consistent", "classic"}));
     group->add_option("--method", o.method, "mc: exhaustive; track: surfaces you click; all: every surface (default)")
         ->check(CLI::IsMember({"mc", "track", "all"}));
-    group->add_option("--frame", o.frame,
-                      "Frame of exported meshes: lps (default, world), ras or voxel; the view stays in the grid")
+    group
+        ->add_option("--frame", o.frame,
+                     "Frame of exported meshes: lps (default, world), ras or voxel; the view stays in the grid")
         ->check(CLI::IsMember({"lps", "ras", "voxel"}, CLI::ignore_case));
     group->add_option("--script", o.script, "Run the commands in FILE, one per line, in the window");
     group->add_flag("--json", o.json, "On exit, print a JSON summary (surfaces, CPU and GPU bytes, frames)");
