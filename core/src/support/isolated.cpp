@@ -180,8 +180,6 @@ void ReplyWriter::write(const void* data, std::size_t bytes) {
     if (bytes > 0) writeFrame(fd_, kData, data, bytes);
 }
 
-bool inIsolatedChild() { return childNotes != nullptr; }
-
 void noteSubject(const std::string& path) {
     if (!childNotes) return;
     const std::size_t n = std::min(path.size(), sizeof childNotes->subject - 1);

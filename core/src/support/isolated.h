@@ -90,7 +90,4 @@ public:
     LibraryCall& operator=(const LibraryCall&) = delete;
 };
 
-// Whether this process is a child of runIsolated.
-bool inIsolatedChild();
-
 }  // namespace isotrack::detail
