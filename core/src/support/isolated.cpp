@@ -1,6 +1,7 @@
 // A library run in a forked child: see isolated.h.
 #include "support/isolated.h"
 
+#include <fcntl.h>
 #include <signal.h>
 #include <sys/mman.h>
 #include <sys/wait.h>
@@ -34,6 +35,7 @@ struct Notes {
 };
 
 Notes* childNotes = nullptr;  // set in the child only
+int savedStderr = -1;         // the child's stderr, while a LibraryCall sends it to /dev/null
 
 constexpr std::array<int, 6> kFatalSignals{SIGABRT, SIGSEGV, SIGBUS, SIGILL, SIGFPE, SIGTRAP};
 std::array<struct sigaction, kFatalSignals.size()> savedActions;
@@ -190,6 +192,13 @@ void noteSubject(const std::string& path) {
 LibraryCall::LibraryCall() {
     if (!childNotes) return;
     if (childNotes->libraryDepth++ > 0) return;
+    // The library's own last words (an assertion's text) would be a second line.
+    const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (null >= 0) {
+        savedStderr = ::dup(2);
+        ::dup2(null, 2);
+        ::close(null);
+    }
     struct sigaction plain {};
     plain.sa_handler = SIG_DFL;
     sigemptyset(&plain.sa_mask);
@@ -200,6 +209,11 @@ LibraryCall::~LibraryCall() {
     if (!childNotes) return;
     if (--childNotes->libraryDepth > 0) return;
     for (std::size_t s = 0; s < kFatalSignals.size(); ++s) ::sigaction(kFatalSignals[s], &savedActions[s], nullptr);
+    if (savedStderr >= 0) {
+        ::dup2(savedStderr, 2);
+        ::close(savedStderr);
+        savedStderr = -1;
+    }
 }
 
 void runIsolated(const IsolatedRun& run, const std::function<void(ReplyWriter&)>& work,

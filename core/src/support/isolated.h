@@ -81,7 +81,8 @@ void noteSubject(const std::string& path);
 // the library's (LibraryFailure), and the fatal signals (abort, segmentation
 // fault, bus error, illegal instruction, arithmetic) take their default action,
 // so that no crash handler (a sanitizer's, a fuzzer's) reports them in the
-// child. Elsewhere nothing.
+// child; the library's stderr goes to /dev/null, so that an assertion's text
+// does not add a line to isotrack's one-line error. Elsewhere nothing.
 class LibraryCall {
 public:
     LibraryCall();
