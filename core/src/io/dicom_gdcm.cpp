@@ -64,9 +64,9 @@ std::optional<std::vector<double>> numbers(const std::string& text, std::size_t 
 }
 
 // The header elements isotrack reads.
-constexpr std::array<std::uint32_t, 15> kHeaderTags{
-    0x00080060, 0x0008103e, 0x0020000e, 0x00200032, 0x00200037, 0x00280002, 0x00280008, 0x00280010,
-    0x00280011, 0x00280030, 0x00280100, 0x00280101, 0x00280103, 0x00281052, 0x00281053};
+constexpr std::array<std::uint32_t, 15> kHeaderTags{0x00080060, 0x0008103e, 0x0020000e, 0x00200032, 0x00200037,
+                                                    0x00280002, 0x00280008, 0x00280010, 0x00280011, 0x00280030,
+                                                    0x00280100, 0x00280101, 0x00280103, 0x00281052, 0x00281053};
 
 // Their values as text, as GDCM reads them up to the pixel data; nullopt when
 // GDCM cannot read the header.
