@@ -42,6 +42,7 @@ struct ViewerOptions {
     std::optional<double> iso;
     std::string table = "consistent";
     std::string method = "all";
+    std::string frame = "lps";  // of exported meshes, as `isotrack extract --frame`
     std::string script;
     bool json = false;
     std::string profile;

@@ -4,6 +4,7 @@
 
 #include "isotrack/errors.h"
 #include "isotrack/io.h"
+#include "isotrack/orientation.h"
 #include "viewer/viewer.h"
 
 namespace isotrack::viewer {
@@ -137,7 +138,9 @@ void Viewer::frameCamera(bool selectionOnly) {
     camera_ = frameKeepingAngles(camera_, bounds);
 }
 
-// The path's extension picks the format (PLY, OBJ or STL), as for `isotrack extract --out`.
+// The path's extension picks the format (PLY, OBJ or STL), as for `isotrack extract --out`;
+// the mesh leaves the grid the view draws in for --frame (LPS world by default),
+// through the same transform, so the file equals extract's for the same surface.
 void Viewer::exportSurface(std::uint32_t id, const std::string& path) {
     const SurfaceStructure* surface = scene_.find(id);
     if (surface == nullptr) return;
@@ -146,7 +149,9 @@ void Viewer::exportSurface(std::uint32_t id, const std::string& path) {
                          std::to_string(shownIso()));
     }
     const MeshFormat format = meshFormatOf(path);
-    writeMesh(path, surface->mesh());
+    Mesh mesh = surface->mesh();
+    if (scene_.volume()) transformMesh(mesh, gridToFrame(scene_.volume()->volume, parseWorldFrame(options_.frame)));
+    writeMesh(path, mesh);
     status("surface " + std::to_string(id) + ": wrote " + std::to_string(surface->mesh().triangleCount()) +
            " triangles to " + path + " (" + meshFormatExtension(format) + ")");
 }

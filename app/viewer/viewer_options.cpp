@@ -44,6 +44,10 @@ ViewerCommandLine addViewerOptions(CLI::App& app) {
                       "mc: exhaustive; track: surfaces you click; all: every surface (default); "
                       "tree: every surface from the contour tree")
         ->check(CLI::IsMember({"mc", "track", "all", "tree"}));
+    group
+        ->add_option("--frame", o.frame,
+                     "Frame of exported meshes: lps (default, world), ras or voxel; the view stays in the grid")
+        ->check(CLI::IsMember({"lps", "ras", "voxel"}, CLI::ignore_case));
     group->add_option("--script", o.script, "Run the commands in FILE, one per line, in the window");
     group->add_flag("--json", o.json, "On exit, print a JSON summary (surfaces, CPU and GPU bytes, frames)");
     group->add_option("--profile", o.profile, "Write a Chrome trace of every frame to FILE.json (opens in Perfetto)");

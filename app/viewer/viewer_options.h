@@ -21,7 +21,7 @@ struct ViewerCommandLine {
     std::shared_ptr<cli::RawOptions> raw;  // --dims --type --spacing --endian
 };
 
-// Adds --volume, --field, --iso, --table, --method, --script, --json,
+// Adds --volume, --field, --iso, --table, --method, --frame, --script, --json,
 // --profile, --deterministic, --size and --threads to `app`, in a "Viewer" group.
 ViewerCommandLine addViewerOptions(CLI::App& app);
 

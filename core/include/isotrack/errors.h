@@ -12,6 +12,13 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// A third-party library (GDCM, for DICOM) crashed on a file, in the child
+// process isotrack runs it in: the file is damaged or not supported.
+class LibraryFailure : public FormatError {
+public:
+    using FormatError::FormatError;
+};
+
 // A request the core cannot satisfy (unknown field name, bad size, no surface at a seed...).
 class InputError : public std::runtime_error {
 public:

@@ -28,7 +28,8 @@ void writeSeries(const TempDir& dir, const std::string& folder, const std::vecto
                  const std::string& uid = "1.2.3.4", int columns = 6, int rows = 5) {
     std::filesystem::create_directories(dir.file(folder));
     for (std::size_t k = 0; k < zs.size(); ++k)
-        writeFile(dir.file(folder + "/" + std::to_string(900 - k) + ".dcm"), DicomSlice(columns, rows, zs[k], uid).bytes());
+        writeFile(dir.file(folder + "/" + std::to_string(900 - k) + ".dcm"),
+                  DicomSlice(columns, rows, zs[k], uid).bytes());
 }
 
 void expectFormatError(const std::string& path, const std::string& expect) {
@@ -165,4 +166,30 @@ TEST_CASE("the CT as a DICOM series loads as the NRRD does, whatever the file or
     CHECK(listDicomSeries(dir.file("shuffled")).size() == 2);
     CHECK(listDicomSeries(dir.file("dicomdir/DICOMDIR")).size() == 2);
     CHECK(loadDicom(dir.file("shuffled"), "2").dims() == Dims{64, 64, 4});
+}
+
+TEST_CASE("DICOM: a file GDCM aborts on is a one-line error naming it, alone or in a folder",
+          "[core][dicom][hostile]") {
+    // No preamble, one file meta element in implicit VR and nothing after it:
+    // GDCM's file meta reader asserts (FileMetaInformation.cxx:467).
+    const std::string source = std::string(ISOTRACK_SOURCE_DIR);
+    const std::string crashing =
+        isotrack::testing::readFile(source + "/tests/fuzz/corpus/dicom/implicit_meta_group.dcm");
+    TempDir dir;
+    writeFile(dir.file("meta.dcm"), crashing);
+    const std::string expected = dir.file("meta.dcm") +
+                                 ": the DICOM library failed on it (it crashed: Aborted); the file is damaged or not "
+                                 "supported";
+    CHECK_THROWS_MATCHES(loadVolume(dir.file("meta.dcm")), LibraryFailure, Catch::Message(expected));
+    CHECK_THROWS_MATCHES(listDicomSeries(dir.file("meta.dcm")), LibraryFailure, Catch::Message(expected));
+    // Among good slices, the error names the file GDCM was reading.
+    writeSeries(dir, "series", {0, 2, 4});
+    writeFile(dir.file("series/meta.dcm"), crashing);
+    CHECK_THROWS_MATCHES(loadVolume(dir.file("series")), LibraryFailure,
+                         Catch::Message(dir.file("series/meta.dcm") +
+                                        ": the DICOM library failed on it (it crashed: Aborted); the file is damaged "
+                                        "or not supported"));
+    // And the loader works on after it.
+    std::filesystem::remove(dir.file("series/meta.dcm"));
+    CHECK(loadVolume(dir.file("series")).dims() == Dims{6, 5, 3});
 }
