@@ -22,7 +22,8 @@ void runMarchingCubes(benchmark::State& state, const isotrack::Volume& volume, d
     state.counters["triangles"] = double(triangles);
     state.counters["Mvoxels/s"] =
         benchmark::Counter(double(volume.sampleCount()) * iterations / 1e6, benchmark::Counter::kIsRate);
-    state.counters["Mtriangles/s"] = benchmark::Counter(double(triangles) * iterations / 1e6, benchmark::Counter::kIsRate);
+    state.counters["Mtriangles/s"] =
+        benchmark::Counter(double(triangles) * iterations / 1e6, benchmark::Counter::kIsRate);
 }
 
 void fieldBenchmark(benchmark::State& state, const char* spec) {

@@ -40,7 +40,8 @@ struct Row {
     std::size_t triangles;
 };
 
-void printCase(const std::string& title, const Volume& volume, double iso, const std::vector<std::pair<std::string, Vec3d>>& seeds) {
+void printCase(const std::string& title, const Volume& volume, double iso,
+               const std::vector<std::pair<std::string, Vec3d>>& seeds) {
     const Dims& d = volume.dims();
     const std::size_t cellsTotal = std::size_t(d[0] - 1) * std::size_t(d[1] - 1) * std::size_t(d[2] - 1);
     std::vector<Row> rows;
@@ -64,8 +65,8 @@ void printCase(const std::string& title, const Volume& volume, double iso, const
     std::printf("\n%s: %dx%dx%d, iso %g\n", title.c_str(), d[0], d[1], d[2], iso);
     std::printf("  %-34s %10s %9s %12s %10s %12s\n", "method", "ms", "x mc time", "cells", "x mc cells", "triangles");
     for (const Row& r : rows) {
-        std::printf("  %-34s %10.3f %9.4f %12zu %10.5f %12zu\n", r.what.c_str(), r.seconds * 1e3, r.seconds / mc, r.cells,
-                    double(r.cells) / double(cellsTotal), r.triangles);
+        std::printf("  %-34s %10.3f %9.4f %12zu %10.5f %12zu\n", r.what.c_str(), r.seconds * 1e3, r.seconds / mc,
+                    r.cells, double(r.cells) / double(cellsTotal), r.triangles);
     }
 }
 
@@ -87,7 +88,8 @@ int main() {
     const std::string ct = std::string(ISOTRACK_SOURCE_DIR) + "/assets/ct/cranium.nrrd";
     if (std::ifstream(ct)) {
         // The top of the head: the skull is the largest surface at this isovalue.
-        printCase("CT skull (assets/ct/cranium.nrrd)", loadVolume(ct), 400.5, {{"skull (top of head)", {122.0, 122.0, 160.0}}});
+        printCase("CT skull (assets/ct/cranium.nrrd)", loadVolume(ct), 400.5,
+                  {{"skull (top of head)", {122.0, 122.0, 160.0}}});
     } else {
         std::printf("\nCT skipped: run scripts/get_ct.sh to make assets/ct/cranium.nrrd\n");
     }

@@ -112,7 +112,8 @@ Volume volumeView(const py::array& array, const Zyx& spacing, const Zyx& origin)
         throw InputError("volume: unsupported dtype " + py::str(array.dtype()).cast<std::string>() +
                          " (expected uint8, int8, uint16, int16, uint32, int32, float32 or float64)");
     if (!array.dtype().attr("isnative").cast<bool>())
-        throw InputError("volume: samples must be in the machine's byte order (use array.astype(array.dtype.newbyteorder('=')))");
+        throw InputError(
+            "volume: samples must be in the machine's byte order (use array.astype(array.dtype.newbyteorder('=')))");
     if (!(array.flags() & py::array::c_style))
         throw InputError("volume: the array must be C-contiguous (use numpy.ascontiguousarray(volume))");
     if (!array.attr("flags").attr("aligned").cast<bool>())
@@ -178,13 +179,16 @@ py::array_t<float> edgeMaxima(const Mesh& mesh, const Volume& volume) {
     py::array_t<float> values(py::ssize_t(mesh.vertices.size()));
     float* out = values.mutable_data();
     visitSamples(volume, [&](const auto* samples) {
-        const std::size_t step[3] = {1, std::size_t(volume.dims()[0]), std::size_t(volume.dims()[0]) * std::size_t(volume.dims()[1])};
+        const std::size_t step[3] = {1, std::size_t(volume.dims()[0]),
+                                     std::size_t(volume.dims()[0]) * std::size_t(volume.dims()[1])};
         for (std::size_t v = 0; v < mesh.vertexEdges.size(); ++v) {
             const GridEdge e = mesh.vertexEdges[v];
             const std::size_t i = volume.index(e.x, e.y, e.z);
             if (e.axis == kCellInterior) {
                 double largest = double(samples[i]);
-                for (int c = 1; c < 8; ++c) largest = std::max(largest, double(samples[i + (c & 1) * step[0] + (c >> 1 & 1) * step[1] + (c >> 2) * step[2]]));
+                for (int c = 1; c < 8; ++c)
+                    largest = std::max(
+                        largest, double(samples[i + (c & 1) * step[0] + (c >> 1 & 1) * step[1] + (c >> 2) * step[2]]));
                 out[v] = float(largest);
                 continue;
             }
@@ -203,8 +207,10 @@ std::string surfaceRepr(const Surface& surface) {
     const SurfaceStats& s = surface.stats;
     std::ostringstream text;
     text << "<isotrack.Surface: " << s.triangles << " triangles, " << s.vertices << " vertices, area " << s.area;
-    if (s.enclosedVolume) text << ", closed, volume " << *s.enclosedVolume;
-    else text << (s.closed ? ", closed" : ", open");
+    if (s.enclosedVolume)
+        text << ", closed, volume " << *s.enclosedVolume;
+    else
+        text << (s.closed ? ", closed" : ", open");
     text << '>';
     return text.str();
 }
@@ -441,25 +447,34 @@ void bindSurface(py::module_& m) {
         .def_property_readonly(
             "faces", [](py::object self) { return faceView(self.cast<const Surface&>().mesh, self); },
             "(F, 3) uint32 vertex indices, one row per triangle (a view).")
-        .def_property_readonly("triangle_count", [](const Surface& s) { return s.stats.triangles; }, "Number of triangles.")
-        .def_property_readonly("vertex_count", [](const Surface& s) { return s.stats.vertices; }, "Number of vertices.")
-        .def_property_readonly("area", [](const Surface& s) { return s.stats.area; }, "Surface area in world units squared.")
+        .def_property_readonly(
+            "triangle_count", [](const Surface& s) { return s.stats.triangles; }, "Number of triangles.")
+        .def_property_readonly(
+            "vertex_count", [](const Surface& s) { return s.stats.vertices; }, "Number of vertices.")
+        .def_property_readonly(
+            "area", [](const Surface& s) { return s.stats.area; }, "Surface area in world units squared.")
         .def_property_readonly(
             "volume", [](const Surface& s) { return s.stats.enclosedVolume; },
             "Enclosed volume in world units cubed for a closed surface, else None.")
-        .def_property_readonly("closed", [](const Surface& s) { return s.stats.closed; },
-                               "True when every mesh edge has exactly two triangles.")
-        .def_property_readonly("touches_border", [](const Surface& s) { return s.stats.touchesBorder; },
-                               "True when the surface reaches a boundary cell of the volume.")
-        .def_property_readonly("bounds", [](const Surface& s) { return boundsOf(s.stats); },
-                               "((zmin, ymin, xmin), (zmax, ymax, xmax)) in world units.")
-        .def_property_readonly("cells_visited", [](const Surface& s) { return s.stats.cellsVisited; },
-                               "(cell, piece) visits made while tracking.")
-        .def_property_readonly("nbytes", [](const Surface& s) { return s.mesh.drawByteSize(); },
-                               "Bytes of the vertex and index buffers.")
-        .def_property_readonly("seconds", [](const Surface& s) { return s.stats.seconds; },
-                               "Seconds track took for it (0 for surfaces of surfaces()).")
-        .def("__len__", [](const Surface& s) { return s.stats.triangles; }, "Number of triangles.")
+        .def_property_readonly(
+            "closed", [](const Surface& s) { return s.stats.closed; },
+            "True when every mesh edge has exactly two triangles.")
+        .def_property_readonly(
+            "touches_border", [](const Surface& s) { return s.stats.touchesBorder; },
+            "True when the surface reaches a boundary cell of the volume.")
+        .def_property_readonly(
+            "bounds", [](const Surface& s) { return boundsOf(s.stats); },
+            "((zmin, ymin, xmin), (zmax, ymax, xmax)) in world units.")
+        .def_property_readonly(
+            "cells_visited", [](const Surface& s) { return s.stats.cellsVisited; },
+            "(cell, piece) visits made while tracking.")
+        .def_property_readonly(
+            "nbytes", [](const Surface& s) { return s.mesh.drawByteSize(); }, "Bytes of the vertex and index buffers.")
+        .def_property_readonly(
+            "seconds", [](const Surface& s) { return s.stats.seconds; },
+            "Seconds track took for it (0 for surfaces of surfaces()).")
+        .def(
+            "__len__", [](const Surface& s) { return s.stats.triangles; }, "Number of triangles.")
         .def("__repr__", &surfaceRepr);
 }
 
@@ -485,17 +500,19 @@ PYBIND11_MODULE(isotrack, m) {
     bindSurface(m);
     const Zyx ones{1, 1, 1}, zeros{0, 0, 0};
     m.def("marching_cubes", &marchingCubesPy, kMarchingCubesDoc, py::arg("volume"), py::arg("level") = py::none(),
-          py::kw_only(), py::arg_v("spacing", ones, "(1.0, 1.0, 1.0)"), py::arg("method") = "mc", py::arg("table") = "consistent",
-          py::arg("threads") = 0, py::arg_v("origin", zeros, "(0.0, 0.0, 0.0)"));
-    m.def("track", &trackPy, kTrackDoc, py::arg("volume"), py::arg("level"), py::kw_only(),
-          py::arg("seed") = py::none(), py::arg("seed_edge") = py::none(), py::arg_v("spacing", ones, "(1.0, 1.0, 1.0)"),
+          py::kw_only(), py::arg_v("spacing", ones, "(1.0, 1.0, 1.0)"), py::arg("method") = "mc",
           py::arg("table") = "consistent", py::arg("threads") = 0, py::arg_v("origin", zeros, "(0.0, 0.0, 0.0)"));
+    m.def("track", &trackPy, kTrackDoc, py::arg("volume"), py::arg("level"), py::kw_only(),
+          py::arg("seed") = py::none(), py::arg("seed_edge") = py::none(),
+          py::arg_v("spacing", ones, "(1.0, 1.0, 1.0)"), py::arg("table") = "consistent", py::arg("threads") = 0,
+          py::arg_v("origin", zeros, "(0.0, 0.0, 0.0)"));
     m.def("surfaces", &surfacesPy, kSurfacesDoc, py::arg("volume"), py::arg("level"), py::kw_only(),
           py::arg_v("spacing", ones, "(1.0, 1.0, 1.0)"), py::arg("table") = "consistent", py::arg("threads") = 0,
           py::arg_v("origin", zeros, "(0.0, 0.0, 0.0)"));
     m.def("load", &loadPy, kLoadDoc, py::arg("path"));
-    m.def("write_ply", &writePy<writePlyMesh>, "Writes a Surface as binary little-endian PLY (x, y, z order, as files have it).",
-          py::arg("surface"), py::arg("path"));
+    m.def("write_ply", &writePy<writePlyMesh>,
+          "Writes a Surface as binary little-endian PLY (x, y, z order, as files have it).", py::arg("surface"),
+          py::arg("path"));
     m.def("write_obj", &writePy<writeObjMesh>, "Writes a Surface as Wavefront OBJ (x, y, z order, as files have it).",
           py::arg("surface"), py::arg("path"));
     m.def("write_stl", &writePy<writeStl>, "Writes a Surface as binary STL (x, y, z order, as files have it).",

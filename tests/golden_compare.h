@@ -38,8 +38,8 @@ struct GoldenPolicy {
 
 struct GoldenVerdict {
     bool passed = false;
-    bool updated = false;  // the baseline was written
-    std::string message;   // what happened, with the paths to look at; one line when passing
+    bool updated = false;        // the baseline was written
+    std::string message;         // what happened, with the paths to look at; one line when passing
     ImageDifference difference;  // when compared
 };
 

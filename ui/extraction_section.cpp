@@ -48,12 +48,16 @@ void extractionSection(const PanelState& state, std::vector<Action>& actions) {
     int table = static_cast<int>(extraction.table);
     ImGui::TextUnformatted("table");
     ImGui::SameLine();
-    if (ImGui::RadioButton("consistent", &table, static_cast<int>(Table::Consistent))) actions.push_back(SetTable{Table::Consistent});
+    if (ImGui::RadioButton("consistent", &table, static_cast<int>(Table::Consistent)))
+        actions.push_back(SetTable{Table::Consistent});
     ImGui::SameLine();
-    if (ImGui::RadioButton("classic", &table, static_cast<int>(Table::Classic))) actions.push_back(SetTable{Table::Classic});
+    if (ImGui::RadioButton("classic", &table, static_cast<int>(Table::Classic)))
+        actions.push_back(SetTable{Table::Classic});
     ImGui::SameLine();
-    if (ImGui::RadioButton("trilinear", &table, static_cast<int>(Table::Trilinear))) actions.push_back(SetTable{Table::Trilinear});
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the trilinear interpolant's topology (MC33); surfaces are not grown live");
+    if (ImGui::RadioButton("trilinear", &table, static_cast<int>(Table::Trilinear)))
+        actions.push_back(SetTable{Table::Trilinear});
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("the trilinear interpolant's topology (MC33); surfaces are not grown live");
 
     int method = static_cast<int>(extraction.method);
     if (ImGui::RadioButton("exhaustive", &method, static_cast<int>(Method::Exhaustive))) {

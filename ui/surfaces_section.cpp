@@ -20,8 +20,7 @@ void surfaceMenu(const SurfaceRow& row, const PanelScratch& scratch, std::vector
         actions.push_back(Select{row.id});
         actions.push_back(FrameSelection{});
     }
-    if (ImGui::MenuItem("Export"))
-        actions.push_back(Export{row.id, exportPath(scratch.exportPattern.data(), row.id)});
+    if (ImGui::MenuItem("Export")) actions.push_back(Export{row.id, exportPath(scratch.exportPattern.data(), row.id)});
     if (ImGui::MenuItem("Delete")) actions.push_back(Delete{row.id});
 }
 
@@ -70,11 +69,13 @@ void surfaceRow(const SurfaceRow& row, bool selected, const PanelScratch& scratc
 
 void selectedDetails(const SurfaceRow& row, PanelScratch& scratch, std::vector<Action>& actions) {
     if (row.presence == SurfaceRow::Gone) {
-        ImGui::TextWrapped("surface %u: no surface near its seed at isovalue %.5g; the seed is kept and the surface "
-                           "comes back where there is one again", row.id, row.absentIso);
+        ImGui::TextWrapped(
+            "surface %u: no surface near its seed at isovalue %.5g; the seed is kept and the surface "
+            "comes back where there is one again",
+            row.id, row.absentIso);
     } else if (row.presence == SurfaceRow::Merged) {
-        ImGui::TextWrapped("surface %u: merged into surface %u at isovalue %.5g; it comes back when they split",
-                           row.id, row.mergedInto, row.absentIso);
+        ImGui::TextWrapped("surface %u: merged into surface %u at isovalue %.5g; it comes back when they split", row.id,
+                           row.mergedInto, row.absentIso);
     }
     ImGui::Text("surface %u: %s triangles, %s", row.id, formatCount(row.triangles).c_str(),
                 row.growing ? "growing" : (row.closed ? "closed" : "open"));

@@ -66,8 +66,8 @@ int runBench(const BenchOptions& options) {
         for (std::size_t i = 0; i < configs.size(); ++i) {
             Config& config = configs[pass % 2 ? configs.size() - 1 - i : i];
             if (config.method == "stream") {
-                config.seconds.push_back(
-                    secondsOf([&] { config.samplesAbove = countSamplesAbove(source.volume, source.iso, config.threads); }));
+                config.seconds.push_back(secondsOf(
+                    [&] { config.samplesAbove = countSamplesAbove(source.volume, source.iso, config.threads); }));
                 continue;
             }
             const TimedExtraction run = extractTimed(
@@ -85,7 +85,10 @@ int runBench(const BenchOptions& options) {
     if (options.json) {
         nlohmann::json runs = nlohmann::json::array();
         for (const Config& c : configs) {
-            nlohmann::json run{{"method", c.method}, {"threads", c.threads}, {"seconds", median(c.seconds)}, {"seconds_all", c.seconds}};
+            nlohmann::json run{{"method", c.method},
+                               {"threads", c.threads},
+                               {"seconds", median(c.seconds)},
+                               {"seconds_all", c.seconds}};
             if (c.method == "stream") {
                 run["samples_above"] = c.samplesAbove;
             } else {
@@ -96,19 +99,17 @@ int runBench(const BenchOptions& options) {
             runs.push_back(run);
         }
         const Dims& dims = source.volume.dims();
-        nlohmann::json report{{"source", source.name},
-                              {"isovalue", source.iso},
-                              {"table", tableKindName(table)},
-                              {"dims", {dims[0], dims[1], dims[2]}},
-                              {"repeat", options.repeat},
-                              {"runs", runs}};
+        nlohmann::json report{{"source", source.name},         {"isovalue", source.iso},
+                              {"table", tableKindName(table)}, {"dims", {dims[0], dims[1], dims[2]}},
+                              {"repeat", options.repeat},      {"runs", runs}};
         std::printf("%s\n", report.dump().c_str());
         return 0;
     }
     std::printf("%s at iso %g (%s table): medians of %d interleaved runs\n", source.name.c_str(), source.iso,
                 tableKindName(table), options.repeat);
     for (const Config& c : configs) {
-        std::printf("  %-6s %2d thread%s %10.2f ms  ", c.method.c_str(), c.threads, c.threads == 1 ? " " : "s", median(c.seconds) * 1e3);
+        std::printf("  %-6s %2d thread%s %10.2f ms  ", c.method.c_str(), c.threads, c.threads == 1 ? " " : "s",
+                    median(c.seconds) * 1e3);
         if (c.method == "stream") {
             std::printf("every sample read once, %zu at or above the isovalue\n", c.samplesAbove);
             continue;
@@ -128,7 +129,9 @@ RunCommand addBenchCommand(CLI::App& app) {
         app.add_subcommand("bench", "Time several methods and thread counts in one process, interleaved (medians)");
     addSourceOptions(*command, options->source);
     addTableOption(*command, options->table);
-    command->add_option("--methods", options->methods, "Methods to time, e.g. mc,all,track (default: those three); stream reads every sample once")
+    command
+        ->add_option("--methods", options->methods,
+                     "Methods to time, e.g. mc,all,track (default: those three); stream reads every sample once")
         ->delimiter(',')
         ->check(CLI::IsMember({"mc", "track", "all", "stream"}));
     command->add_option("--threads", options->threads, "Thread counts to time, e.g. 1,2 (default)")

@@ -1,20 +1,20 @@
 // isotrack extract: one mesh out of a volume, as PLY and/or a JSON summary.
 #include <CLI/CLI.hpp>
-#include <cstdio>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <stdexcept>
-#include <string>
 #include <memory>
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <thread>
 #include <vector>
 
-#include "isotrack/errors.h"
 #include <nlohmann/json.hpp>
+#include "isotrack/errors.h"
 
 #include "cli/commands.h"
 #include "cli/source.h"
@@ -41,12 +41,12 @@ struct ExtractOptions {
     int threads = defaultThreads();
     int repeat = 1;
     std::string out;
-    std::string outDir;     // --method all: one file per surface
-    std::string outFormat;  // of the --out-dir files: ply, obj or stl
+    std::string outDir;         // --method all: one file per surface
+    std::string outFormat;      // of the --out-dir files: ply, obj or stl
     std::string frame = "lps";  // of the written meshes, the seed and the bounds
     bool json = false;
-    double minPersistence = 0.0;  // --method tree: prune the tree's leaf branches below it
-    std::size_t largestArcs = 0;  // --method tree: only the surfaces of the arcs sweeping the most samples
+    double minPersistence = 0.0;      // --method tree: prune the tree's leaf branches below it
+    std::size_t largestArcs = 0;      // --method tree: only the surfaces of the arcs sweeping the most samples
     std::vector<std::string> arcIso;  // --method tree: I:V, surface I at its own isovalue V
 };
 
@@ -56,29 +56,25 @@ struct Extraction {
     std::optional<std::size_t> components;
     std::optional<std::size_t> cellsVisited;
     nlohmann::json surfaces = nlohmann::json::array();
-    std::vector<std::string> surfaceFiles;  // for --out-dir
+    std::vector<std::string> surfaceFiles;                   // for --out-dir
     std::size_t triangles = 0, vertices = 0, meshBytes = 0;  // of every surface together
-    std::vector<double> seconds;  // one per run
-    std::size_t residentBefore = 0, residentPeak = 0;  // bytes, around the first run
-    double treeSeconds = 0.0;  // --method tree: building (and simplifying) the contour tree, not timed with the extraction
+    std::vector<double> seconds;                             // one per run
+    std::size_t residentBefore = 0, residentPeak = 0;        // bytes, around the first run
+    double treeSeconds =
+        0.0;  // --method tree: building (and simplifying) the contour tree, not timed with the extraction
 };
 
 nlohmann::json surfaceJson(const SurfaceStats& s) {
-    nlohmann::json j{{"triangles", s.triangles},
-                     {"vertices", s.vertices},
-                     {"cells_visited", s.cellsVisited},
-                     {"bytes", s.bytes},
-                     {"seconds", s.seconds},
-                     {"bounds", {s.boundsMin, s.boundsMax}},
-                     {"area", s.area},
-                     {"closed", s.closed},
-                     {"touches_border", s.touchesBorder}};
+    nlohmann::json j{{"triangles", s.triangles}, {"vertices", s.vertices}, {"cells_visited", s.cellsVisited},
+                     {"bytes", s.bytes},         {"seconds", s.seconds},   {"bounds", {s.boundsMin, s.boundsMax}},
+                     {"area", s.area},           {"closed", s.closed},     {"touches_border", s.touchesBorder}};
     j["enclosed_volume"] = s.enclosedVolume ? nlohmann::json(*s.enclosedVolume) : nlohmann::json(nullptr);
     if (s.euler) j["euler"] = *s.euler;
     if (s.borderLoops) j["border_loops"] = *s.borderLoops;
     if (s.genus) j["genus"] = *s.genus;
     if (s.arc) j["arc"] = *s.arc;
-    if (s.persistence) j["persistence"] = std::isfinite(*s.persistence) ? nlohmann::json(*s.persistence) : nlohmann::json(nullptr);
+    if (s.persistence)
+        j["persistence"] = std::isfinite(*s.persistence) ? nlohmann::json(*s.persistence) : nlohmann::json(nullptr);
     return j;
 }
 
@@ -102,7 +98,8 @@ void applyArcIsovalues(const ExtractOptions& options, const Volume& volume, cons
                              std::to_string(surfaces.size()) + " at --iso)");
         }
         const std::size_t arc = followArc(tree, *surfaces[index].stats.arc, iso);
-        if (arc == tree.arcs.size()) throw InputError("--arc-iso " + item + ": the surface vanishes before that isovalue");
+        if (arc == tree.arcs.size())
+            throw InputError("--arc-iso " + item + ": the surface vanishes before that isovalue");
         const ArcSeed seed = arcSeeds(tree, volume, iso, {arc}).front();
         Surface surface = trackSurface(volume, iso, seed.edge, TableKind::Consistent, 1);
         surface.stats.arc = arc;
@@ -117,7 +114,8 @@ void applyArcIsovalues(const ExtractOptions& options, const Volume& volume, cons
 void appendSurface(const Surface& surface, std::int32_t component, Extraction& out) {
     const auto base = static_cast<std::uint32_t>(out.mesh.vertices.size());
     out.mesh.vertices.insert(out.mesh.vertices.end(), surface.mesh.vertices.begin(), surface.mesh.vertices.end());
-    out.mesh.vertexEdges.insert(out.mesh.vertexEdges.end(), surface.mesh.vertexEdges.begin(), surface.mesh.vertexEdges.end());
+    out.mesh.vertexEdges.insert(out.mesh.vertexEdges.end(), surface.mesh.vertexEdges.begin(),
+                                surface.mesh.vertexEdges.end());
     for (std::uint32_t index : surface.mesh.indices) out.mesh.indices.push_back(base + index);
     out.faceComponent.insert(out.faceComponent.end(), surface.mesh.triangleCount(), component);
 }
@@ -280,8 +278,8 @@ int runExtract(const ExtractOptions& options) {
     const double seconds = median(result.seconds);
     if (!options.out.empty()) writeMesh(options.out, result.mesh, perSurface ? &result.faceComponent : nullptr);
 
-    const std::size_t cellsTotal =
-        std::size_t(std::max(dims[0] - 1, 0)) * std::size_t(std::max(dims[1] - 1, 0)) * std::size_t(std::max(dims[2] - 1, 0));
+    const std::size_t cellsTotal = std::size_t(std::max(dims[0] - 1, 0)) * std::size_t(std::max(dims[1] - 1, 0)) *
+                                   std::size_t(std::max(dims[2] - 1, 0));
     // The same triangles as an unindexed soup of positions and normals.
     const std::size_t soupBytes = result.triangles * 3 * sizeof(Vertex);
     if (options.json) {
@@ -307,7 +305,8 @@ int runExtract(const ExtractOptions& options) {
             {"mesh_to_soup", soupBytes ? double(result.meshBytes) / double(soupBytes) : 0.0},
             {"resident_before_bytes", result.residentBefore},
             {"peak_resident_bytes", result.residentPeak},
-            {"peak_above_start_bytes", result.residentPeak > result.residentBefore ? result.residentPeak - result.residentBefore : 0},
+            {"peak_above_start_bytes",
+             result.residentPeak > result.residentBefore ? result.residentPeak - result.residentBefore : 0},
             {"volume_bytes", source.volume.byteSize()},
         };
         if (options.method == "tree") report["tree_seconds"] = result.treeSeconds;
@@ -322,8 +321,8 @@ int runExtract(const ExtractOptions& options) {
                     options.method.c_str(), seconds * 1e3, options.out.empty() ? "" : " -> ", options.out.c_str());
         if (options.method == "tree") std::printf("contour tree built in %.3f ms\n", result.treeSeconds * 1e3);
         if (!options.outDir.empty())
-            std::printf("%zu surface file%s in %s\n", result.surfaceFiles.size(), result.surfaceFiles.size() == 1 ? "" : "s",
-                        options.outDir.c_str());
+            std::printf("%zu surface file%s in %s\n", result.surfaceFiles.size(),
+                        result.surfaceFiles.size() == 1 ? "" : "s", options.outDir.c_str());
     }
     return 0;
 }
@@ -335,37 +334,43 @@ RunCommand addExtractCommand(CLI::App& app) {
     CLI::App* command = app.add_subcommand("extract", "Extract an isosurface and report or save it");
     addSourceOptions(*command, options->source);
     addTableOption(*command, options->table);
-    command->add_option("--method", options->method,
-                        "mc: every cell, one mesh; track: the one surface through --seed; all: every surface separately; "
-                        "tree: every surface, each from its contour-tree arc's seed")
+    command
+        ->add_option("--method", options->method,
+                     "mc: every cell, one mesh; track: the one surface through --seed; all: every surface separately; "
+                     "tree: every surface, each from its contour-tree arc's seed")
         ->check(CLI::IsMember({"mc", "track", "all", "tree"}));
-    command->add_option("--min-persistence", options->minPersistence,
-                        "With --method tree: leave out the surfaces of leaf branches less persistent than P")
+    command
+        ->add_option("--min-persistence", options->minPersistence,
+                     "With --method tree: leave out the surfaces of leaf branches less persistent than P")
         ->check(CLI::NonNegativeNumber);
     command->add_option("--largest-arcs", options->largestArcs,
                         "With --method tree: track only the N arcs crossing --iso that sweep the most samples");
-    command->add_option("--arc-iso", options->arcIso,
-                        "With --method tree: I:V,... surface I (its rank at --iso, 0 the largest) at its own "
-                        "isovalue V, followed along the contour tree; the others stay")
+    command
+        ->add_option("--arc-iso", options->arcIso,
+                     "With --method tree: I:V,... surface I (its rank at --iso, 0 the largest) at its own "
+                     "isovalue V, followed along the contour tree; the others stay")
         ->delimiter(',');
-    command->add_option("--seed", options->seed,
-                        "Point X,Y,Z in --frame: tracking starts at the crossed edge nearest to it")
+    command
+        ->add_option("--seed", options->seed,
+                     "Point X,Y,Z in --frame: tracking starts at the crossed edge nearest to it")
         ->delimiter(',')
         ->expected(3);
-    command->add_option("--threads", options->threads, "Threads (default: all cores)")
-        ->check(CLI::Range(1, 256));
+    command->add_option("--threads", options->threads, "Threads (default: all cores)")->check(CLI::Range(1, 256));
     command->add_option("--repeat", options->repeat, "Run the extraction K times; seconds is the median")
         ->check(CLI::Range(1, 1000));
-    command->add_option("--out", options->out,
-                        "Write the mesh to FILE: .ply (binary, with a per-face component for --method all), .obj or .stl");
+    command->add_option(
+        "--out", options->out,
+        "Write the mesh to FILE: .ply (binary, with a per-face component for --method all), .obj or .stl");
     auto* outDir = command->add_option("--out-dir", options->outDir,
                                        "With --method all: write each surface to DIR/surface_000.EXT, largest first");
-    command->add_option("--out-format", options->outFormat,
-                        "Format of the --out-dir files: ply, obj or stl (default: --out's extension, else ply)")
+    command
+        ->add_option("--out-format", options->outFormat,
+                     "Format of the --out-dir files: ply, obj or stl (default: --out's extension, else ply)")
         ->check(CLI::IsMember({"ply", "obj", "stl"}))
         ->needs(outDir);
-    command->add_option("--frame", options->frame,
-                        "Frame of the written meshes, --seed and bounds: lps (world, default), ras, or voxel (indices)")
+    command
+        ->add_option("--frame", options->frame,
+                     "Frame of the written meshes, --seed and bounds: lps (world, default), ras, or voxel (indices)")
         ->check(CLI::IsMember({"lps", "ras", "voxel"}, CLI::ignore_case));
     command->add_flag("--json", options->json, "Print one JSON object on stdout");
     return [options] { return runExtract(*options); };

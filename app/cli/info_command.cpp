@@ -97,7 +97,8 @@ nlohmann::json infoJson(const InfoOptions& options, const Volume& volume, const 
         {"scalar_type", scalarTypeName(volume.type())},
         {"spacing", volume.spacing()},
         {"origin", volume.origin()},
-        {"extent", {(d[0] - 1) * volume.spacing()[0], (d[1] - 1) * volume.spacing()[1], (d[2] - 1) * volume.spacing()[2]}},
+        {"extent",
+         {(d[0] - 1) * volume.spacing()[0], (d[1] - 1) * volume.spacing()[1], (d[2] - 1) * volume.spacing()[2]}},
         {"frame", "lps"},
         {"direction", volume.direction()},  // the index axes' unit vectors
         {"orientation", orientationCode(volume.direction())},
@@ -129,7 +130,8 @@ void printInfo(const InfoOptions& options, const Volume& volume, const Histogram
     // World frame LPS; each row is an index axis's unit vector, as NRRD's space directions.
     const Mat3d& m = volume.direction();
     for (std::size_t a = 0; a < 3; ++a)
-        std::printf("  %-9s %.10g %.10g %.10g (%c axis)\n", a == 0 ? "direction" : "", m[a][0], m[a][1], m[a][2], "ijk"[a]);
+        std::printf("  %-9s %.10g %.10g %.10g (%c axis)\n", a == 0 ? "direction" : "", m[a][0], m[a][1], m[a][2],
+                    "ijk"[a]);
     std::printf("  orient    %s (world frame LPS)\n", orientationCode(m).c_str());
     const auto box = worldBounds(volume);
     std::printf("  world box %.10g %.10g %.10g .. %.10g %.10g %.10g\n", box[0][0], box[0][1], box[0][2], box[1][0],
@@ -151,8 +153,8 @@ void printInfo(const InfoOptions& options, const Volume& volume, const Histogram
         const std::uint64_t c = h.counts[b];
         int bar = peak ? int(std::llround(double(c) / double(peak) * kBarWidth)) : 0;
         if (c > 0 && bar == 0) bar = 1;  // a bin that holds anything shows
-        std::printf("  %12.6g  %-*s %llu\n", h.min + double(b) * h.binWidth(), kBarWidth, std::string(std::size_t(bar), '#').c_str(),
-                    static_cast<unsigned long long>(c));
+        std::printf("  %12.6g  %-*s %llu\n", h.min + double(b) * h.binWidth(), kBarWidth,
+                    std::string(std::size_t(bar), '#').c_str(), static_cast<unsigned long long>(c));
     }
 }
 
@@ -185,8 +187,10 @@ int runInfo(const InfoOptions& options) {
 RunCommand addInfoCommand(CLI::App& app) {
     auto options = std::make_shared<InfoOptions>();
     CLI::App* command = app.add_subcommand("info", "Describe a volume file: format, size, type, geometry, values");
-    auto* volume = command->add_option("--volume", options->path,
-                                       "Volume file (.nrrd .nhdr .nii .nii.gz .mhd .mha .vtk .dcm, a DICOM folder or DICOMDIR; raw with --dims)")
+    auto* volume = command
+                       ->add_option("--volume", options->path,
+                                    "Volume file (.nrrd .nhdr .nii .nii.gz .mhd .mha .vtk .dcm, a DICOM folder or "
+                                    "DICOMDIR; raw with --dims)")
                        ->required();
     addRawOptions(*command, options->raw, volume);
     command->add_option("--bins", options->bins, "Histogram bins (default 16)")->check(CLI::Range(1, 256));

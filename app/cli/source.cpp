@@ -45,15 +45,18 @@ void addRawOptions(CLI::App& command, RawOptions& raw, CLI::Option* volume) {
                      ->delimiter(',')
                      ->expected(3)
                      ->check(CLI::PositiveNumber);
-    auto* type = command.add_option("--type", raw.type, "Raw sample type (with --dims)")->check(CLI::IsMember(typeNames));
+    auto* type =
+        command.add_option("--type", raw.type, "Raw sample type (with --dims)")->check(CLI::IsMember(typeNames));
     auto* spacing = command.add_option("--spacing", raw.spacing, "Raw sample spacing SX,SY,SZ (default 1,1,1)")
                         ->delimiter(',')
                         ->expected(3)
                         ->check(CLI::PositiveNumber);
     auto* endian = command.add_option("--endian", raw.endian, "Raw byte order: little (default) or big")
                        ->check(CLI::IsMember({"little", "big"}));
-    command.add_option("--series", raw.series,
-                       "DICOM folder or DICOMDIR: the series to read, by SeriesInstanceUID or number in `info` (default: the largest)")
+    command
+        .add_option("--series", raw.series,
+                    "DICOM folder or DICOMDIR: the series to read, by SeriesInstanceUID or number in `info` (default: "
+                    "the largest)")
         ->needs(volume)
         ->excludes(dims);
     dims->needs(volume);
@@ -66,8 +69,9 @@ void addRawOptions(CLI::App& command, RawOptions& raw, CLI::Option* volume) {
 void addSourceOptions(CLI::App& command, SourceOptions& options) {
     std::string names;
     for (const FieldInfo& field : builtinFields()) names += std::string(names.empty() ? "" : ", ") + field.name;
-    auto* volume = command.add_option("--volume", options.volumePath,
-                                      "Volume file (.nrrd .nhdr .nii .nii.gz .mhd .mha .vtk .dcm, a DICOM folder or DICOMDIR; raw with --dims)");
+    auto* volume = command.add_option(
+        "--volume", options.volumePath,
+        "Volume file (.nrrd .nhdr .nii .nii.gz .mhd .mha .vtk .dcm, a DICOM folder or DICOMDIR; raw with --dims)");
     auto* field = command.add_option("--field", options.fieldSpec, "Built-in field NAME[:N] (" + names + ")");
     volume->excludes(field);
     field->excludes(volume);

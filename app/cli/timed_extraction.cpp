@@ -6,8 +6,10 @@
 
 namespace isotrack::cli {
 
-ExtractRequest extractRequest(Method method, double iso, TableKind table, int threads, const std::vector<double>& seed) {
-    if (method == Method::Track && seed.size() != 3) throw InputError("--method track needs --seed X,Y,Z (world coordinates)");
+ExtractRequest extractRequest(Method method, double iso, TableKind table, int threads,
+                              const std::vector<double>& seed) {
+    if (method == Method::Track && seed.size() != 3)
+        throw InputError("--method track needs --seed X,Y,Z (world coordinates)");
     ExtractRequest request;
     request.method = method;
     request.iso = iso;

@@ -51,7 +51,8 @@ struct EglApi {
     EglApi() {
         if (!library.ok()) throw EglUnavailable("EGL is unavailable (" + library.error() + ")");
         getProcAddress = reinterpret_cast<PFNEGLGETPROCADDRESSPROC>(library.symbol("eglGetProcAddress"));
-        if (getProcAddress == nullptr) throw EglUnavailable("EGL is unavailable: " + library.name() + " lacks eglGetProcAddress");
+        if (getProcAddress == nullptr)
+            throw EglUnavailable("EGL is unavailable: " + library.name() + " lacks eglGetProcAddress");
         require("eglGetError", getError);
         require("eglQueryString", queryString);
         require("eglInitialize", initialize);
@@ -232,22 +233,26 @@ std::string makeContext(const EglApi& api, EGLDisplay display, EglContext::Handl
     if (!api.bindApi(EGL_OPENGL_API)) return "no desktop OpenGL (eglBindAPI), " + errorText(api);
 
     // Pixels go to framebuffer objects; the config matters only for a pbuffer fallback.
-    const EGLint configAttributes[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
-                                       EGL_RED_SIZE,     8,               EGL_GREEN_SIZE,      8,
-                                       EGL_BLUE_SIZE,    8,               EGL_NONE};
+    const EGLint configAttributes[] = {EGL_SURFACE_TYPE,
+                                       EGL_PBUFFER_BIT,
+                                       EGL_RENDERABLE_TYPE,
+                                       EGL_OPENGL_BIT,
+                                       EGL_RED_SIZE,
+                                       8,
+                                       EGL_GREEN_SIZE,
+                                       8,
+                                       EGL_BLUE_SIZE,
+                                       8,
+                                       EGL_NONE};
     EGLConfig config = nullptr;
     EGLint configs = 0;
     if (!api.chooseConfig(display, configAttributes, &config, 1, &configs) || configs < 1) {
         if (!EglApi::hasWord(extensions, "EGL_KHR_no_config_context")) return "no OpenGL config";
         config = EGL_NO_CONFIG_KHR;
     }
-    const EGLint contextAttributes[] = {EGL_CONTEXT_MAJOR_VERSION,
-                                        3,
-                                        EGL_CONTEXT_MINOR_VERSION,
-                                        3,
-                                        EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                        EGL_NONE};
+    const EGLint contextAttributes[] = {
+        EGL_CONTEXT_MAJOR_VERSION,           3,       EGL_CONTEXT_MINOR_VERSION, 3, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
     handles.context = api.createContext(display, config, EGL_NO_CONTEXT, contextAttributes);
     if (handles.context == EGL_NO_CONTEXT) return "no OpenGL 3.3 core context, " + errorText(api);
     if (!EglApi::hasWord(extensions, "EGL_KHR_surfaceless_context")) {

@@ -29,7 +29,8 @@ struct OsmesaApi {
     decltype(&::OSMesaGetProcAddress) getProcAddress = nullptr;
 
     OsmesaApi() {
-        if (!library.ok()) throw gl::Error("OSMesa is unavailable (" + library.error() + "; Debian package libosmesa6)");
+        if (!library.ok())
+            throw gl::Error("OSMesa is unavailable (" + library.error() + "; Debian package libosmesa6)");
         bind(library, "OSMesaCreateContextAttribs", createContextAttribs);
         bind(library, "OSMesaMakeCurrent", makeCurrent);
         bind(library, "OSMesaDestroyContext", destroyContext);

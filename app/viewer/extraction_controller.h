@@ -22,7 +22,7 @@ public:
 
     // ---- what is wanted ----
     const VolumeSource& source() const { return source_; }
-    void setSource(VolumeSource source);  // also back to the source's default isovalue
+    void setSource(VolumeSource source);                       // also back to the source's default isovalue
     const std::optional<double>& iso() const { return iso_; }  // nullopt: the source's default
     void setIso(double iso) { iso_ = iso; }
     TableKind table() const { return table_; }

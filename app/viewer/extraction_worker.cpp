@@ -197,7 +197,8 @@ ExtractionResult ExtractionWorker::work(const ExtractionRequest& request) {
 
 std::shared_ptr<const LoadedVolume> ExtractionWorker::volumeFor(const VolumeSource& source, double& loadMs) {
     if (cache_ && cache_->source == source) return cache_;
-    setPhase(source.kind == VolumeSource::Kind::Field ? "building " + source.text : "loading " + displayName(source), 0.0);
+    setPhase(source.kind == VolumeSource::Kind::Field ? "building " + source.text : "loading " + displayName(source),
+             0.0);
     const auto start = Clock::now();
     cache_.reset();  // the old volume goes before the new one is read
     tree_.reset();

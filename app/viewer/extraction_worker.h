@@ -70,9 +70,9 @@ struct ExtractionRequest {
 
 // Where a seed went at the result's isovalue.
 struct SeedResult {
-    std::uint32_t surface = 0;          // the viewer's id, as requested
-    std::optional<FollowedSeed> seed;   // nullopt: no surface near it at this isovalue
-    int index = -1;                     // into ExtractionResult::surfaces; shared when seeds' surfaces merged
+    std::uint32_t surface = 0;         // the viewer's id, as requested
+    std::optional<FollowedSeed> seed;  // nullopt: no surface near it at this isovalue
+    int index = -1;                    // into ExtractionResult::surfaces; shared when seeds' surfaces merged
 };
 
 struct ExtractionResult {
@@ -155,7 +155,7 @@ private:
     // Worker-thread only.
     std::shared_ptr<const LoadedVolume> cache_;
     std::unique_ptr<const ContourTree> tree_;  // cache_'s contour tree, built on the first tree request
-    std::map<std::string, double> lastMs_;  // per source and method: how long extraction took last time
+    std::map<std::string, double> lastMs_;     // per source and method: how long extraction took last time
 
     std::thread thread_;
 };

@@ -190,7 +190,8 @@ void Profiler::writeTrace() {
                          {"arena_moved_bytes", c.arenaMovedBytes},
                          {"gpu_ms", record.gpuUs >= 0.0 ? json(record.gpuUs / 1000.0) : json(nullptr)}};
         events.push_back(std::move(frame));
-        for (const Span& span : record.spans) events.push_back(complete(stageName(span.stage), "stage", 1, span.startUs, span.durationUs));
+        for (const Span& span : record.spans)
+            events.push_back(complete(stageName(span.stage), "stage", 1, span.startUs, span.durationUs));
         if (record.gpuUs >= 0.0) events.push_back(complete("gpu draw", "gpu", 2, record.gpuStartUs, record.gpuUs));
         events.push_back({{"name", "memory"},
                           {"ph", "C"},
@@ -198,7 +199,8 @@ void Profiler::writeTrace() {
                           {"ts", record.startUs},
                           {"args", {{"cpu_bytes", c.cpuBytes}, {"gpu_bytes", c.gpuBytes}}}});
     }
-    for (const WorkerSpan& span : workerSpans_) events.push_back(complete(span.name, "worker", 3, span.startUs, span.durationUs));
+    for (const WorkerSpan& span : workerSpans_)
+        events.push_back(complete(span.name, "worker", 3, span.startUs, span.durationUs));
     const json trace = {{"traceEvents", events}, {"displayTimeUnit", "ms"}};
     writeFileSafely(tracePath_, trace.dump() + '\n');
     tracePath_.clear();

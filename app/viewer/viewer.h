@@ -38,7 +38,7 @@ namespace isotrack::viewer {
 struct ViewerOptions {
     std::string volumePath;
     std::optional<RawLayout> raw;  // --dims and friends: read volumePath as raw samples
-    std::string fieldSpec;  // default when neither is given: kDefaultField
+    std::string fieldSpec;         // default when neither is given: kDefaultField
     std::optional<double> iso;
     std::string table = "consistent";
     std::string method = "all";

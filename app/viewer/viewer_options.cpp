@@ -40,9 +40,10 @@ ViewerCommandLine addViewerOptions(CLI::App& app) {
                       "Isovalue (default: the field's own, or the valley above a file's tallest histogram peak)");
     group->add_option("--table", o.table, "Triangle table: consistent (default), classic or trilinear (no live growth)")
         ->check(CLI::IsMember({"consistent", "classic", "trilinear"}));
-    group->add_option("--method", o.method,
-                      "mc: exhaustive; track: surfaces you click; all: every surface (default); "
-                      "tree: every surface from the contour tree")
+    group
+        ->add_option("--method", o.method,
+                     "mc: exhaustive; track: surfaces you click; all: every surface (default); "
+                     "tree: every surface from the contour tree")
         ->check(CLI::IsMember({"mc", "track", "all", "tree"}));
     group
         ->add_option("--frame", o.frame,

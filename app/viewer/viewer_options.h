@@ -17,7 +17,7 @@ struct ViewerOptions;
 
 struct ViewerCommandLine {
     std::shared_ptr<ViewerOptions> options;
-    std::shared_ptr<std::string> size;  // WIDTHxHEIGHT, parsed by run()
+    std::shared_ptr<std::string> size;     // WIDTHxHEIGHT, parsed by run()
     std::shared_ptr<cli::RawOptions> raw;  // --dims --type --spacing --endian
 };
 

@@ -109,8 +109,7 @@ void Viewer::trackFrom(const Vec3d& point, std::optional<std::uint32_t> hit) {
     SurfaceStructure* clicked = hit ? scene_.find(*hit) : nullptr;
     const TableKind table = extraction_.table();
     const bool every = extraction_.method() == ui::Method::All || extraction_.method() == ui::Method::Tree;
-    if (clicked != nullptr && !clicked->tracked() && every &&
-        clicked->containsEdge(seed)) {
+    if (clicked != nullptr && !clicked->tracked() && every && clicked->containsEdge(seed)) {
         clicked->startTracking(volume, iso, table, seed, point);
         scene_.selected = clicked->id();
         picks_.back()["tracked_surface"] = clicked->id();

@@ -15,9 +15,9 @@ namespace isotrack::testing {
 
 struct Topology {
     std::size_t vertices = 0, edges = 0, faces = 0;
-    std::size_t boundaryEdges = 0;         // used by one triangle
+    std::size_t boundaryEdges = 0;          // used by one triangle
     std::size_t interiorBoundaryEdges = 0;  // used by one triangle, not on the volume's border
-    std::size_t nonManifoldEdges = 0;      // used by more than two triangles
+    std::size_t nonManifoldEdges = 0;       // used by more than two triangles
     std::size_t repeatedDirectedEdges = 0;  // a side wound the same way twice: inconsistent winding
     long euler() const { return long(vertices) - long(edges) + long(faces); }
 };
@@ -49,8 +49,8 @@ inline Topology topology(const Mesh& mesh, const Dims& dims) {
         if (uses > 2) ++t.nonManifoldEdges;
         if (uses == 1) {
             ++t.boundaryEdges;
-            const bool border = edgeOnBorder(mesh.vertexEdges[edge.first], dims) &&
-                                edgeOnBorder(mesh.vertexEdges[edge.second], dims);
+            const bool border =
+                edgeOnBorder(mesh.vertexEdges[edge.first], dims) && edgeOnBorder(mesh.vertexEdges[edge.second], dims);
             if (!border) ++t.interiorBoundaryEdges;
         }
     }
@@ -58,7 +58,9 @@ inline Topology topology(const Mesh& mesh, const Dims& dims) {
 }
 
 inline std::uint64_t edgeKey(const GridEdge& e, const Dims& dims) {
-    return (std::uint64_t(e.x) + std::uint64_t(dims[0]) * (std::uint64_t(e.y) + std::uint64_t(dims[1]) * std::uint64_t(e.z))) * 3 +
+    return (std::uint64_t(e.x) +
+            std::uint64_t(dims[0]) * (std::uint64_t(e.y) + std::uint64_t(dims[1]) * std::uint64_t(e.z))) *
+               3 +
            std::uint64_t(e.axis);
 }
 

@@ -45,9 +45,11 @@ void report(const std::string& name, const std::string& baseline, const render::
     const render::Image expected = render::readPng(baseline);
     const std::size_t any = compareImages(expected, actual, 0).differentPixels;
     const double pixels = double(actual.width) * double(actual.height);
-    std::fprintf(stderr, "golden %s: %zu pixels differ at all (%.3f%%), largest channel delta %d; %zu (%.3f%%) by more than %d\n",
-                 name.c_str(), any, 100.0 * double(any) / pixels, difference.largestChannelDelta,
-                 difference.differentPixels, 100.0 * double(difference.differentPixels) / pixels, channelTolerance);
+    std::fprintf(
+        stderr,
+        "golden %s: %zu pixels differ at all (%.3f%%), largest channel delta %d; %zu (%.3f%%) by more than %d\n",
+        name.c_str(), any, 100.0 * double(any) / pixels, difference.largestChannelDelta, difference.differentPixels,
+        100.0 * double(difference.differentPixels) / pixels, channelTolerance);
 }
 
 }  // namespace

@@ -206,10 +206,10 @@ int sweep(char** argv, long minApplied) {
     const long applied = done["extractions_applied"].get<long>() - still["extractions_applied"].get<long>();
     const double quiet = medianFrameMs(trace, before["frame"].get<long>(), still["frame"].get<long>());
     const double moving = medianFrameMs(trace, still["frame"].get<long>(), swept["frame"].get<long>());
-    std::printf("sweep: %ld frames, %ld extractions applied during it and %ld by its end; median frame %.2f ms "
-                "while sweeping, %.2f ms before (%.2fx)\n",
-                swept["frame"].get<long>() - still["frame"].get<long>(), duringSweep, applied, moving, quiet,
-                moving / quiet);
+    std::printf(
+        "sweep: %ld frames, %ld extractions applied during it and %ld by its end; median frame %.2f ms "
+        "while sweeping, %.2f ms before (%.2fx)\n",
+        swept["frame"].get<long>() - still["frame"].get<long>(), duringSweep, applied, moving, quiet, moving / quiet);
     if (applied < minApplied) {
         return fail(std::to_string(applied) + " extractions applied, expected at least " + std::to_string(minApplied));
     }
@@ -220,9 +220,10 @@ int surfaces(const std::string& path) {
     const json s = readJson(path);
     std::size_t index = 0;
     for (const json& surface : s["surfaces"]) {
-        std::printf("%zu %s %s %d %d %s %d\n", index++, surface["id"].dump().c_str(), surface["triangles"].dump().c_str(),
-                    surface.value("tracked", false) ? 1 : 0, surface.value("selected", false) ? 1 : 0,
-                    surface.value("state", std::string("shown")).c_str(), surface.value("visible", true) ? 1 : 0);
+        std::printf("%zu %s %s %d %d %s %d\n", index++, surface["id"].dump().c_str(),
+                    surface["triangles"].dump().c_str(), surface.value("tracked", false) ? 1 : 0,
+                    surface.value("selected", false) ? 1 : 0, surface.value("state", std::string("shown")).c_str(),
+                    surface.value("visible", true) ? 1 : 0);
     }
     return 0;
 }

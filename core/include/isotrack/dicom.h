@@ -23,8 +23,8 @@ struct DicomSeries {
     std::string uid;          // SeriesInstanceUID
     std::string description;  // SeriesDescription, may be empty
     std::string modality;
-    std::size_t images = 0;   // files; the frames of a multi-frame file count as its slices
-    Dims dims{0, 0, 0};       // columns, rows, slices
+    std::size_t images = 0;  // files; the frames of a multi-frame file count as its slices
+    Dims dims{0, 0, 0};      // columns, rows, slices
 };
 
 // True for a folder, a file named DICOMDIR, or a .dcm/.dicom file.

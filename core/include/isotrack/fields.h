@@ -42,8 +42,8 @@ double fieldDefaultIso(const std::string& name);
 
 // Analytic geometry, in voxel units, for tests to compare against.
 double sphereFieldRadius(int n);
-Vec3d sphereFieldCenter(int n);            // also the centre of "torus" and "shells"
-std::array<double, 2> torusFieldRadii(int n);  // {ring radius, tube radius}
+Vec3d sphereFieldCenter(int n);                 // also the centre of "torus" and "shells"
+std::array<double, 2> torusFieldRadii(int n);   // {ring radius, tube radius}
 std::array<double, 3> shellsFieldRadii(int n);  // {ball, shell inner wall, shell outer wall}
 
 struct Blob {

@@ -30,7 +30,8 @@ struct DefaultInitAllocator : std::allocator<T> {
     }
     template <class U, class... Args>
     void construct(U* p, Args&&... args) {
-        std::allocator_traits<std::allocator<T>>::construct(static_cast<std::allocator<T>&>(*this), p, std::forward<Args>(args)...);
+        std::allocator_traits<std::allocator<T>>::construct(static_cast<std::allocator<T>&>(*this), p,
+                                                            std::forward<Args>(args)...);
     }
 };
 
@@ -63,7 +64,8 @@ class PackedGridEdge {
 public:
     PackedGridEdge() = default;
     PackedGridEdge(const GridEdge& e)  // NOLINT(google-explicit-constructor): lossless for coordinates < 2^20
-        : bits_(std::uint64_t(e.x) | std::uint64_t(e.y) << 20 | std::uint64_t(e.z) << 40 | std::uint64_t(e.axis) << 60) {}
+        : bits_(std::uint64_t(e.x) | std::uint64_t(e.y) << 20 | std::uint64_t(e.z) << 40 |
+                std::uint64_t(e.axis) << 60) {}
     operator GridEdge() const {  // NOLINT(google-explicit-constructor)
         return GridEdge{int(bits_ & kMask), int(bits_ >> 20 & kMask), int(bits_ >> 40 & kMask), int(bits_ >> 60)};
     }
@@ -80,7 +82,9 @@ struct Mesh {
 
     std::size_t triangleCount() const { return indices.size() / 3; }
     // What a GPU holds of the mesh: vertices and indices.
-    std::size_t drawByteSize() const { return vertices.size() * sizeof(Vertex) + indices.size() * sizeof(std::uint32_t); }
+    std::size_t drawByteSize() const {
+        return vertices.size() * sizeof(Vertex) + indices.size() * sizeof(std::uint32_t);
+    }
     // Everything, with the grid edge behind each vertex.
     std::size_t byteSize() const { return drawByteSize() + vertexEdges.size() * sizeof(PackedGridEdge); }
 };

@@ -36,8 +36,8 @@ GridEdge edgeOfTriangle(const Mesh& mesh, std::size_t triangle, const Vec3d& wor
 // while its data is in cache. With `threads` > 1 (up to 64) the threads
 // walk the surface together: the same triangles and vertices, but in an order
 // that varies from run to run (and area and volume may differ in their last bits).
-Surface trackSurface(const Volume& volume, double iso, const GridEdge& seed,
-                     TableKind table = TableKind::Consistent, int threads = 1);
+Surface trackSurface(const Volume& volume, double iso, const GridEdge& seed, TableKind table = TableKind::Consistent,
+                     int threads = 1);
 // trackSurface's most threads (more would only add seams; the vertex ids of each
 // keep 2^26 vertices).
 constexpr int kMaxTrackThreads = 64;

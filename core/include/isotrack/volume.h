@@ -59,9 +59,7 @@ public:
     const Mat3d& direction() const { return direction_; }
     void setDirection(const Mat3d& direction) { direction_ = direction; }
 
-    std::size_t sampleCount() const {
-        return std::size_t(dims_[0]) * std::size_t(dims_[1]) * std::size_t(dims_[2]);
-    }
+    std::size_t sampleCount() const { return std::size_t(dims_[0]) * std::size_t(dims_[1]) * std::size_t(dims_[2]); }
     std::size_t byteSize() const { return view_ ? viewBytes_ : bytes_.size(); }
     std::size_t index(int x, int y, int z) const {
         return std::size_t(x) + std::size_t(dims_[0]) * (std::size_t(y) + std::size_t(dims_[1]) * std::size_t(z));
@@ -74,9 +72,13 @@ public:
     const std::byte* bytes() const { return view_ ? view_ : bytes_.data(); }
 
     template <class T>
-    T* data() { return reinterpret_cast<T*>(bytes()); }
+    T* data() {
+        return reinterpret_cast<T*>(bytes());
+    }
     template <class T>
-    const T* data() const { return reinterpret_cast<const T*>(bytes()); }
+    const T* data() const {
+        return reinterpret_cast<const T*>(bytes());
+    }
 
     // Sample as double, whatever the native type. For tests and tools, not inner loops.
     double value(int x, int y, int z) const;

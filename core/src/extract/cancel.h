@@ -9,7 +9,9 @@
 
 namespace isotrack::detail {
 
-inline bool cancelled(const std::atomic<bool>* cancel) { return cancel != nullptr && cancel->load(std::memory_order_relaxed); }
+inline bool cancelled(const std::atomic<bool>* cancel) {
+    return cancel != nullptr && cancel->load(std::memory_order_relaxed);
+}
 
 // extractAllSurfaces, abandoned (returning no surface) when `cancel` is set
 // between the labelled pass and the split.

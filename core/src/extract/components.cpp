@@ -65,7 +65,12 @@ std::vector<Range> ranges(const std::vector<detail::MarchedChunk>& chunks, int t
             ++end;
         }
         if (r + 1 == count) end = chunks.size();
-        out[r] = {chunks[begin].vertexBegin, chunks[end - 1].vertexEnd, chunks[begin].triangleBegin, chunks[end - 1].triangleEnd, begin, end};
+        out[r] = {chunks[begin].vertexBegin,
+                  chunks[end - 1].vertexEnd,
+                  chunks[begin].triangleBegin,
+                  chunks[end - 1].triangleEnd,
+                  begin,
+                  end};
         begin = end;
     }
     return out;
@@ -90,8 +95,12 @@ struct Label {
 // each pass leaves for the next.
 struct Split {
     Split(detail::LabelledMesh& labelledMesh, const Volume& volume, TableKind tableKind, int threadCount)
-        : labelled(labelledMesh), mesh(labelledMesh.mesh), parts(ranges(labelledMesh.chunks, threadCount)), dims(volume.dims()),
-          table(tableKind), threads(threadCount) {}
+        : labelled(labelledMesh),
+          mesh(labelledMesh.mesh),
+          parts(ranges(labelledMesh.chunks, threadCount)),
+          dims(volume.dims()),
+          table(tableKind),
+          threads(threadCount) {}
 
     detail::LabelledMesh& labelled;
     Mesh& mesh;
@@ -175,7 +184,8 @@ void numberRange(Split& s, const Range& part, std::size_t r) {
     if (k != kNone) share[k].vertices = counter, share[k].triangles = triangles, share[k].pieces = pieces;
     // The surfaces the border cuts: the exhaustive pass listed their vertices on it.
     for (std::size_t c = part.chunkBegin; c < part.chunkEnd; ++c) {
-        for (const std::uint32_t v : s.labelled.chunks[c].borderVertices) share[labels[v].surface].measure.touchesBorder = true;
+        for (const std::uint32_t v : s.labelled.chunks[c].borderVertices)
+            share[labels[v].surface].measure.touchesBorder = true;
     }
 }
 
@@ -445,7 +455,8 @@ void compactLargest(Split& s) {
                 const std::size_t to = byTriangle ? share.triangleBase : share.vertexBase;
                 const std::size_t moved = byTriangle ? share.triangles : share.vertices;
                 if (from == to) continue;  // nothing below it left the largest surface
-                std::copy_n(buffer.begin() + std::ptrdiff_t(per * from), per * moved, buffer.begin() + std::ptrdiff_t(per * to));
+                std::copy_n(buffer.begin() + std::ptrdiff_t(per * from), per * moved,
+                            buffer.begin() + std::ptrdiff_t(per * to));
             }
         };
         detail::parallelFor(3, s.threads, [&](int buffer) {
@@ -489,7 +500,8 @@ std::vector<Surface> sortedBySize(Split& s) {
         while (j < count && triangles[order[j]] == triangles[order[i]]) ++j;
         if (j - i > 1) {
             std::vector<std::pair<std::uint64_t, std::size_t>> keyed;
-            for (std::size_t k = i; k < j; ++k) keyed.push_back({detail::firstEdgeOrder(surfaces[order[k]].mesh, s.dims), order[k]});
+            for (std::size_t k = i; k < j; ++k)
+                keyed.push_back({detail::firstEdgeOrder(surfaces[order[k]].mesh, s.dims), order[k]});
             std::sort(keyed.begin(), keyed.end());
             for (std::size_t k = i; k < j; ++k) order[k] = keyed[k - i].second;
         }

@@ -64,7 +64,8 @@ public:
         for (int k = 0; k < 3; ++k) halfInverseSpacing_[k] = 0.5 / spacing_[k];
         const int size[3] = {nx_, ny_, nz_};
         for (int a = 0; a < 3; ++a) {
-            for (int k = 0; k < 3; ++k) interiorSpan_[std::size_t(a)][std::size_t(k)] = unsigned(std::max(0, size[k] - 2 - (a == k)));
+            for (int k = 0; k < 3; ++k)
+                interiorSpan_[std::size_t(a)][std::size_t(k)] = unsigned(std::max(0, size[k] - 2 - (a == k)));
         }
     }
 
@@ -73,7 +74,9 @@ public:
     int nz() const { return nz_; }
     std::size_t strideY() const { return strideY_; }
     std::size_t strideZ() const { return strideZ_; }
-    std::size_t index(int x, int y, int z) const { return std::size_t(x) + strideY_ * std::size_t(y) + strideZ_ * std::size_t(z); }
+    std::size_t index(int x, int y, int z) const {
+        return std::size_t(x) + strideY_ * std::size_t(y) + strideZ_ * std::size_t(z);
+    }
     double iso() const { return iso_; }
     double at(std::size_t i) const { return static_cast<double>(samples_[i]); }
     // The one classification rule of isotrack, VTK's: a sample at or above the
@@ -108,18 +111,23 @@ public:
             return static_cast<std::uint8_t>(_mm_movemask_epi8(_mm_packs_epi16(above, above)));
         } else if constexpr (std::is_same_v<T, float>) {
             // Two floats in the low half (an unaligned 64-bit load).
-            auto row = [](const T* at) { return _mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(at))); };
-            const __m128 lower = _mm_movelh_ps(row(s), row(s + sy)), upper = _mm_movelh_ps(row(s + sz), row(s + sy + sz));
+            auto row = [](const T* at) {
+                return _mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(at)));
+            };
+            const __m128 lower = _mm_movelh_ps(row(s), row(s + sy)),
+                         upper = _mm_movelh_ps(row(s + sz), row(s + sy + sz));
             const __m128 threshold = _mm_set1_ps(t);
             // x, x + 1, then x + 1, x at y + 1; NaN compares false, as below.
-            const int low = _mm_movemask_ps(_mm_cmpge_ps(_mm_shuffle_ps(lower, lower, _MM_SHUFFLE(2, 3, 1, 0)), threshold));
-            const int high = _mm_movemask_ps(_mm_cmpge_ps(_mm_shuffle_ps(upper, upper, _MM_SHUFFLE(2, 3, 1, 0)), threshold));
+            const int low =
+                _mm_movemask_ps(_mm_cmpge_ps(_mm_shuffle_ps(lower, lower, _MM_SHUFFLE(2, 3, 1, 0)), threshold));
+            const int high =
+                _mm_movemask_ps(_mm_cmpge_ps(_mm_shuffle_ps(upper, upper, _MM_SHUFFLE(2, 3, 1, 0)), threshold));
             return static_cast<std::uint8_t>(low | high << 4);
         }
 #endif
-        const unsigned c = unsigned(s[0] >= t) | unsigned(s[1] >= t) << 1 | unsigned(s[1 + sy] >= t) << 2 | unsigned(s[sy] >= t) << 3 |
-                           unsigned(s[sz] >= t) << 4 | unsigned(s[1 + sz] >= t) << 5 | unsigned(s[1 + sy + sz] >= t) << 6 |
-                           unsigned(s[sy + sz] >= t) << 7;
+        const unsigned c = unsigned(s[0] >= t) | unsigned(s[1] >= t) << 1 | unsigned(s[1 + sy] >= t) << 2 |
+                           unsigned(s[sy] >= t) << 3 | unsigned(s[sz] >= t) << 4 | unsigned(s[1 + sz] >= t) << 5 |
+                           unsigned(s[1 + sy + sz] >= t) << 6 | unsigned(s[sy + sz] >= t) << 7;
         return static_cast<std::uint8_t>(c);
     }
 
@@ -235,7 +243,8 @@ private:
     // The vertex on the edge from sample a = (x, y, z) to sample b along `Axis`,
     // given the gradients at both ends: the one place vertex floats are made.
     template <int Axis>
-    [[gnu::always_inline]] void vertexOnEdge(int x, int y, int z, std::size_t a, std::size_t b, const double ga[3], const double gb[3], Vertex& v) const {
+    [[gnu::always_inline]] void vertexOnEdge(int x, int y, int z, std::size_t a, std::size_t b, const double ga[3],
+                                             const double gb[3], Vertex& v) const {
         constexpr int axis = Axis;
         const double va = at(a), vb = at(b);
         double t = (iso_ - va) / (vb - va);
@@ -243,7 +252,8 @@ private:
 
         double p[3] = {origin_[0] + x * spacing_[0], origin_[1] + y * spacing_[1], origin_[2] + z * spacing_[2]};
         p[axis] += t * spacing_[axis];
-        const double n[3] = {-(ga[0] + t * (gb[0] - ga[0])), -(ga[1] + t * (gb[1] - ga[1])), -(ga[2] + t * (gb[2] - ga[2]))};
+        const double n[3] = {-(ga[0] + t * (gb[0] - ga[0])), -(ga[1] + t * (gb[1] - ga[1])),
+                             -(ga[2] + t * (gb[2] - ga[2]))};
         const double length2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
         for (int k = 0; k < 3; ++k) v.position[k] = static_cast<float>(p[k]);
         if (length2 > 0.0 && std::isfinite(length2)) {

@@ -65,9 +65,7 @@ std::vector<Surface> extract(const Volume& volume, const ExtractRequest& request
     std::vector<Surface> surfaces;
     if (detail::cancelled(request.cancel)) return surfaces;
     switch (request.method) {
-        case Method::Exhaustive:
-            surfaces.push_back(exhaustiveSurface(volume, request));
-            break;
+        case Method::Exhaustive: surfaces.push_back(exhaustiveSurface(volume, request)); break;
         case Method::All:
             surfaces = detail::extractAllSurfaces(volume, request.iso, request.table, request.threads, request.cancel);
             break;
@@ -79,9 +77,7 @@ std::vector<Surface> extract(const Volume& volume, const ExtractRequest& request
                 surfaces.push_back(trackSurface(volume, request.iso, edge, request.table, request.threads));
             }
             break;
-        case Method::Tree:
-            surfaces = treeSurfaces(volume, request);
-            break;
+        case Method::Tree: surfaces = treeSurfaces(volume, request); break;
     }
     return surfaces;
 }

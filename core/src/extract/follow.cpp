@@ -135,7 +135,8 @@ bool containsCentreOf(const SurfaceFootprint& box, const SurfaceFootprint& other
 
 double overlapVolume(const SurfaceFootprint& a, const SurfaceFootprint& b) {
     double v = 1.0;
-    for (int k = 0; k < 3; ++k) v *= std::max(0.0, std::min(a.boundsMax[k], b.boundsMax[k]) - std::max(a.boundsMin[k], b.boundsMin[k]));
+    for (int k = 0; k < 3; ++k)
+        v *= std::max(0.0, std::min(a.boundsMax[k], b.boundsMax[k]) - std::max(a.boundsMin[k], b.boundsMin[k]));
     return v;
 }
 

@@ -31,7 +31,7 @@ struct LabelledMesh {
     // surface's root is its smallest vertex id, its own parent; parents are never
     // above their children, so a vertex's root is the end of a descending walk.
     Buffer<std::uint32_t> parent;
-    Buffer<std::uint8_t> tally;   // per vertex, the cell pieces and triangles counted at it (kTalliedPiece)
+    Buffer<std::uint8_t> tally;  // per vertex, the cell pieces and triangles counted at it (kTalliedPiece)
 };
 
 LabelledMesh marchLabelled(const Volume& volume, double iso, TableKind table, int threads);

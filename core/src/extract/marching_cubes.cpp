@@ -54,7 +54,7 @@ constexpr std::uint32_t kNoVertex = std::numeric_limits<std::uint32_t>::max();
 using detail::kSeamBit;  // placeholder: a vertex on the next chunk's first slice
 
 struct RowSpan {
-    int lo, hi;               // x-edges [lo, hi) hold every change of flag along the row
+    int lo, hi;                // x-edges [lo, hi) hold every change of flag along the row
     std::uint8_t first, last;  // flags of the row's first and last samples
 };
 
@@ -64,7 +64,7 @@ struct EdgeSlots {
     std::array<std::uint8_t, 256> configOfColumns{};
     std::array<int, 12> axis{};
     std::array<std::array<int, 3>, 12> origin{};  // the edge's first corner, from the cell's
-    std::array<std::size_t, 12> offset{};  // within a slice, from the cell's origin sample
+    std::array<std::size_t, 12> offset{};         // within a slice, from the cell's origin sample
     std::array<std::uint16_t, 256> crossed{};
 };
 
@@ -78,9 +78,9 @@ EdgeSlots edgeSlots(int nx) {
     }
     for (int columns = 0; columns < 256; ++columns) {
         const int l = columns & 15, r = columns >> 4;
-        s.configOfColumns[columns] = static_cast<std::uint8_t>((l & 1) | (r & 1) << 1 | (r >> 1 & 1) << 2 | (l >> 1 & 1) << 3 |
-                                                               (l >> 2 & 1) << 4 | (r >> 2 & 1) << 5 | (r >> 3 & 1) << 6 |
-                                                               (l >> 3 & 1) << 7);
+        s.configOfColumns[columns] =
+            static_cast<std::uint8_t>((l & 1) | (r & 1) << 1 | (r >> 1 & 1) << 2 | (l >> 1 & 1) << 3 |
+                                      (l >> 2 & 1) << 4 | (r >> 2 & 1) << 5 | (r >> 3 & 1) << 6 | (l >> 3 & 1) << 7);
     }
     for (int c = 0; c < 256; ++c) {
         unsigned mask = 0;
@@ -139,10 +139,18 @@ template <class T>
 class ChunkMarcher {
 public:
     // With labels.parent, the writing pass labels surfaces in it (surface_labels.h).
-    ChunkMarcher(const detail::SampleGrid<T>& grid, const std::array<CaseContinuation, 256>& table, const EdgeSlots& slots,
-                 const detail::SurfaceLabels& labels, Mesh& mesh)
-        : grid_(grid), table_(table), slots_(slots), labels_(labels), mesh_(mesh), nx_(grid.nx()), ny_(grid.ny()), nz_(grid.nz()),
-          sliceSize_(std::size_t(grid.nx()) * std::size_t(grid.ny())), rowBytes_(std::size_t(grid.nx() + 7) / 8) {
+    ChunkMarcher(const detail::SampleGrid<T>& grid, const std::array<CaseContinuation, 256>& table,
+                 const EdgeSlots& slots, const detail::SurfaceLabels& labels, Mesh& mesh)
+        : grid_(grid),
+          table_(table),
+          slots_(slots),
+          labels_(labels),
+          mesh_(mesh),
+          nx_(grid.nx()),
+          ny_(grid.ny()),
+          nz_(grid.nz()),
+          sliceSize_(std::size_t(grid.nx()) * std::size_t(grid.ny())),
+          rowBytes_(std::size_t(grid.nx() + 7) / 8) {
         for (int s = 0; s < 2; ++s) {
             flags_[s].assign(sliceSize_ + 8, 0);  // rows are packed and unpacked 8 flags at a time
             spans_[s].assign(std::size_t(ny_), RowSpan{});
@@ -150,7 +158,10 @@ public:
         columns_.assign(std::size_t(nx_) + 16, 0);  // nextActiveCell reads 9 bytes at a time
         for (int c = 0; c < 256; ++c) {
             const CaseContinuation& cased = table_[std::size_t(c)];
-            triangleCount_[std::size_t(c)] = cased.pieceCount == 0 ? 0 : cased.pieces[cased.pieceCount - 1].firstTriangle + cased.pieces[cased.pieceCount - 1].triangleCount;
+            triangleCount_[std::size_t(c)] = cased.pieceCount == 0
+                                                 ? 0
+                                                 : cased.pieces[cased.pieceCount - 1].firstTriangle +
+                                                       cased.pieces[cased.pieceCount - 1].triangleCount;
         }
     }
 
@@ -188,7 +199,8 @@ public:
     void run(Chunk& chunk) {
         chunk_ = &chunk;
         if (vertical_.empty()) {
-            for (auto& planar : planar_) planar.assign(2 * sliceSize_, kNoVertex);  // vertex id caches, for writing only
+            for (auto& planar : planar_)
+                planar.assign(2 * sliceSize_, kNoVertex);  // vertex id caches, for writing only
             vertical_.assign(sliceSize_, kNoVertex);
         }
         restoreSlice(chunk_->zBegin, 0);
@@ -241,7 +253,8 @@ private:
         std::copy(spans_[slot].begin(), spans_[slot].end(), chunk_->spans.begin() + std::ptrdiff_t(slice));
         const std::uint8_t* flags = flags_[slot].data();
         for (int y = 0; y < ny_; ++y) {
-            if (spans_[slot][std::size_t(y)].lo >= spans_[slot][std::size_t(y)].hi) continue;  // constant: its first flag says all
+            if (spans_[slot][std::size_t(y)].lo >= spans_[slot][std::size_t(y)].hi)
+                continue;  // constant: its first flag says all
             const std::uint8_t* row = flags + std::size_t(nx_) * std::size_t(y);
             std::uint8_t* bits = chunk_->flagBits.data() + (slice + std::size_t(y)) * rowBytes_;
             for (std::size_t b = 0; b < rowBytes_; ++b) bits[b] = packFlags(row + 8 * b);
@@ -255,7 +268,8 @@ private:
             return;
         }
         const std::size_t slice = std::size_t(z - chunk_->zBegin) * std::size_t(ny_);
-        std::copy(chunk_->spans.begin() + std::ptrdiff_t(slice), chunk_->spans.begin() + std::ptrdiff_t(slice) + ny_, spans_[slot].begin());
+        std::copy(chunk_->spans.begin() + std::ptrdiff_t(slice), chunk_->spans.begin() + std::ptrdiff_t(slice) + ny_,
+                  spans_[slot].begin());
         const std::array<std::uint64_t, 256>& expand = flagExpansion();
         std::uint8_t* flags = flags_[slot].data();
         for (int y = 0; y < ny_; ++y) {
@@ -359,7 +373,8 @@ private:
     }
 
     // The number of samples where two rows differ; rows without a change of flag are compared by their first flag.
-    std::size_t rowDifferences(const std::uint8_t* a, const RowSpan& spanA, const std::uint8_t* b, const RowSpan& spanB) const {
+    std::size_t rowDifferences(const std::uint8_t* a, const RowSpan& spanA, const std::uint8_t* b,
+                               const RowSpan& spanB) const {
         if (spanA.lo >= spanA.hi && spanB.lo >= spanB.hi) return spanA.first != spanB.first ? std::size_t(nx_) : 0;
         return differences(a, b, std::size_t(nx_));
     }
@@ -369,7 +384,8 @@ private:
         std::size_t count = 0;
         for (int y = 0; y < ny_; ++y) {
             const std::size_t row = std::size_t(nx_) * std::size_t(y);
-            count += rowDifferences(flags_[bottom].data() + row, spans_[bottom][std::size_t(y)], flags_[top].data() + row, spans_[top][std::size_t(y)]);
+            count += rowDifferences(flags_[bottom].data() + row, spans_[bottom][std::size_t(y)],
+                                    flags_[top].data() + row, spans_[top][std::size_t(y)]);
         }
         return count;
     }
@@ -381,7 +397,8 @@ private:
         for (int y = 0; y < ny_; ++y) {
             const std::uint8_t* row = flags + std::size_t(nx_) * std::size_t(y);
             const RowSpan& span = spans_[slot][std::size_t(y)];
-            if (span.lo < span.hi) count += differences(row + span.lo, row + span.lo + 1, std::size_t(span.hi - span.lo));
+            if (span.lo < span.hi)
+                count += differences(row + span.lo, row + span.lo + 1, std::size_t(span.hi - span.lo));
             if (y + 1 < ny_) count += rowDifferences(row, span, row + nx_, spans_[slot][std::size_t(y) + 1]);
         }
         return count;
@@ -405,7 +422,9 @@ private:
                 ids[e] = vertexOnEdge<SeamSlab>(x, y, z, cell, e, bottom, top, onBorder);
             }
             const CaseContinuation& cased = table_[config];
-            if (labels_.parent) labels_.unitePieces(config, cased, ids, unsigned(x > 0) | unsigned(y > 0) << 1 | unsigned(z > chunk_->zBegin) << 2);
+            if (labels_.parent)
+                labels_.unitePieces(config, cased, ids,
+                                    unsigned(x > 0) | unsigned(y > 0) << 1 | unsigned(z > chunk_->zBegin) << 2);
             const int triangles = triangleCount_[config];
             const std::size_t at = chunk_->indexBase + chunk_->indexCursor;
             std::uint32_t* out = mesh_.indices.data() + at;
@@ -446,7 +465,8 @@ private:
         const GridEdge gridEdge{x + o[0], y + o[1], z + o[2], axis};
         if (labels_.parent) {
             labels_.addVertex(*slot);
-            if (onBorder && detail::edgeOnVolumeBorder(gridEdge, Dims{nx_, ny_, nz_})) chunk_->borderVertices.push_back(*slot);
+            if (onBorder && detail::edgeOnVolumeBorder(gridEdge, Dims{nx_, ny_, nz_}))
+                chunk_->borderVertices.push_back(*slot);
         }
         grid_.edgeVertex(gridEdge.x, gridEdge.y, gridEdge.z, axis, mesh_.vertices[id]);
         mesh_.vertexEdges[id] = gridEdge;
@@ -464,8 +484,8 @@ private:
     std::array<std::vector<std::uint8_t>, 2> flags_;
     std::array<std::vector<RowSpan>, 2> spans_;
     std::array<std::vector<std::uint32_t>, 2> planar_;  // x then y edges of a slice, ping-pong
-    std::vector<std::uint32_t> vertical_;              // z edges of the current slab
-    std::vector<std::uint8_t> columns_;                // per x, the four flags of the cell row's corners
+    std::vector<std::uint32_t> vertical_;               // z edges of the current slab
+    std::vector<std::uint8_t> columns_;                 // per x, the four flags of the cell row's corners
     std::array<std::uint8_t, 256> triangleCount_{};
     std::array<std::uint32_t, 2> threshold_{};
     std::uint32_t verticalThreshold_ = 0;
@@ -515,7 +535,8 @@ std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int 
         const detail::SampleGrid<T> grid(volume, samples, iso);
         // A marcher per thread, its slices of flags and ids reused from chunk to chunk.
         detail::parallelForWithState(
-            chunkCount, threads, [&] { return ChunkMarcher<T>(grid, continuation, slots, detail::SurfaceLabels{}, mesh); },
+            chunkCount, threads,
+            [&] { return ChunkMarcher<T>(grid, continuation, slots, detail::SurfaceLabels{}, mesh); },
             [&](ChunkMarcher<T>& marcher, int c) { marcher.count(chunks[std::size_t(c)]); });
         allocate(chunks, mesh);
         detail::SurfaceLabels labels;
@@ -563,8 +584,8 @@ LabelledMesh marchLabelled(const Volume& volume, double iso, TableKind table, in
     LabelledMesh out;
     std::vector<Chunk> chunks = march(volume, iso, table, threads, out.mesh, &out.parent, &out.tally);
     for (Chunk& chunk : chunks) {
-        out.chunks.push_back({chunk.vertexBase, chunk.vertexBase + chunk.vertexCount, chunk.indexBase / 3, chunk.indexBase / 3 + chunk.triangleCount,
-                              std::move(chunk.borderVertices)});
+        out.chunks.push_back({chunk.vertexBase, chunk.vertexBase + chunk.vertexCount, chunk.indexBase / 3,
+                              chunk.indexBase / 3 + chunk.triangleCount, std::move(chunk.borderVertices)});
     }
     return out;
 }

@@ -146,7 +146,8 @@ public:
     }
 
     std::size_t byteSize() const {
-        return nodes_.capacity() * sizeof(Node) + blocks_.capacity() * sizeof(Block*) + pieces_.capacity() * sizeof(Entry);
+        return nodes_.capacity() * sizeof(Node) + blocks_.capacity() * sizeof(Block*) +
+               pieces_.capacity() * sizeof(Entry);
     }
 
 private:
@@ -159,10 +160,10 @@ private:
 
     std::vector<Node> nodes_;  // waiting pieces and, linked from free_, spare nodes
     std::uint32_t free_ = kNone;
-    Ring<Block*> blocks_;      // blocks with pieces waiting, but for current_
-    Block* current_ = nullptr; // the block being walked
+    Ring<Block*> blocks_;       // blocks with pieces waiting, but for current_
+    Block* current_ = nullptr;  // the block being walked
     WalkOrder order_;
-    Ring<Entry> pieces_;       // breadth-first
+    Ring<Entry> pieces_;  // breadth-first
 };
 
 }  // namespace isotrack::detail

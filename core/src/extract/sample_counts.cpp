@@ -41,11 +41,13 @@ std::size_t countSamplesAbove(const Volume& volume, double iso, int threads) {
         std::vector<std::size_t> counts(std::size_t(parts), 0);
         const T t = threshold.value;
         detail::parallelFor(parts, parts, [&](int p) {
-            const std::size_t begin = total * std::size_t(p) / std::size_t(parts), end = total * std::size_t(p + 1) / std::size_t(parts);
+            const std::size_t begin = total * std::size_t(p) / std::size_t(parts),
+                              end = total * std::size_t(p + 1) / std::size_t(parts);
             std::size_t count = 0;
             for (std::size_t block = begin; block < end; block += 65536) {
                 std::uint32_t inBlock = 0;  // narrow sums keep the vector lanes wide
-                for (std::size_t i = block, stop = std::min(end, block + 65536); i < stop; ++i) inBlock += samples[i] >= t;
+                for (std::size_t i = block, stop = std::min(end, block + 65536); i < stop; ++i)
+                    inBlock += samples[i] >= t;
                 count += inBlock;
             }
             counts[std::size_t(p)] = count;

@@ -13,8 +13,8 @@
 namespace isotrack {
 
 using detail::edgeInside;
-using detail::makeWorker;
 using detail::isoText;
+using detail::makeWorker;
 
 bool edgeIsCrossed(const Volume& volume, double iso, const GridEdge& edge) {
     if (!edgeInside(volume, edge)) return false;
@@ -71,18 +71,21 @@ GridEdge nearestCrossedEdge(const Volume& volume, double iso, const Vec3d& world
 }
 
 GridEdge edgeOfVertex(const Mesh& mesh, std::uint32_t vertex) {
-    if (vertex >= mesh.vertexEdges.size()) throw InputError("picked vertex " + std::to_string(vertex) + " is not in the mesh");
+    if (vertex >= mesh.vertexEdges.size())
+        throw InputError("picked vertex " + std::to_string(vertex) + " is not in the mesh");
     return mesh.vertexEdges[vertex];
 }
 
 GridEdge edgeOfTriangle(const Mesh& mesh, std::size_t triangle, const Vec3d& worldPoint) {
-    if (triangle >= mesh.triangleCount()) throw InputError("picked triangle " + std::to_string(triangle) + " is not in the mesh");
+    if (triangle >= mesh.triangleCount())
+        throw InputError("picked triangle " + std::to_string(triangle) + " is not in the mesh");
     std::uint32_t nearest = mesh.indices[3 * triangle];
     double best = std::numeric_limits<double>::infinity();
     for (int k = 0; k < 3; ++k) {
         const std::uint32_t v = mesh.indices[3 * triangle + std::size_t(k)];
         double d2 = 0.0;
-        for (int i = 0; i < 3; ++i) d2 += (mesh.vertices[v].position[i] - worldPoint[i]) * (mesh.vertices[v].position[i] - worldPoint[i]);
+        for (int i = 0; i < 3; ++i)
+            d2 += (mesh.vertices[v].position[i] - worldPoint[i]) * (mesh.vertices[v].position[i] - worldPoint[i]);
         if (d2 < best) best = d2, nearest = v;
     }
     return edgeOfVertex(mesh, nearest);

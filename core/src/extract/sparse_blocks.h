@@ -78,7 +78,8 @@ public:
     SparseBlocks(const Dims& dims, int threads = 1)
         : regionsX_((dims[0] + kRegionMask) >> kRegionShift),
           regionsY_((dims[1] + kRegionMask) >> kRegionShift),
-          regions_(std::size_t(regionsX_) * std::size_t(regionsY_) * std::size_t((dims[2] + kRegionMask) >> kRegionShift)),
+          regions_(std::size_t(regionsX_) * std::size_t(regionsY_) *
+                   std::size_t((dims[2] + kRegionMask) >> kRegionShift)),
           arenas_(std::size_t(std::max(threads, 1))),
           threads_(std::max(threads, 1)) {
         for (auto& r : regions_) r.store(nullptr, std::memory_order_relaxed);
@@ -94,20 +95,25 @@ public:
     static constexpr int kRegionShift = 2 * kShift;
     static constexpr int kRegionMask = (1 << kRegionShift) - 1;
     // The thread walking the cells of the region holding grid point (x, y, z).
-    int ownerAt(int x, int y, int z) const { return ((x >> kRegionShift) + (y >> kRegionShift) + (z >> kRegionShift)) % threads_; }
+    int ownerAt(int x, int y, int z) const {
+        return ((x >> kRegionShift) + (y >> kRegionShift) + (z >> kRegionShift)) % threads_;
+    }
 
     // The step in local index for a unit step along each axis.
-    static constexpr std::array<int, 3> kLocalStep{1, kSide, kSide * kSide};
+    static constexpr std::array<int, 3> kLocalStep{1, kSide, kSide* kSide};
 
     // The block holding grid point (x, y, z), created empty on first use from
     // thread `thread`'s arena.
     Block* at(int x, int y, int z, int thread = 0) {
         const int bx = x >> kShift, by = y >> kShift, bz = z >> kShift;
         Arena& arena = arenas_[std::size_t(thread)];
-        std::atomic<Region*>& regionSlot = regions_[std::size_t(x >> kRegionShift) +
-                                                    std::size_t(regionsX_) * (std::size_t(y >> kRegionShift) + std::size_t(regionsY_) * std::size_t(z >> kRegionShift))];
+        std::atomic<Region*>& regionSlot =
+            regions_[std::size_t(x >> kRegionShift) +
+                     std::size_t(regionsX_) *
+                         (std::size_t(y >> kRegionShift) + std::size_t(regionsY_) * std::size_t(z >> kRegionShift))];
         Region* region = regionSlot.load(std::memory_order_acquire);
-        if (region == nullptr) region = publish(regionSlot, arena.spareRegion_, [&] { return &arena.regions_.emplace_back(); });
+        if (region == nullptr)
+            region = publish(regionSlot, arena.spareRegion_, [&] { return &arena.regions_.emplace_back(); });
         std::atomic<Block*>& blockSlot = region->block[std::size_t(local(bx, by, bz))];
         Block* block = blockSlot.load(std::memory_order_acquire);
         if (block == nullptr) {
@@ -139,14 +145,16 @@ private:
         T* made = spare != nullptr ? spare : make();
         spare = nullptr;
         T* expected = nullptr;
-        if (slot.compare_exchange_strong(expected, made, std::memory_order_acq_rel, std::memory_order_acquire)) return made;
+        if (slot.compare_exchange_strong(expected, made, std::memory_order_acq_rel, std::memory_order_acquire))
+            return made;
         spare = made;
         return expected;
     }
 
     [[gnu::noinline]] Block* resolve(Block* block, int link, int thread) {
         const std::array<int, 3> o = block->origin;
-        Block* found = at(o[0] + (link % 3 - 1) * kSide, o[1] + (link / 3 % 3 - 1) * kSide, o[2] + (link / 9 - 1) * kSide, thread);
+        Block* found =
+            at(o[0] + (link % 3 - 1) * kSide, o[1] + (link / 3 % 3 - 1) * kSide, o[2] + (link / 9 - 1) * kSide, thread);
         block->link[std::size_t(link)].store(found, std::memory_order_release);
         return found;
     }

@@ -53,7 +53,8 @@ PieceUnions pieceUnionsFor(TableKind kind) {
                 for (int chosen : standIn) {
                     if (chosen >= 0) lookups |= 1u << chosen;
                 }
-                out.lookups[std::size_t(config)][std::size_t(across)][std::size_t(p)] = static_cast<std::uint16_t>(lookups);
+                out.lookups[std::size_t(config)][std::size_t(across)][std::size_t(p)] =
+                    static_cast<std::uint16_t>(lookups);
             }
         }
     }

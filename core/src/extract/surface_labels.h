@@ -73,7 +73,8 @@ struct SurfaceLabels {
     // Only one vertex per group of low-face edges already joined is looked up
     // (PieceUnions); `across` says which low faces have a cell of this chunk across.
     // Placeholders for the next chunk's slice are joined in stitchSeam, through their triangles.
-    void unitePieces(unsigned config, const CaseContinuation& cased, const std::array<std::uint32_t, 12>& ids, unsigned across) const {
+    void unitePieces(unsigned config, const CaseContinuation& cased, const std::array<std::uint32_t, 12>& ids,
+                     unsigned across) const {
         constexpr std::uint32_t kNoVertex = ~std::uint32_t(0);
         const std::array<std::uint16_t, kMaxPieces>& lookups = unions->lookups[config][across];
         for (int p = 0; p < cased.pieceCount; ++p) {

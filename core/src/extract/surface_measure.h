@@ -29,7 +29,9 @@ inline bool edgeOnVolumeBorder(const GridEdge& e, const Dims& dims) {
 
 // Grid edges in memory order, to break ties between surfaces the same way everywhere.
 inline std::uint64_t edgeOrder(const GridEdge& e, const Dims& dims) {
-    return ((std::uint64_t(e.z) * std::uint64_t(dims[1]) + std::uint64_t(e.y)) * std::uint64_t(dims[0]) + std::uint64_t(e.x)) * 3 +
+    return ((std::uint64_t(e.z) * std::uint64_t(dims[1]) + std::uint64_t(e.y)) * std::uint64_t(dims[0]) +
+            std::uint64_t(e.x)) *
+               3 +
            std::uint64_t(e.axis);
 }
 
@@ -57,7 +59,8 @@ struct TriangleMeasure {
     void add(const Vertex& a, const Vertex& b, const Vertex& c) { addTo(doubleArea, sixfoldVolume, a, b, c); }
     // add, into sums of the caller's own: a loop over many triangles keeps them
     // in registers (in a struct, they go through memory, a store and a load a triangle).
-    static void addTo(double& doubledArea, double& sixfoldSignedVolume, const Vertex& a, const Vertex& b, const Vertex& c) {
+    static void addTo(double& doubledArea, double& sixfoldSignedVolume, const Vertex& a, const Vertex& b,
+                      const Vertex& c) {
         float area, volume;
         measure(a, b, c, area, volume);
         doubledArea += double(area);
@@ -67,7 +70,8 @@ struct TriangleMeasure {
     // addTo for the four triangles at indices[0..11], one after the other, in
     // one pass of 4-wide arithmetic: per triangle the same float operations in
     // the same order, so the sums are those of four addTo calls.
-    static void addFourTo(double& doubledArea, double& sixfoldSignedVolume, const Vertex* vertices, const std::uint32_t* indices) {
+    static void addFourTo(double& doubledArea, double& sixfoldSignedVolume, const Vertex* vertices,
+                          const std::uint32_t* indices) {
 #if defined(__SSE2__)
         __m128 areas4, volumes4;
         measureFour(vertices, indices, areas4, volumes4);
@@ -80,14 +84,16 @@ struct TriangleMeasure {
         }
 #else
         for (int i = 0; i < 4; ++i) {
-            addTo(doubledArea, sixfoldSignedVolume, vertices[indices[3 * i]], vertices[indices[3 * i + 1]], vertices[indices[3 * i + 2]]);
+            addTo(doubledArea, sixfoldSignedVolume, vertices[indices[3 * i]], vertices[indices[3 * i + 1]],
+                  vertices[indices[3 * i + 2]]);
         }
 #endif
     }
 
 private:
     // One triangle's twice area and six times signed volume.
-    static void measure(const Vertex& a, const Vertex& b, const Vertex& c, float& doubledArea, float& sixfoldSignedVolume) {
+    static void measure(const Vertex& a, const Vertex& b, const Vertex& c, float& doubledArea,
+                        float& sixfoldSignedVolume) {
 #if defined(__SSE2__)
         // A corner's x, y, z and, unused, its normal's x: the same float
         // operations in the same order as below, in half the instructions.
@@ -109,12 +115,15 @@ private:
 #if defined(__SSE2__)
     // Lane i: twice the area and six times the signed volume of triangle i of
     // the four at indices[0..11], by measure's float operations.
-    static void measureFour(const Vertex* vertices, const std::uint32_t* indices, __m128& doubledAreas, __m128& sixfoldSignedVolumes) {
+    static void measureFour(const Vertex* vertices, const std::uint32_t* indices, __m128& doubledAreas,
+                            __m128& sixfoldSignedVolumes) {
         // Lane i: triangle i's corner k, as x, y, z rows.
         __m128 x[3], y[3], z[3];
         for (int k = 0; k < 3; ++k) {
-            __m128 p0 = _mm_loadu_ps(vertices[indices[k]].position), p1 = _mm_loadu_ps(vertices[indices[3 + k]].position);
-            __m128 p2 = _mm_loadu_ps(vertices[indices[6 + k]].position), p3 = _mm_loadu_ps(vertices[indices[9 + k]].position);
+            __m128 p0 = _mm_loadu_ps(vertices[indices[k]].position),
+                   p1 = _mm_loadu_ps(vertices[indices[3 + k]].position);
+            __m128 p2 = _mm_loadu_ps(vertices[indices[6 + k]].position),
+                   p3 = _mm_loadu_ps(vertices[indices[9 + k]].position);
             _MM_TRANSPOSE4_PS(p0, p1, p2, p3);
             x[k] = p0, y[k] = p1, z[k] = p2;
         }
@@ -155,7 +164,8 @@ public:
 #else
         for (int i = 0; i < 4; ++i) {
             float area, volume;
-            TriangleMeasure::measure(vertices[indices[3 * i]], vertices[indices[3 * i + 1]], vertices[indices[3 * i + 2]], area, volume);
+            TriangleMeasure::measure(vertices[indices[3 * i]], vertices[indices[3 * i + 1]],
+                                     vertices[indices[3 * i + 2]], area, volume);
             area_[i] += double(area);
             volume_[i] += double(volume);
         }
@@ -222,7 +232,8 @@ struct SurfaceMeasure {
 #if defined(__SSE2__)
         // A vertex's x, y, z and, ignored, its normal's x. minps(p, lo) is
         // std::min(lo, p) exactly (lo unless p < lo), and maxps likewise.
-        __m128 lo = _mm_setr_ps(boundsMin[0], boundsMin[1], boundsMin[2], 0.0f), hi = _mm_setr_ps(boundsMax[0], boundsMax[1], boundsMax[2], 0.0f);
+        __m128 lo = _mm_setr_ps(boundsMin[0], boundsMin[1], boundsMin[2], 0.0f),
+               hi = _mm_setr_ps(boundsMax[0], boundsMax[1], boundsMax[2], 0.0f);
         for (std::size_t v = 0; v < count; ++v) {
             const __m128 p = _mm_loadu_ps(vertices[v].position);
             lo = _mm_min_ps(p, lo);
@@ -287,7 +298,8 @@ inline SurfaceStats measuredStats(const Mesh& mesh, const SurfaceMeasure& measur
 // Whether a finished surface is closed, and then the volume it encloses. With
 // `closedUnlessOnBorder` (the consistent table leaves no holes) a surface is
 // closed exactly when the border does not cut it; otherwise every edge is checked.
-inline void settleClosed(SurfaceStats& stats, const Mesh& mesh, const SurfaceMeasure& measure, bool closedUnlessOnBorder) {
+inline void settleClosed(SurfaceStats& stats, const Mesh& mesh, const SurfaceMeasure& measure,
+                         bool closedUnlessOnBorder) {
     stats.closed = closedUnlessOnBorder ? !stats.touchesBorder && !mesh.indices.empty() : meshIsClosed(mesh);
     if (stats.closed) stats.enclosedVolume = std::abs(measure.triangles.signedVolume());
 }

@@ -27,7 +27,8 @@ struct SurfaceTracker::Impl {
 };
 
 SurfaceTracker::SurfaceTracker(const Volume& volume, double iso, TableKind table)
-    : impl_(std::make_unique<Impl>(Impl{&volume, iso, table, makeWorker(volume, iso, table), TrackState(volume.dims(), WalkOrder::BreadthFirst)})) {}
+    : impl_(std::make_unique<Impl>(Impl{&volume, iso, table, makeWorker(volume, iso, table),
+                                        TrackState(volume.dims(), WalkOrder::BreadthFirst)})) {}
 SurfaceTracker::~SurfaceTracker() = default;
 SurfaceTracker::SurfaceTracker(SurfaceTracker&&) noexcept = default;
 SurfaceTracker& SurfaceTracker::operator=(SurfaceTracker&&) noexcept = default;

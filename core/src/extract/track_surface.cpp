@@ -27,7 +27,8 @@ namespace {
 
 // Walks the surface from the queued seed to the end.
 Surface walkWhole(const TrackWorker& worker, TrackState& state, TableKind table, Clock::time_point start) {
-    while (!state.walker.queue.empty()) worker.advance(state.blocks, state.denseVisited, state.walker, std::numeric_limits<std::size_t>::max());
+    while (!state.walker.queue.empty())
+        worker.advance(state.blocks, state.denseVisited, state.walker, std::numeric_limits<std::size_t>::max());
     Surface surface = finishedSurface(state.walker, table);
     surface.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return surface;

@@ -35,8 +35,8 @@ constexpr std::size_t kCellsAlone = 8192;
 
 }  // namespace
 
-Surface walkTogether(const Volume& volume, const TrackWorker& worker, const GridEdge& seed, TableKind table, int threads,
-                     Clock::time_point start) {
+Surface walkTogether(const Volume& volume, const TrackWorker& worker, const GridEdge& seed, TableKind table,
+                     int threads, Clock::time_point start) {
     SparseBlocks blocks(volume.dims(), threads);
     std::vector<Walker> walkers(static_cast<std::size_t>(threads));
     int tagBits = 0;
@@ -59,7 +59,9 @@ Surface walkTogether(const Volume& volume, const TrackWorker& worker, const Grid
     }
     for (const Entry& entry : walkers[0].queue.drain()) walkers[std::size_t(entry.block->owner)].queue.push(entry);
     Exchange exchange(threads);
-    detail::runTogether(threads, [&](int t) { worker.walkShared(blocks, walkers[std::size_t(t)], exchange); }, [&] { exchange.stop(); });
+    detail::runTogether(
+        threads, [&](int t) { worker.walkShared(blocks, walkers[std::size_t(t)], exchange); },
+        [&] { exchange.stop(); });
 
     // The parts, in thread order, in the first walker's buffers; vertex ids become indices.
     std::vector<std::size_t> firstVertex(std::size_t(threads) + 1, 0), firstIndex(std::size_t(threads) + 1, 0);
@@ -79,7 +81,9 @@ Surface walkTogether(const Volume& volume, const TrackWorker& worker, const Grid
     PackedGridEdge* const edges = movedEdges ? movedEdges->data() : mesh.vertexEdges.data();
     std::uint32_t* const indices = movedIndices ? movedIndices->data() : mesh.indices.data();
     const std::uint32_t indexMask = walkers[0].indexMask;
-    auto finalIndex = [&](std::uint32_t id) { return static_cast<std::uint32_t>(firstVertex[id >> idShift] + (id & indexMask)); };
+    auto finalIndex = [&](std::uint32_t id) {
+        return static_cast<std::uint32_t>(firstVertex[id >> idShift] + (id & indexMask));
+    };
     // Each part in `threads` slices, so that every thread has a share of the copying.
     // The first walker's ids are final but for the corners it took from other
     // walkers (its unmeasured triangles), set once every part is in place.
@@ -87,11 +91,17 @@ Surface walkTogether(const Volume& volume, const TrackWorker& worker, const Grid
     detail::parallelFor(threads * slices, threads, [&](int task) {
         const std::size_t t = std::size_t(task / slices), slice = std::size_t(task % slices);
         const Mesh& part = walkers[t].mesh;
-        const std::size_t vertexCount = firstVertex[t + 1] - firstVertex[t], indexCount = firstIndex[t + 1] - firstIndex[t];
-        const std::size_t vBegin = vertexCount * slice / std::size_t(slices), vEnd = vertexCount * (slice + 1) / std::size_t(slices);
-        const std::size_t iBegin = indexCount * slice / std::size_t(slices), iEnd = indexCount * (slice + 1) / std::size_t(slices);
-        if (t > 0 || movedVertices) std::copy(part.vertices.data() + vBegin, part.vertices.data() + vEnd, vertices + firstVertex[t] + vBegin);
-        if (t > 0 || movedEdges) std::copy(part.vertexEdges.data() + vBegin, part.vertexEdges.data() + vEnd, edges + firstVertex[t] + vBegin);
+        const std::size_t vertexCount = firstVertex[t + 1] - firstVertex[t],
+                          indexCount = firstIndex[t + 1] - firstIndex[t];
+        const std::size_t vBegin = vertexCount * slice / std::size_t(slices),
+                          vEnd = vertexCount * (slice + 1) / std::size_t(slices);
+        const std::size_t iBegin = indexCount * slice / std::size_t(slices),
+                          iEnd = indexCount * (slice + 1) / std::size_t(slices);
+        if (t > 0 || movedVertices)
+            std::copy(part.vertices.data() + vBegin, part.vertices.data() + vEnd, vertices + firstVertex[t] + vBegin);
+        if (t > 0 || movedEdges)
+            std::copy(part.vertexEdges.data() + vBegin, part.vertexEdges.data() + vEnd,
+                      edges + firstVertex[t] + vBegin);
         if (t > 0) {
             for (std::size_t i = iBegin; i < iEnd; ++i) indices[firstIndex[t] + i] = finalIndex(part.indices[i]);
         } else if (movedIndices) {

@@ -127,15 +127,18 @@ struct WalkTable {
                 Walk& walk = walks[c][p];
                 walk.edgeMask = piece.edgeMask;
                 for (int t = piece.firstTriangle; t < piece.firstTriangle + piece.triangleCount; ++t) {
-                    for (std::int8_t edge : table[c].triangles[t]) walk.corners[walk.cornerCount++] = static_cast<std::uint8_t>(edge);
+                    for (std::int8_t edge : table[c].triangles[t])
+                        walk.corners[walk.cornerCount++] = static_cast<std::uint8_t>(edge);
                 }
-                if (walk.cornerCount > kPieceCorners) throw std::logic_error("continuation table: a piece of more than five triangles");
+                if (walk.cornerCount > kPieceCorners)
+                    throw std::logic_error("continuation table: a piece of more than five triangles");
                 // The spare corners repeat the first, a vertex the piece has (see walk).
                 for (int k = walk.cornerCount; k < kPieceCorners; ++k) walk.corners[std::size_t(k)] = walk.corners[0];
                 for (int f = 0; f < cube::kFaceCount; ++f) {
                     for (std::int8_t exit : piece.exits[f]) {
                         if (exit < 0) break;
-                        walk.exits[walk.exitCount++] = static_cast<std::uint8_t>(f << 4 | cube::edgeAcrossFace(exit, f));
+                        walk.exits[walk.exitCount++] =
+                            static_cast<std::uint8_t>(f << 4 | cube::edgeAcrossFace(exit, f));
                     }
                 }
             }
@@ -181,11 +184,14 @@ public:
         return grid_.above(i) != grid_.above(i + stride[e.axis]);
     }
 
-    void enqueue(SparseBlocks& blocks, std::uint8_t* denseVisited, Walker& walker, int x, int y, int z, int edge) const override {
-        enqueueIn(walker, denseVisited, blocks.at(x, y, z, walker.thread), SparseBlocks::local(x, y, z), grid_.index(x, y, z), edge);
+    void enqueue(SparseBlocks& blocks, std::uint8_t* denseVisited, Walker& walker, int x, int y, int z,
+                 int edge) const override {
+        enqueueIn(walker, denseVisited, blocks.at(x, y, z, walker.thread), SparseBlocks::local(x, y, z),
+                  grid_.index(x, y, z), edge);
     }
 
-    std::size_t advance(SparseBlocks& blocks, std::uint8_t* denseVisited, Walker& walker, std::size_t cellBudget) const override {
+    std::size_t advance(SparseBlocks& blocks, std::uint8_t* denseVisited, Walker& walker,
+                        std::size_t cellBudget) const override {
         return walk<false>(blocks, denseVisited, walker, cellBudget, nullptr);
     }
 
@@ -199,7 +205,8 @@ public:
 
 private:
     struct MeshAppender {
-        explicit MeshAppender(Mesh& mesh) : vertices(mesh.vertices), indices(mesh.indices), vertexEdges(mesh.vertexEdges) {}
+        explicit MeshAppender(Mesh& mesh)
+            : vertices(mesh.vertices), indices(mesh.indices), vertexEdges(mesh.vertexEdges) {}
         Appender<Vertex> vertices;
         Appender<std::uint32_t> indices;
         Appender<PackedGridEdge> vertexEdges;
@@ -210,7 +217,8 @@ private:
     // vertices on edges between regions are claimed atomically, and triangles
     // with another thread's corners are measured once the walk is over.
     template <bool Shared>
-    std::size_t walk(SparseBlocks& blocks, std::uint8_t* denseVisited, Walker& w, std::size_t cellBudget, Exchange* exchange) const {
+    std::size_t walk(SparseBlocks& blocks, std::uint8_t* denseVisited, Walker& w, std::size_t cellBudget,
+                     Exchange* exchange) const {
         MeshAppender out(w.mesh);
         const std::size_t firstIndex = out.indices.size(), firstVertex = out.vertices.size();
         std::size_t visited = 0;
@@ -236,8 +244,8 @@ private:
             std::uint32_t* const cellSlots = block->vertex.data() + 3 * cell;  // the ids at the cell's first corner
             for (unsigned mask = walk.edgeMask; mask != 0; mask &= mask - 1) {
                 const int edge = __builtin_ctz(mask);
-                std::uint32_t& slot = cornersInBlock ? cellSlots[walk_.edgeSlot[edge]]
-                                                     : vertexSlot(blocks, block, local, edge, w.thread);
+                std::uint32_t& slot =
+                    cornersInBlock ? cellSlots[walk_.edgeSlot[edge]] : vertexSlot(blocks, block, local, edge, w.thread);
                 std::uint32_t id = Shared ? __atomic_load_n(&slot, __ATOMIC_RELAXED) : slot;
                 if (id == SparseBlocks::kNoVertex) id = newVertex<Shared>(w, out, slot, at, edge);
                 vertexOf[edge] = id;
@@ -260,7 +268,10 @@ private:
                 if ((cell & walk_.faceMask[f]) == walk_.faceSide[f]) {
                     Block* next = blocks.linked(block, walk_.link[f], w.thread);
                     if (Shared && next->owner != w.thread) {
-                        exchange->send(w.thread, next->owner, {next, sample + sampleStep_[f], static_cast<std::uint16_t>(cell ^ walk_.faceMask[f]), static_cast<std::uint8_t>(edge)});
+                        exchange->send(
+                            w.thread, next->owner,
+                            {next, sample + sampleStep_[f], static_cast<std::uint16_t>(cell ^ walk_.faceMask[f]),
+                             static_cast<std::uint8_t>(edge)});
                     } else {
                         enqueueIn(w, denseVisited, next, cell ^ walk_.faceMask[f], sample + sampleStep_[f], edge);
                     }
@@ -291,14 +302,18 @@ private:
             for (; k < end; k += 3) {
                 const std::uint32_t a = indices[k], b = indices[k + 1], c = indices[k + 2];
                 if ((((a ^ w.idBase) | (b ^ w.idBase) | (c ^ w.idBase)) & tagMask) == 0) {
-                    detail::TriangleMeasure::addTo(doubledArea, sixfoldVolume, vertices[a & w.indexMask], vertices[b & w.indexMask], vertices[c & w.indexMask]);
+                    detail::TriangleMeasure::addTo(doubledArea, sixfoldVolume, vertices[a & w.indexMask],
+                                                   vertices[b & w.indexMask], vertices[c & w.indexMask]);
                 } else {
                     w.unmeasured.push_back(k);
                 }
             }
         } else {
-            for (; k + 12 <= end; k += 12) detail::TriangleMeasure::addFourTo(doubledArea, sixfoldVolume, vertices, indices + k);
-            for (; k < end; k += 3) detail::TriangleMeasure::addTo(doubledArea, sixfoldVolume, vertices[indices[k]], vertices[indices[k + 1]], vertices[indices[k + 2]]);
+            for (; k + 12 <= end; k += 12)
+                detail::TriangleMeasure::addFourTo(doubledArea, sixfoldVolume, vertices, indices + k);
+            for (; k < end; k += 3)
+                detail::TriangleMeasure::addTo(doubledArea, sixfoldVolume, vertices[indices[k]],
+                                               vertices[indices[k + 1]], vertices[indices[k + 2]]);
         }
         w.measure.triangles.merge({doubledArea, sixfoldVolume});
         w.measure.addBounds(vertices + firstVertex, out.vertices.size() - firstVertex);
@@ -352,7 +367,8 @@ private:
     template <bool Shared>
     std::uint32_t newVertex(Walker& w, MeshAppender& out, std::uint32_t& slot, const int at[3], int edge) const {
         const std::size_t index = out.vertices.size();
-        if (index >= w.indexMask) throw InputError("surface too large: more than " + std::to_string(w.indexMask) + " vertices per thread");
+        if (index >= w.indexMask)
+            throw InputError("surface too large: more than " + std::to_string(w.indexMask) + " vertices per thread");
         const auto id = static_cast<std::uint32_t>(w.idBase | index);
         const auto& o = walk_.edgeOrigin[edge];
         const GridEdge e{at[0] + o[0], at[1] + o[1], at[2] + o[2], walk_.edgeAxis[edge]};
@@ -364,7 +380,8 @@ private:
         }
         const int p[3] = {e.x, e.y, e.z};
         constexpr int m = SparseBlocks::kRegionMask;
-        if (Shared && ((e.axis != 0 && (p[0] & m) == 0) || (e.axis != 1 && (p[1] & m) == 0) || (e.axis != 2 && (p[2] & m) == 0))) {
+        if (Shared && ((e.axis != 0 && (p[0] & m) == 0) || (e.axis != 1 && (p[1] & m) == 0) ||
+                       (e.axis != 2 && (p[2] & m) == 0))) {
             std::uint32_t first = SparseBlocks::kNoVertex;
             if (!__atomic_compare_exchange_n(&slot, &first, id, false, __ATOMIC_RELAXED, __ATOMIC_RELAXED)) {
                 out.vertices.retract(1);
@@ -403,7 +420,8 @@ bool edgeInside(const Volume& volume, const GridEdge& e) {
 }
 
 // Queues the cells around a seed edge, each entered through that edge.
-void queueSeed(const Volume& volume, const GridEdge& seed, const TrackWorker& worker, SparseBlocks& blocks, Walker& walker) {
+void queueSeed(const Volume& volume, const GridEdge& seed, const TrackWorker& worker, SparseBlocks& blocks,
+               Walker& walker) {
     const Dims& n = volume.dims();
     const int b = (seed.axis + 1) % 3, c = (seed.axis + 2) % 3;
     for (int db = 0; db < 2; ++db) {

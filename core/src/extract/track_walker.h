@@ -33,15 +33,17 @@ struct alignas(128) Walker {
     detail::SurfaceMeasure measure;
     PieceQueue queue;
     std::size_t cellsVisited = 0;
-    int thread = 0;  // the regions it walks, and its arena in the sparse blocks
-    std::uint32_t idBase = 0;                 // thread << the width of an index
+    int thread = 0;                               // the regions it walks, and its arena in the sparse blocks
+    std::uint32_t idBase = 0;                     // thread << the width of an index
     std::uint32_t indexMask = ~std::uint32_t(0);  // the index bits of an id
-    std::vector<std::size_t> unmeasured;      // triangles (first index) with another thread's corners
+    std::vector<std::size_t> unmeasured;          // triangles (first index) with another thread's corners
 };
 
 // A surface walked by one thread, whatever the sample type.
 struct TrackState {
-    explicit TrackState(const Dims& dims, WalkOrder order = WalkOrder::ByBlock) : blocks(dims) { walker.queue = PieceQueue(order); }
+    explicit TrackState(const Dims& dims, WalkOrder order = WalkOrder::ByBlock) : blocks(dims) {
+        walker.queue = PieceQueue(order);
+    }
     SparseBlocks blocks;
     std::uint8_t* denseVisited = nullptr;  // one bit per piece per cell, for trackAllSurfaces
     Walker walker;
@@ -52,9 +54,11 @@ class TrackWorker {
 public:
     virtual ~TrackWorker() = default;
     // Queues on `walker` the piece of cell (x, y, z) holding cube edge `edge`, unless it was queued before.
-    virtual void enqueue(SparseBlocks& blocks, std::uint8_t* denseVisited, Walker& walker, int x, int y, int z, int edge) const = 0;
+    virtual void enqueue(SparseBlocks& blocks, std::uint8_t* denseVisited, Walker& walker, int x, int y, int z,
+                         int edge) const = 0;
     // Walks on one thread for up to `cellBudget` cell pieces; returns how many it walked.
-    virtual std::size_t advance(SparseBlocks& blocks, std::uint8_t* denseVisited, Walker& walker, std::size_t cellBudget) const = 0;
+    virtual std::size_t advance(SparseBlocks& blocks, std::uint8_t* denseVisited, Walker& walker,
+                                std::size_t cellBudget) const = 0;
     // Walks the walker's regions as one of several threads sharing `blocks`, until no piece is left.
     virtual void walkShared(SparseBlocks& blocks, Walker& walker, Exchange& exchange) const = 0;
     virtual std::uint8_t config(int x, int y, int z) const = 0;
@@ -67,7 +71,8 @@ std::unique_ptr<TrackWorker> makeWorker(const Volume& volume, double iso, TableK
 bool edgeInside(const Volume& volume, const GridEdge& e);
 
 // Queues the cells around a seed edge, each entered through that edge.
-void queueSeed(const Volume& volume, const GridEdge& seed, const TrackWorker& worker, SparseBlocks& blocks, Walker& walker);
+void queueSeed(const Volume& volume, const GridEdge& seed, const TrackWorker& worker, SparseBlocks& blocks,
+               Walker& walker);
 
 // Throws InputError when the seed edge is outside the volume or not crossed at `iso`.
 void checkSeed(const Volume& volume, double iso, const TrackWorker& worker, const GridEdge& seed);
@@ -77,8 +82,8 @@ Surface finishedSurface(Walker& walker, TableKind table);
 
 // Walks the surface from `seed` on `threads` threads, each walking its own
 // regions, then gathers their parts into one mesh (track_together.cpp).
-Surface walkTogether(const Volume& volume, const TrackWorker& worker, const GridEdge& seed, TableKind table, int threads,
-                     Clock::time_point start);
+Surface walkTogether(const Volume& volume, const TrackWorker& worker, const GridEdge& seed, TableKind table,
+                     int threads, Clock::time_point start);
 
 // For error messages: an isovalue as %g (io_common.h has its own numberText, exact), and a grid edge.
 std::string isoText(double v);

@@ -22,7 +22,7 @@ public:
         Block* block;
         std::size_t sample;  // the cell's first corner
         std::uint16_t cell;
-        std::uint8_t edge;   // the entry edge
+        std::uint8_t edge;  // the entry edge
     };
 
     explicit Exchange(int threads)
@@ -31,7 +31,9 @@ public:
     }
 
     // Collected by the sender, handed over at its next poll or wait.
-    void send(int from, int to, const Message& message) { outbox_[std::size_t(from)].to[std::size_t(to)].push_back(message); }
+    void send(int from, int to, const Message& message) {
+        outbox_[std::size_t(from)].to[std::size_t(to)].push_back(message);
+    }
 
     // From a walking thread every so often: hands over what it sent and takes
     // what was sent to it; false once the walk is abandoned.
@@ -56,7 +58,8 @@ public:
             handOver(me);
             if (takeLocked(me, received)) return true;
             ++idle_;
-            if (idle_ == threads_ && std::all_of(inbox_.begin(), inbox_.end(), [](const auto& box) { return box.empty(); })) {
+            if (idle_ == threads_ &&
+                std::all_of(inbox_.begin(), inbox_.end(), [](const auto& box) { return box.empty(); })) {
                 finished_.store(true, std::memory_order_release);
                 woken_.notify_all();
                 return false;
@@ -68,7 +71,10 @@ public:
             std::this_thread::yield();
         }
         std::unique_lock<std::mutex> lock(mutex_);
-        woken_.wait(lock, [&] { return finished_.load(std::memory_order_relaxed) || stopped_.load(std::memory_order_relaxed) || !inbox_[std::size_t(me)].empty(); });
+        woken_.wait(lock, [&] {
+            return finished_.load(std::memory_order_relaxed) || stopped_.load(std::memory_order_relaxed) ||
+                   !inbox_[std::size_t(me)].empty();
+        });
         if (!takeLocked(me, received)) return false;
         --idle_;
         return true;

@@ -22,8 +22,8 @@ constexpr std::uint32_t kPixelData = 0x7fe00010u;
 
 // VRs whose length is 4 bytes after 2 reserved ones in explicit VR.
 const std::set<std::string> kLongVrs = {"OB", "OD", "OF", "OL", "OV", "OW", "SQ", "SV", "UC", "UN", "UR", "UT", "UV"};
-const std::set<std::string> kShortVrs = {"AE", "AS", "AT", "CS", "DA", "DS", "DT", "FD", "FL", "IS", "LO", "LT",
-                                         "PN", "SH", "SL", "SS", "ST", "TM", "UI", "UL", "US"};
+const std::set<std::string> kShortVrs = {"AE", "AS", "AT", "CS", "DA", "DS", "DT", "FD", "FL", "IS", "LO",
+                                         "LT", "PN", "SH", "SL", "SS", "ST", "TM", "UI", "UL", "US"};
 
 std::string tagText(std::uint32_t tag) {
     char buf[16];
@@ -41,8 +41,9 @@ private:
     [[noreturn]] void fail(const std::string& problem) const { throw FormatError(path_ + ": " + problem); }
 
     void readAt(std::uint64_t at, unsigned char* out, std::size_t n, std::uint64_t end, const char* what) {
-        if (at + n > end) fail(std::string("truncated: ") + what + " at byte " + std::to_string(at) + " runs past " +
-                               (end == size_ ? "the end of the file" : "its sequence or item"));
+        if (at + n > end)
+            fail(std::string("truncated: ") + what + " at byte " + std::to_string(at) + " runs past " +
+                 (end == size_ ? "the end of the file" : "its sequence or item"));
         if (std::fseek(file_, long(at), SEEK_SET) != 0 || std::fread(out, 1, n, file_) != n)
             fail("cannot read at byte " + std::to_string(at));
     }
@@ -97,7 +98,8 @@ std::uint64_t Walker::metaGroup(std::uint64_t at) {
                  std::to_string(size_ - std::min(size_, at + header)) + " remain");
         if (tag == 0x00020010u) {
             std::string uid(std::size_t(length), '\0');
-            if (length) readAt(at + header, reinterpret_cast<unsigned char*>(&uid[0]), uid.size(), size_, "TransferSyntaxUID");
+            if (length)
+                readAt(at + header, reinterpret_cast<unsigned char*>(&uid[0]), uid.size(), size_, "TransferSyntaxUID");
             while (!uid.empty() && (uid.back() == '\0' || uid.back() == ' ')) uid.pop_back();
             out_.transferSyntax = uid;
         }
@@ -119,13 +121,14 @@ void Walker::rleHeader(std::uint64_t at, std::uint32_t length) {
         return std::uint32_t(b[3]) << 24 | std::uint32_t(b[2]) << 16 | std::uint32_t(b[1]) << 8 | b[0];
     };
     const std::uint32_t segments = word(0);
-    if (segments < 1 || segments > kMaxSegments) fail("an RLE frame declares " + std::to_string(segments) + " segments");
+    if (segments < 1 || segments > kMaxSegments)
+        fail("an RLE frame declares " + std::to_string(segments) + " segments");
     std::uint32_t previous = 0;
     for (std::uint32_t s = 1; s <= segments; ++s) {
         const std::uint32_t offset = word(s);
         if ((s == 1 && offset != kHeaderBytes) || (s > 1 && offset <= previous) || offset >= length)
-            fail("an RLE frame's segment " + std::to_string(s) + " starts at byte " + std::to_string(offset) +
-                 " of " + std::to_string(length));
+            fail("an RLE frame's segment " + std::to_string(s) + " starts at byte " + std::to_string(offset) + " of " +
+                 std::to_string(length));
         previous = offset;
     }
 }

@@ -169,8 +169,7 @@ std::uint64_t sampleBytes(const VolumeHeader& header) { return sampleBytes(heade
 std::uint64_t sampleBytes(const VolumeHeader& header, ScalarType type) {
     const Dims& d = header.dims;
     const std::string field = header.path + ": field \"" + header.sizeField + "\": ";
-    if (d[0] < 1 || d[1] < 1 || d[2] < 1)
-        throw FormatError(field + "dimensions must be positive, got " + dimsText(d));
+    if (d[0] < 1 || d[1] < 1 || d[2] < 1) throw FormatError(field + "dimensions must be positive, got " + dimsText(d));
     // Step by step so hostile sizes cannot overflow the product.
     const std::uint64_t maxSamples = kMaxVolumeBytes / scalarTypeSize(type);
     const auto nx = std::uint64_t(d[0]), ny = std::uint64_t(d[1]), nz = std::uint64_t(d[2]);
@@ -187,14 +186,15 @@ void checkGeometry(const VolumeHeader& header, const std::string& spacingField, 
     const std::string oText = numberText(o[0]) + " " + numberText(o[1]) + " " + numberText(o[2]);
     for (int a = 0; a < 3; ++a) {
         if (!(s[a] > 0) || !std::isfinite(s[a]))
-            throw FormatError(header.path + ": field \"" + spacingField + "\": spacing must be positive and finite, got " +
-                              sText);
+            throw FormatError(header.path + ": field \"" + spacingField +
+                              "\": spacing must be positive and finite, got " + sText);
         if (!std::isfinite(o[a]))
             throw FormatError(header.path + ": field \"" + originField + "\": origin must be finite, got " + oText);
         const double reach = std::fabs(o[a]) + double(std::max(header.dims[a] - 1, 0)) * s[a];
         if (!(reach <= kMaxWorldCoordinate))
-            throw FormatError(header.path + ": fields \"" + spacingField + "\" and \"" + originField + "\": grid reaches " +
-                              numberText(reach) + " along axis " + std::to_string(a) + ", beyond float range");
+            throw FormatError(header.path + ": fields \"" + spacingField + "\" and \"" + originField +
+                              "\": grid reaches " + numberText(reach) + " along axis " + std::to_string(a) +
+                              ", beyond float range");
     }
 }
 
@@ -209,7 +209,8 @@ Volume readSamples(const VolumeHeader& header, const SampleData& data) {
     const std::string holder = data.path == header.path ? "the file" : "\"" + printable(data.path, 200) + "\"";
     auto refuse = [&](const std::string& problem) {
         throw FormatError(header.path + ": field \"" + header.sizeField + "\": " + dimsText(header.dims) + " " +
-                          scalarTypeName(header.type) + " needs " + std::to_string(needed) + " data bytes but " + problem);
+                          scalarTypeName(header.type) + " needs " + std::to_string(needed) + " data bytes but " +
+                          problem);
     };
 
     FilePtr file = openForReading(data.path, where);
@@ -226,7 +227,8 @@ Volume readSamples(const VolumeHeader& header, const SampleData& data) {
         volume.setDirection(header.direction);
         seekTo(f, data.offset + data.skip, where);
         readExact(f, volume.bytes(), needed, where);
-        if (data.bigEndian != hostIsBigEndian()) swapBytes(volume.bytes(), volume.sampleCount(), scalarTypeSize(header.type));
+        if (data.bigEndian != hostIsBigEndian())
+            swapBytes(volume.bytes(), volume.sampleCount(), scalarTypeSize(header.type));
         return volume;
     }
 
@@ -245,8 +247,9 @@ Volume readSamples(const VolumeHeader& header, const SampleData& data) {
                               " of the " + std::to_string(data.skip) + " header bytes");
         const std::uint64_t held = counter.skip(needed + 1);
         if (held < needed)
-            throw FormatError(where + ": " + codec + " data is truncated: it holds " + std::to_string(held) + " of the " +
-                              std::to_string(needed) + " bytes field \"" + header.sizeField + "\" describes");
+            throw FormatError(where + ": " + codec + " data is truncated: it holds " + std::to_string(held) +
+                              " of the " + std::to_string(needed) + " bytes field \"" + header.sizeField +
+                              "\" describes");
         if (held > needed && !data.trailingBytesAllowed)
             throw FormatError(where + ": " + codec + " data holds more than the " + std::to_string(needed) +
                               " bytes field \"" + header.sizeField + "\" describes");
@@ -258,7 +261,8 @@ Volume readSamples(const VolumeHeader& header, const SampleData& data) {
     reader.skip(data.skip);
     if (reader.read(reinterpret_cast<unsigned char*>(volume.bytes()), std::size_t(needed)) != needed)
         throw FormatError(where + ": " + codec + " data changed while it was read");
-    if (data.bigEndian != hostIsBigEndian()) swapBytes(volume.bytes(), volume.sampleCount(), scalarTypeSize(header.type));
+    if (data.bigEndian != hostIsBigEndian())
+        swapBytes(volume.bytes(), volume.sampleCount(), scalarTypeSize(header.type));
     return volume;
 }
 

@@ -43,7 +43,8 @@ MeshFormat meshFormatOf(const std::string& path) {
     if (ext == ".ply") return MeshFormat::Ply;
     if (ext == ".obj") return MeshFormat::Obj;
     if (ext == ".stl") return MeshFormat::Stl;
-    throw InputError(path + ": unsupported mesh file extension \"" + printable(ext) + "\" (supported: .ply, .obj, .stl)");
+    throw InputError(path + ": unsupported mesh file extension \"" + printable(ext) +
+                     "\" (supported: .ply, .obj, .stl)");
 }
 
 const char* meshFormatExtension(MeshFormat format) {
@@ -94,7 +95,8 @@ void writeObj(const std::string& path, const Mesh& mesh, const std::vector<std::
 void writeStl(const std::string& path, const Mesh& mesh) {
     checkMesh(path, mesh, nullptr);
     if (mesh.triangleCount() > std::numeric_limits<std::uint32_t>::max())
-        throw InputError(path + ": " + std::to_string(mesh.triangleCount()) + " triangles, more than binary STL can count");
+        throw InputError(path + ": " + std::to_string(mesh.triangleCount()) +
+                         " triangles, more than binary STL can count");
     BufferedOutput out(path);
     std::string& buf = out.buffer();
     // Readers take a header starting with "solid" for ASCII STL, so this one does not.

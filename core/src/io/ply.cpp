@@ -40,7 +40,8 @@ bool parseElement(const std::string& line, const std::string& name, std::uint64_
     const std::string prefix = "element " + name + " ";
     if (line.compare(0, prefix.size(), prefix) != 0) return false;
     const std::string digits = line.substr(prefix.size());
-    if (digits.empty() || digits.size() > 19 || digits.find_first_not_of("0123456789") != std::string::npos) return false;
+    if (digits.empty() || digits.size() > 19 || digits.find_first_not_of("0123456789") != std::string::npos)
+        return false;
     count = std::stoull(digits);
     return true;
 }
@@ -58,7 +59,8 @@ void writePly(const std::string& path, const Mesh& mesh, const std::vector<std::
     const std::size_t vertexCount = mesh.vertices.size();
     const std::size_t faceCount = mesh.triangleCount();
     if (vertexCount > std::size_t(std::numeric_limits<std::int32_t>::max()))
-        throw InputError(path + ": mesh has " + std::to_string(vertexCount) + " vertices, more than PLY int indices allow");
+        throw InputError(path + ": mesh has " + std::to_string(vertexCount) +
+                         " vertices, more than PLY int indices allow");
     detail::checkMesh(path, mesh, faceComponent);
 
     detail::BufferedOutput out(path);
@@ -103,7 +105,8 @@ Mesh readPly(const std::string& path, std::vector<std::int32_t>* faceComponent) 
             continue;
         }
         line = detail::joinWords(line);
-        if (lines.empty() && line != "ply") throw FormatError(path + ": not a PLY file: first line is \"" + printable(line) + "\"");
+        if (lines.empty() && line != "ply")
+            throw FormatError(path + ": not a PLY file: first line is \"" + printable(line) + "\"");
         if (line.compare(0, 8, "comment ") != 0 && line != "comment" && line.compare(0, 8, "obj_info") != 0)
             lines.push_back(line);
         if (line == "end_header") break;

@@ -23,7 +23,8 @@ inline void adviseHugePages(void* data, std::size_t bytes) {
     const std::uintptr_t start = reinterpret_cast<std::uintptr_t>(data);
     const std::uintptr_t begin = (start + kHugePage - 1) & ~(kHugePage - 1);
     const std::uintptr_t end = (start + bytes) & ~(kHugePage - 1);
-    if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);  // only advice: failure is harmless
+    if (end > begin)
+        madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);  // only advice: failure is harmless
 #else
     (void)data;
     (void)bytes;

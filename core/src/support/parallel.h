@@ -75,7 +75,8 @@ void parallelForWithState(int count, int threads, Make&& make, Fn&& fn) {
 // Runs fn(i) for i in [0, count) on `threads` threads, as parallelForWithState.
 template <class Fn>
 void parallelFor(int count, int threads, Fn&& fn) {
-    parallelForWithState(count, threads, [] { return 0; }, [&](int, int i) { fn(i); });
+    parallelForWithState(
+        count, threads, [] { return 0; }, [&](int, int i) { fn(i); });
 }
 
 // Runs fn(i) for every i in [0, count) at once, each on a thread of its own

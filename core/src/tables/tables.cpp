@@ -187,21 +187,21 @@ const std::array<BaseCase, 15>& lorensenClineBaseCases() {
     // Vertex masks and surface polygons of the 15 cases of Lorensen & Cline (1987),
     // in isotrack's cube numbering. Winding is set by orientPolygon.
     static const std::array<BaseCase, 15> cases{{
-        {0x00, {}},                                      // 0
-        {0x01, {{0, 3, 8}}},                             // 1: one corner
-        {0x03, {{3, 8, 9, 1}}},                          // 2: an edge
-        {0x05, {{0, 3, 8}, {1, 2, 10}}},                 // 3: two corners across a face
-        {0x41, {{0, 3, 8}, {5, 6, 10}}},                 // 4: two corners across the cube
-        {0x07, {{3, 8, 9, 10, 2}}},                      // 5: three corners of a face
-        {0x43, {{3, 8, 9, 1}, {5, 6, 10}}},              // 6: an edge and a far corner
-        {0x4a, {{0, 1, 9}, {2, 3, 11}, {5, 6, 10}}},     // 7: three scattered corners
-        {0x0f, {{8, 9, 10, 11}}},                        // 8: a whole face
-        {0x8d, {{0, 1, 10, 6, 7, 8}}},                   // 9: a corner and its three neighbours
-        {0x55, {{0, 3, 7, 4}, {1, 2, 6, 5}}},            // 10: two opposite edges
-        {0x71, {{0, 3, 7, 6, 10, 9}}},                   // 11: a twisted path of four
-        {0x1e, {{0, 3, 11, 10, 9}, {8, 7, 4}}},          // 12: three corners of a face and a far corner
+        {0x00, {}},                                              // 0
+        {0x01, {{0, 3, 8}}},                                     // 1: one corner
+        {0x03, {{3, 8, 9, 1}}},                                  // 2: an edge
+        {0x05, {{0, 3, 8}, {1, 2, 10}}},                         // 3: two corners across a face
+        {0x41, {{0, 3, 8}, {5, 6, 10}}},                         // 4: two corners across the cube
+        {0x07, {{3, 8, 9, 10, 2}}},                              // 5: three corners of a face
+        {0x43, {{3, 8, 9, 1}, {5, 6, 10}}},                      // 6: an edge and a far corner
+        {0x4a, {{0, 1, 9}, {2, 3, 11}, {5, 6, 10}}},             // 7: three scattered corners
+        {0x0f, {{8, 9, 10, 11}}},                                // 8: a whole face
+        {0x8d, {{0, 1, 10, 6, 7, 8}}},                           // 9: a corner and its three neighbours
+        {0x55, {{0, 3, 7, 4}, {1, 2, 6, 5}}},                    // 10: two opposite edges
+        {0x71, {{0, 3, 7, 6, 10, 9}}},                           // 11: a twisted path of four
+        {0x1e, {{0, 3, 11, 10, 9}, {8, 7, 4}}},                  // 12: three corners of a face and a far corner
         {0xa5, {{0, 3, 8}, {1, 2, 10}, {4, 5, 9}, {6, 7, 11}}},  // 13: alternate corners
-        {0xb2, {{0, 1, 5, 6, 11, 8}}},                   // 14: the mirror image of 11
+        {0xb2, {{0, 1, 5, 6, 11, 8}}},                           // 14: the mirror image of 11
     }};
     return cases;
 }

@@ -64,8 +64,7 @@ const FieldInfo* findField(const std::string& name) {
 
 const FieldInfo& requireField(const std::string& name, const std::string& context) {
     const FieldInfo* f = findField(name);
-    if (!f)
-        throw InputError(context + ": unknown field \"" + printable(name) + "\" (valid: " + validNames() + ")");
+    if (!f) throw InputError(context + ": unknown field \"" + printable(name) + "\" (valid: " + validNames() + ")");
     return *f;
 }
 
@@ -133,8 +132,7 @@ Volume gyroidField(int n) {
     std::size_t i = 0;
     for (std::size_t z = 0; z < std::size_t(n); ++z)
         for (std::size_t y = 0; y < std::size_t(n); ++y)
-            for (std::size_t x = 0; x < std::size_t(n); ++x)
-                out[i++] = float(s[x] * c[y] + s[y] * c[z] + s[z] * c[x]);
+            for (std::size_t x = 0; x < std::size_t(n); ++x) out[i++] = float(s[x] * c[y] + s[y] * c[z] + s[z] * c[x]);
     return vol;
 }
 
@@ -165,8 +163,7 @@ Volume noiseField(int n) {
     Volume vol = makeVolume(n);
     float* out = vol.data<float>();
     // 24 bits so the float is exact and never rounds up to 1.
-    for (std::size_t i = 0; i < vol.sampleCount(); ++i)
-        out[i] = float(double(splitmix64(kSeed + i) >> 40) * 0x1.0p-24);
+    for (std::size_t i = 0; i < vol.sampleCount(); ++i) out[i] = float(double(splitmix64(kSeed + i) >> 40) * 0x1.0p-24);
     return vol;
 }
 
@@ -244,10 +241,9 @@ FieldSpec parseFieldSpec(const std::string& spec) {
     FieldSpec result{info.name, info.defaultSize};
     if (colon == std::string::npos) return result;
     const std::string sizeText = spec.substr(colon + 1);
-    const bool allDigits = !sizeText.empty() && std::all_of(sizeText.begin(), sizeText.end(),
-                                                            [](char c) { return c >= '0' && c <= '9'; });
-    if (!allDigits)
-        throw InputError(context + ": size \"" + printable(sizeText) + "\" is not a positive integer");
+    const bool allDigits =
+        !sizeText.empty() && std::all_of(sizeText.begin(), sizeText.end(), [](char c) { return c >= '0' && c <= '9'; });
+    if (!allDigits) throw InputError(context + ": size \"" + printable(sizeText) + "\" is not a positive integer");
     // More than four digits is out of range anyway, and keeps stoi from overflowing.
     if (sizeText.size() > 4 || std::stoi(sizeText) < kMinFieldSize || std::stoi(sizeText) > kMaxFieldSize)
         throw InputError(context + ": size " + printable(sizeText) + " is outside " + std::to_string(kMinFieldSize) +

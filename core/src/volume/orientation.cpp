@@ -167,7 +167,8 @@ void transformMesh(Mesh& mesh, const FrameTransform& transform) {
         }
     }
     if (transform.mirrors())
-        for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
+        for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
+            std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
 }
 
 }  // namespace isotrack

@@ -39,7 +39,7 @@ TEST_CASE("a seed on a sphere follows the surface as the isovalue moves, and is 
     const double r = sphereFieldRadius(n);
     const Vec3d centre = sphereFieldCenter(n);
     const Vec3d point{centre[0] + r, centre[1], centre[2]};  // on the surface at isovalue 0
-    for (double iso : {-4.0, -2.5, 0.0, 3.0, 7.5}) {  // the sphere stays inside the grid
+    for (double iso : {-4.0, -2.5, 0.0, 3.0, 7.5}) {         // the sphere stays inside the grid
         CAPTURE(iso);
         const std::optional<FollowedSeed> seed = followSeed(volume, iso, point);
         REQUIRE(seed);

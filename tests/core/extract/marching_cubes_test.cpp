@@ -3,10 +3,10 @@
 #include <cmath>
 #include <fstream>
 
+#include "core/mesh_checks.h"
 #include "isotrack/fields.h"
 #include "isotrack/io.h"
 #include "isotrack/marching_cubes.h"
-#include "core/mesh_checks.h"
 
 using namespace isotrack;
 using isotrack::testing::topology;

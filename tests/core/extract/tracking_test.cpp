@@ -6,6 +6,7 @@
 #include <fstream>
 #include <map>
 
+#include "core/mesh_checks.h"
 #include "isotrack/continuation.h"
 #include "isotrack/cube.h"
 #include "isotrack/errors.h"
@@ -13,7 +14,6 @@
 #include "isotrack/io.h"
 #include "isotrack/marching_cubes.h"
 #include "isotrack/tracking.h"
-#include "core/mesh_checks.h"
 
 using namespace isotrack;
 using isotrack::testing::triangleSet;
@@ -69,7 +69,8 @@ void checkSameFigures(const SurfaceStats& a, const SurfaceStats& b, double epsil
 }
 
 // Every surface of a field together must be the exhaustive mesh, split.
-void requireSurfacesEqualExhaustive(const Volume& volume, double iso, TableKind table, const std::vector<Surface>& surfaces) {
+void requireSurfacesEqualExhaustive(const Volume& volume, double iso, TableKind table,
+                                    const std::vector<Surface>& surfaces) {
     const Mesh whole = marchingCubes(volume, iso, table);
     std::multiset<std::array<std::uint64_t, 3>> united;
     std::set<std::uint64_t> seenEdges;
@@ -78,7 +79,7 @@ void requireSurfacesEqualExhaustive(const Volume& volume, double iso, TableKind 
         const auto tris = triangleSet(surfaces[i].mesh, volume.dims());
         united.insert(tris.begin(), tris.end());
         const auto edges = vertexEdgeSet(surfaces[i].mesh, volume.dims());
-        CHECK(edges.size() == surfaces[i].mesh.vertices.size());  // one vertex per crossed edge
+        CHECK(edges.size() == surfaces[i].mesh.vertices.size());            // one vertex per crossed edge
         for (std::uint64_t e : edges) REQUIRE(seenEdges.insert(e).second);  // no vertex shared by two surfaces
         vertices += surfaces[i].mesh.vertices.size();
         CHECK(connectedComponents(surfaces[i].mesh) == 1);
@@ -157,7 +158,9 @@ void requireSameSurfaceOnThreads(const Volume& volume, double iso, const GridEdg
             const std::uint64_t key = isotrack::testing::edgeKey(many.mesh.vertexEdges[v], volume.dims());
             edges.insert(key);
             const auto expected = vertexOfEdge.find(key);
-            if (expected == vertexOfEdge.end() || std::memcmp(&many.mesh.vertices[v], &expected->second, sizeof(Vertex)) != 0) ++differing;
+            if (expected == vertexOfEdge.end() ||
+                std::memcmp(&many.mesh.vertices[v], &expected->second, sizeof(Vertex)) != 0)
+                ++differing;
         }
         CHECK(edges.size() == many.mesh.vertices.size());  // welded: no edge has two vertices
         CHECK(differing == 0);
@@ -194,7 +197,8 @@ TEST_CASE("several threads track the same surface as one", "[core][tracking]") {
                 const int p[3] = {e.x, e.y, e.z};
                 for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
             }
-            const bool acrossSeam = (lo[0] < 64 && hi[0] >= 64) || (lo[1] < 64 && hi[1] >= 64) || (lo[2] < 64 && hi[2] >= 64);
+            const bool acrossSeam =
+                (lo[0] < 64 && hi[0] >= 64) || (lo[1] < 64 && hi[1] >= 64) || (lo[2] < 64 && hi[2] >= 64);
             if (acrossSeam && s.stats.cellsVisited > 8192) {
                 requireSameSurfaceOnThreads(volume, iso, s.mesh.vertexEdges[0]);
                 crossing = true;
@@ -335,7 +339,8 @@ TEST_CASE("the smallest blob alone: one vertex per crossed edge around it", "[co
     const Volume volume = makeField({"blobs", n});
     const double iso = fieldDefaultIso("blobs");
     auto blobs = blobsFieldBlobs(n);
-    const Blob smallest = *std::min_element(blobs.begin(), blobs.end(), [](const Blob& a, const Blob& b) { return a.radius < b.radius; });
+    const Blob smallest =
+        *std::min_element(blobs.begin(), blobs.end(), [](const Blob& a, const Blob& b) { return a.radius < b.radius; });
     const Surface s = trackSurface(volume, iso, nearestCrossedEdge(volume, iso, smallest.centre));
     // Blobs are at least 2 voxels apart, so the crossed edges in a box around this one are its own.
     std::size_t crossed = 0;
@@ -361,10 +366,14 @@ TEST_CASE("the smallest blob alone: one vertex per crossed edge around it", "[co
 }
 
 TEST_CASE("every surface together is the exhaustive mesh, triangle for triangle", "[core][tracking]") {
-    SECTION("blobs") { requireAllEqualsExhaustive(makeField({"blobs", 64}), fieldDefaultIso("blobs"), TableKind::Consistent); }
+    SECTION("blobs") {
+        requireAllEqualsExhaustive(makeField({"blobs", 64}), fieldDefaultIso("blobs"), TableKind::Consistent);
+    }
     SECTION("shells") { requireAllEqualsExhaustive(makeField({"shells", 48}), 0.0, TableKind::Consistent); }
     // Rows whose length is not a multiple of 8 (the exhaustive pass keeps rows' flags 8 to a byte).
-    SECTION("blobs, odd size") { requireAllEqualsExhaustive(makeField({"blobs", 61}), fieldDefaultIso("blobs"), TableKind::Consistent); }
+    SECTION("blobs, odd size") {
+        requireAllEqualsExhaustive(makeField({"blobs", 61}), fieldDefaultIso("blobs"), TableKind::Consistent);
+    }
     SECTION("shells, odd size") { requireAllEqualsExhaustive(makeField({"shells", 45}), 0.0, TableKind::Consistent); }
     SECTION("noise, consistent") { requireAllEqualsExhaustive(makeField({"noise", 32}), 0.5, TableKind::Consistent); }
     SECTION("noise, classic") { requireAllEqualsExhaustive(makeField({"noise", 32}), 0.5, TableKind::Classic); }
@@ -388,7 +397,8 @@ TEST_CASE("every surface together is the exhaustive mesh, triangle for triangle"
     }
 }
 
-TEST_CASE("every surface together is the exhaustive mesh for every sample type, across its whole range", "[core][tracking]") {
+TEST_CASE("every surface together is the exhaustive mesh for every sample type, across its whole range",
+          "[core][tracking]") {
     // The tracker classifies cell by cell (two or four samples to a vector lane
     // for some types), the exhaustive pass row by row: both must agree on every
     // cell, at isovalues near either end of the type's range and in its middle.
@@ -481,7 +491,7 @@ TEST_CASE("seeds: nearest crossed edge, picked vertices, and refusals", "[core][
 
     CHECK_THROWS_AS(trackSurface(volume, 0.0, GridEdge{0, 0, 0, 0}), InputError);   // not crossed
     CHECK_THROWS_AS(trackSurface(volume, 0.0, GridEdge{31, 0, 0, 0}), InputError);  // leaves the volume
-    CHECK_THROWS_AS(nearestCrossedEdge(volume, 1e9, c), InputError);                 // no surface at all
+    CHECK_THROWS_AS(nearestCrossedEdge(volume, 1e9, c), InputError);                // no surface at all
 }
 
 TEST_CASE("surface statistics: bounds, area, volume and the border", "[core][tracking]") {

@@ -47,7 +47,9 @@ public:
         if (value.size() % 2) value += vr == std::string("UI") ? '\0' : ' ';
         raw(group, element, vr, value);
     }
-    void us(std::uint16_t group, std::uint16_t element, std::uint16_t value) { raw(group, element, "US", encode(value, false)); }
+    void us(std::uint16_t group, std::uint16_t element, std::uint16_t value) {
+        raw(group, element, "US", encode(value, false));
+    }
     void pixelData(const std::string& bytes) { raw(0x7fe0, 0x0010, "OW", bytes); }
     // Any element, with the length it declares (which may lie about the bytes that follow).
     void raw(std::uint16_t group, std::uint16_t element, const char* vr, const std::string& value,
@@ -61,12 +63,16 @@ public:
         std::string out(128, '\0');
         out += "DICM";
         const auto uid = [](std::string u) { return u.size() % 2 ? u + '\0' : u; };
-        const auto ui = [&](std::uint16_t e, const std::string& u) { return element(0x0002, e, "UI", uid(u), uid(u).size()); };
-        std::string meta = element(0x0002, 0x0001, "OB", std::string("\0\1", 2), 2) + ui(0x0002, "1.2.840.10008.5.1.4.1.1.2") +
-                           ui(0x0003, "1.2.3.4.5.6") + ui(0x0010, transferSyntax);
+        const auto ui = [&](std::uint16_t e, const std::string& u) {
+            return element(0x0002, e, "UI", uid(u), uid(u).size());
+        };
+        std::string meta = element(0x0002, 0x0001, "OB", std::string("\0\1", 2), 2) +
+                           ui(0x0002, "1.2.840.10008.5.1.4.1.1.2") + ui(0x0003, "1.2.3.4.5.6") +
+                           ui(0x0010, transferSyntax);
         meta.insert(0, element(0x0002, 0x0000, "UL", encode(std::uint32_t(meta.size()), false), 4));
         out += meta;
-        for (const auto& [tag, entry] : elements_) out += element(tag.first, tag.second, entry.first.c_str(), entry.second.first, entry.second.second);
+        for (const auto& [tag, entry] : elements_)
+            out += element(tag.first, tag.second, entry.first.c_str(), entry.second.first, entry.second.second);
         return out;
     }
 
@@ -82,7 +88,8 @@ private:
         return out + value;
     }
 
-    std::map<std::pair<std::uint16_t, std::uint16_t>, std::pair<std::string, std::pair<std::string, std::uint64_t>>> elements_;
+    std::map<std::pair<std::uint16_t, std::uint16_t>, std::pair<std::string, std::pair<std::string, std::uint64_t>>>
+        elements_;
 };
 
 }  // namespace isotrack::testing

@@ -70,10 +70,12 @@ std::string vtkHeader(const Volume& v, bool binary) {
     const Dims& d = v.dims();
     const Vec3d& s = v.spacing();
     const Vec3d& o = v.origin();
-    h << "# vtk DataFile Version 3.0\nwritten by io_formats_test\n" << (binary ? "BINARY" : "ASCII") << "\n"
+    h << "# vtk DataFile Version 3.0\nwritten by io_formats_test\n"
+      << (binary ? "BINARY" : "ASCII") << "\n"
       << "DATASET STRUCTURED_POINTS\nDIMENSIONS " << d[0] << " " << d[1] << " " << d[2] << "\n"
       << "SPACING " << s[0] << " " << s[1] << " " << s[2] << "\nORIGIN " << o[0] << " " << o[1] << " " << o[2] << "\n"
-      << "POINT_DATA " << v.sampleCount() << "\nSCALARS values " << vtkTypeName(v.type()) << " 1\nLOOKUP_TABLE default\n";
+      << "POINT_DATA " << v.sampleCount() << "\nSCALARS values " << vtkTypeName(v.type())
+      << " 1\nLOOKUP_TABLE default\n";
     return h.str();
 }
 
@@ -200,9 +202,10 @@ TEST_CASE("MetaImage zlib data, Origin for Offset, HeaderSize", "[core][io][meta
     const std::string samples = sampleBytes(v, false);
 
     const std::string packed = zlibBytes(samples);
-    writeFile(dir.file("z.mha"), metaHeader(v, false, "LOCAL",
-                                            "CompressedData = True\nCompressedDataSize = " +
-                                                std::to_string(packed.size()) + "\n") + packed);
+    writeFile(dir.file("z.mha"),
+              metaHeader(v, false, "LOCAL",
+                         "CompressedData = True\nCompressedDataSize = " + std::to_string(packed.size()) + "\n") +
+                  packed);
     requireSameVolume(loadMetaImage(dir.file("z.mha")), v);
     writeFile(dir.file("zd.raw"), packed);
     writeFile(dir.file("zd.mhd"), metaHeader(v, false, "zd.raw", "CompressedData = True\n"));
@@ -236,10 +239,11 @@ TEST_CASE("VTK legacy: keyword order and case, ASPECT_RATIO, CRLF, later attribu
     TempDir dir;
     const Volume v = patterned(ScalarType::Int16);
     const Dims& d = v.dims();
-    const std::string head = "# vtk DataFile Version 2.0\r\ntitle\r\nbinary\r\ndataset structured_points\r\n"
-                             "origin -10.5 0.25 7\r\naspect_ratio 0.5 1.25 3\r\ndimensions " +
-                             std::to_string(d[0]) + " " + std::to_string(d[1]) + " " + std::to_string(d[2]) +
-                             "\r\npoint_data 60\r\nscalars s short\r\nlookup_table default\r\n";
+    const std::string head =
+        "# vtk DataFile Version 2.0\r\ntitle\r\nbinary\r\ndataset structured_points\r\n"
+        "origin -10.5 0.25 7\r\naspect_ratio 0.5 1.25 3\r\ndimensions " +
+        std::to_string(d[0]) + " " + std::to_string(d[1]) + " " + std::to_string(d[2]) +
+        "\r\npoint_data 60\r\nscalars s short\r\nlookup_table default\r\n";
     writeFile(dir.file("mixed.vtk"), head + sampleBytes(v, true) + "\nVECTORS v float\n1 2 3\n");
     requireSameVolume(loadVtkLegacy(dir.file("mixed.vtk")), v);
 }
@@ -265,8 +269,9 @@ TEST_CASE("raw files with an explicit layout", "[core][io][raw]") {
 TEST_CASE("NRRD corner cases: detached gzip big-endian, byte skip -1, line skip", "[core][io]") {
     TempDir dir;
     const Volume v = patterned(ScalarType::UInt16);
-    const std::string head = "NRRD0004\ntype: uint16\ndimension: 3\nsizes: 5 4 3\nspacings: 0.5 1.25 3\n"
-                             "space origin: (-10.5,0.25,7)\n";
+    const std::string head =
+        "NRRD0004\ntype: uint16\ndimension: 3\nsizes: 5 4 3\nspacings: 0.5 1.25 3\n"
+        "space origin: (-10.5,0.25,7)\n";
     writeFile(dir.file("v.raw.gz"), gzipBytes(sampleBytes(v, true)));
     writeFile(dir.file("v.nhdr"), head + "endian: big\nencoding: gzip\ndata file: v.raw.gz\n");
     requireSameVolume(loadVolume(dir.file("v.nhdr")), v);

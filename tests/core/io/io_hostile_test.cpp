@@ -31,7 +31,8 @@ std::atomic<std::size_t> gLargestAllocation{0};
 
 void* allocate(std::size_t n) {
     std::size_t seen = gLargestAllocation.load(std::memory_order_relaxed);
-    while (n > seen && !gLargestAllocation.compare_exchange_weak(seen, n, std::memory_order_relaxed)) {}
+    while (n > seen && !gLargestAllocation.compare_exchange_weak(seen, n, std::memory_order_relaxed)) {
+    }
     if (void* p = std::malloc(n ? n : 1)) return p;
     throw std::bad_alloc();
 }
@@ -115,10 +116,12 @@ const Volume kSmall = patterned(ScalarType::Int16, {4, 3, 2});
 const std::string kSamples = sampleBytes(kSmall, false);  // 48 bytes
 
 const std::string kNrrd = "NRRD0004\ntype: short\ndimension: 3\nsizes: 4 3 2\nendian: little\nencoding: raw\n";
-const std::string kMeta = "ObjectType = Image\nNDims = 3\nDimSize = 4 3 2\nElementType = MET_SHORT\n"
-                          "ElementSpacing = 1 1 1\nElementDataFile = LOCAL\n";
-const std::string kVtk = "# vtk DataFile Version 3.0\nt\nBINARY\nDATASET STRUCTURED_POINTS\nDIMENSIONS 4 3 2\n"
-                         "SPACING 1 1 1\nORIGIN 0 0 0\nPOINT_DATA 24\nSCALARS s short 1\nLOOKUP_TABLE default\n";
+const std::string kMeta =
+    "ObjectType = Image\nNDims = 3\nDimSize = 4 3 2\nElementType = MET_SHORT\n"
+    "ElementSpacing = 1 1 1\nElementDataFile = LOCAL\n";
+const std::string kVtk =
+    "# vtk DataFile Version 3.0\nt\nBINARY\nDATASET STRUCTURED_POINTS\nDIMENSIONS 4 3 2\n"
+    "SPACING 1 1 1\nORIGIN 0 0 0\nPOINT_DATA 24\nSCALARS s short 1\nLOOKUP_TABLE default\n";
 
 }  // namespace
 
@@ -170,36 +173,64 @@ TEST_CASE("hostile NIfTI-1 files are refused", "[core][io][hostile]") {
     };
     const std::string file = niftiFile(good, kSamples);
     refuse("short.nii", file.substr(0, 100), "shorter than the 348-byte header");
-    refuseHeader("sizeof.nii", [](NiftiHeader& h) { h.sizeofHdr = 1234; }, "sizeof_hdr");
-    refuseHeader("nifti2.nii", [](NiftiHeader& h) { h.sizeofHdr = 540; }, "NIfTI-2");
-    refuseHeader("pair.nii", [](NiftiHeader& h) { h.magic = std::string("ni1\0", 4); }, ".hdr/.img");
-    refuseHeader("magic.nii", [](NiftiHeader& h) { h.magic = "abc"; }, "\"magic\"");
-    refuseHeader("2d.nii", [](NiftiHeader& h) { h.dim[0] = 2; }, "\"dim\"");
-    refuseHeader("4d.nii", [](NiftiHeader& h) { h.dim[0] = 4, h.dim[4] = 7; }, "only 3D");
-    refuseHeader("dim0.nii", [](NiftiHeader& h) { h.dim[0] = -3; }, "\"dim\"");
-    refuseHeader("zero.nii", [](NiftiHeader& h) { h.dim[2] = 0; }, "must be positive");
-    refuseHeader("negative.nii", [](NiftiHeader& h) { h.dim[1] = -4; }, "must be positive");
-    refuseHeader("absurd.nii", [](NiftiHeader& h) { h.dim[1] = h.dim[2] = h.dim[3] = 32767; }, "volume limit");
-    refuseHeader("large.nii", [](NiftiHeader& h) { h.dim[1] = h.dim[2] = 1000; }, "\"dim\"");
-    refuseHeader("datatype.nii", [](NiftiHeader& h) { h.datatype = 999; }, "unknown datatype 999");
-    refuseHeader("complex.nii", [](NiftiHeader& h) { h.datatype = 32, h.bitpix = 64; }, "complex64");
-    refuseHeader("bitpix.nii", [](NiftiHeader& h) { h.bitpix = 8; }, "\"bitpix\"");
+    refuseHeader(
+        "sizeof.nii", [](NiftiHeader& h) { h.sizeofHdr = 1234; }, "sizeof_hdr");
+    refuseHeader(
+        "nifti2.nii", [](NiftiHeader& h) { h.sizeofHdr = 540; }, "NIfTI-2");
+    refuseHeader(
+        "pair.nii", [](NiftiHeader& h) { h.magic = std::string("ni1\0", 4); }, ".hdr/.img");
+    refuseHeader(
+        "magic.nii", [](NiftiHeader& h) { h.magic = "abc"; }, "\"magic\"");
+    refuseHeader(
+        "2d.nii", [](NiftiHeader& h) { h.dim[0] = 2; }, "\"dim\"");
+    refuseHeader(
+        "4d.nii", [](NiftiHeader& h) { h.dim[0] = 4, h.dim[4] = 7; }, "only 3D");
+    refuseHeader(
+        "dim0.nii", [](NiftiHeader& h) { h.dim[0] = -3; }, "\"dim\"");
+    refuseHeader(
+        "zero.nii", [](NiftiHeader& h) { h.dim[2] = 0; }, "must be positive");
+    refuseHeader(
+        "negative.nii", [](NiftiHeader& h) { h.dim[1] = -4; }, "must be positive");
+    refuseHeader(
+        "absurd.nii", [](NiftiHeader& h) { h.dim[1] = h.dim[2] = h.dim[3] = 32767; }, "volume limit");
+    refuseHeader(
+        "large.nii", [](NiftiHeader& h) { h.dim[1] = h.dim[2] = 1000; }, "\"dim\"");
+    refuseHeader(
+        "datatype.nii", [](NiftiHeader& h) { h.datatype = 999; }, "unknown datatype 999");
+    refuseHeader(
+        "complex.nii", [](NiftiHeader& h) { h.datatype = 32, h.bitpix = 64; }, "complex64");
+    refuseHeader(
+        "bitpix.nii", [](NiftiHeader& h) { h.bitpix = 8; }, "\"bitpix\"");
     // pixdim is the spacing of a qform (with a sform, the sform's columns are).
     const auto qform = [](NiftiHeader& h) { h.sformCode = 0, h.qformCode = 1; };
-    refuseHeader("pixdim.nii", [&](NiftiHeader& h) { qform(h), h.pixdim[2] = 0; }, "\"pixdim\"");
-    refuseHeader("pixnan.nii", [&](NiftiHeader& h) { qform(h), h.pixdim[3] = std::nanf(""); }, "\"pixdim\"");
-    refuseHeader("pixneg.nii", [&](NiftiHeader& h) { qform(h), h.pixdim[1] = -1; }, "\"pixdim\"");
-    refuseHeader("srow0.nii", [](NiftiHeader& h) { h.srow[0][0] = h.srow[1][0] = h.srow[2][0] = 0; }, "\"srow\"");
-    refuseHeader("srownan.nii", [](NiftiHeader& h) { h.srow[1][1] = std::nanf(""); }, "\"srow\"");
-    refuseHeader("quatern.nii", [&](NiftiHeader& h) { qform(h), h.quatern[0] = 2; }, "\"quatern_b\"");
-    refuseHeader("voxoffset.nii", [](NiftiHeader& h) { h.voxOffset = 100; }, "\"vox_offset\"");
-    refuseHeader("voxfraction.nii", [](NiftiHeader& h) { h.voxOffset = 352.5f; }, "\"vox_offset\"");
-    refuseHeader("voxinf.nii", [](NiftiHeader& h) { h.voxOffset = INFINITY; }, "\"vox_offset\"");
-    refuseHeader("voxfar.nii", [](NiftiHeader& h) { h.voxOffset = 1e6f; }, "\"vox_offset\"", "cannot hold");
-    refuseHeader("slope.nii", [](NiftiHeader& h) { h.sclSlope = INFINITY; }, "\"scl_slope\"");
-    refuseHeader("inter.nii", [](NiftiHeader& h) { h.sclSlope = 2, h.sclInter = NAN; }, "\"scl_inter\"");
-    refuseHeader("far.nii", [](NiftiHeader& h) { h.srow[0][3] = 1e38f; }, "beyond float range");
-    refuseHeader("spread.nii", [](NiftiHeader& h) { h.srow[0][0] = -1e37f; }, "beyond float range");
+    refuseHeader(
+        "pixdim.nii", [&](NiftiHeader& h) { qform(h), h.pixdim[2] = 0; }, "\"pixdim\"");
+    refuseHeader(
+        "pixnan.nii", [&](NiftiHeader& h) { qform(h), h.pixdim[3] = std::nanf(""); }, "\"pixdim\"");
+    refuseHeader(
+        "pixneg.nii", [&](NiftiHeader& h) { qform(h), h.pixdim[1] = -1; }, "\"pixdim\"");
+    refuseHeader(
+        "srow0.nii", [](NiftiHeader& h) { h.srow[0][0] = h.srow[1][0] = h.srow[2][0] = 0; }, "\"srow\"");
+    refuseHeader(
+        "srownan.nii", [](NiftiHeader& h) { h.srow[1][1] = std::nanf(""); }, "\"srow\"");
+    refuseHeader(
+        "quatern.nii", [&](NiftiHeader& h) { qform(h), h.quatern[0] = 2; }, "\"quatern_b\"");
+    refuseHeader(
+        "voxoffset.nii", [](NiftiHeader& h) { h.voxOffset = 100; }, "\"vox_offset\"");
+    refuseHeader(
+        "voxfraction.nii", [](NiftiHeader& h) { h.voxOffset = 352.5f; }, "\"vox_offset\"");
+    refuseHeader(
+        "voxinf.nii", [](NiftiHeader& h) { h.voxOffset = INFINITY; }, "\"vox_offset\"");
+    refuseHeader(
+        "voxfar.nii", [](NiftiHeader& h) { h.voxOffset = 1e6f; }, "\"vox_offset\"", "cannot hold");
+    refuseHeader(
+        "slope.nii", [](NiftiHeader& h) { h.sclSlope = INFINITY; }, "\"scl_slope\"");
+    refuseHeader(
+        "inter.nii", [](NiftiHeader& h) { h.sclSlope = 2, h.sclInter = NAN; }, "\"scl_inter\"");
+    refuseHeader(
+        "far.nii", [](NiftiHeader& h) { h.srow[0][3] = 1e38f; }, "beyond float range");
+    refuseHeader(
+        "spread.nii", [](NiftiHeader& h) { h.srow[0][0] = -1e37f; }, "beyond float range");
     refuse("truncated.nii", file.substr(0, file.size() - 8), "has only 40");
     const std::string packed = gzipBytes(file);
     refuse("corrupt.nii.gz", corrupted(packed), "gzip data");
@@ -238,10 +269,14 @@ TEST_CASE("hostile MetaImage files are refused", "[core][io][hostile]") {
            "ElementNumberOfChannels");
     refuse("zlib.mha", replaced(kMeta, "NDims = 3\n", "NDims = 3\nCompressedData = True\n") + randomBytes(64, 5),
            "zlib data");
-    refuse("zcorrupt.mha", replaced(kMeta, "NDims = 3\n", "NDims = 3\nCompressedData = True\n") +
-                               corrupted(zlibBytes(randomBytes(48, 6))), "zlib data");
-    refuse("zsize.mha", replaced(kMeta, "NDims = 3\n", "NDims = 3\nCompressedData = True\nCompressedDataSize = 7\n") +
-                            zlibBytes(kSamples), "CompressedDataSize");
+    refuse(
+        "zcorrupt.mha",
+        replaced(kMeta, "NDims = 3\n", "NDims = 3\nCompressedData = True\n") + corrupted(zlibBytes(randomBytes(48, 6))),
+        "zlib data");
+    refuse("zsize.mha",
+           replaced(kMeta, "NDims = 3\n", "NDims = 3\nCompressedData = True\nCompressedDataSize = 7\n") +
+               zlibBytes(kSamples),
+           "CompressedDataSize");
     refuse("ascii.mha", replaced(kMeta, "NDims = 3\n", "NDims = 3\nBinaryData = False\n") + "1 2 3", "ASCII");
     refuse("spacing.mha", replaced(kMeta, "ElementSpacing = 1 1 1", "ElementSpacing = 1 0 1") + kSamples,
            "\"ElementSpacing\"");
@@ -272,10 +307,13 @@ TEST_CASE("hostile VTK legacy files are refused", "[core][io][hostile]") {
     refuse("poly.vtk", replaced(kVtk, "STRUCTURED_POINTS", "POLYDATA") + big, "STRUCTURED_POINTS");
     refuse("zero.vtk", replaced(kVtk, "DIMENSIONS 4 3 2", "DIMENSIONS 4 0 2") + big, "\"DIMENSIONS\"");
     refuse("nodims.vtk", replaced(kVtk, "DIMENSIONS 4 3 2\n", "") + big, "DIMENSIONS");
-    refuse("absurd.vtk", replaced(replaced(kVtk, "4 3 2", "100000 100000 100000"), "POINT_DATA 24",
-                                  "POINT_DATA 1000000000000000") + big, "volume limit");
-    refuse("oversized.vtk", replaced(replaced(kVtk, "4 3 2", "1000 1000 100"), "POINT_DATA 24",
-                                     "POINT_DATA 100000000") + big, "has only 48");
+    refuse(
+        "absurd.vtk",
+        replaced(replaced(kVtk, "4 3 2", "100000 100000 100000"), "POINT_DATA 24", "POINT_DATA 1000000000000000") + big,
+        "volume limit");
+    refuse("oversized.vtk",
+           replaced(replaced(kVtk, "4 3 2", "1000 1000 100"), "POINT_DATA 24", "POINT_DATA 100000000") + big,
+           "has only 48");
     refuse("count.vtk", replaced(kVtk, "POINT_DATA 24", "POINT_DATA 23") + big, "\"POINT_DATA\"");
     refuse("bit.vtk", replaced(kVtk, "short 1", "bit 1") + big, "\"bit\"");
     refuse("long.vtk", replaced(kVtk, "short 1", "long") + big, "\"long\"");
@@ -292,8 +330,9 @@ TEST_CASE("hostile VTK legacy files are refused", "[core][io][hostile]") {
     for (int i = 0; i < 23; ++i) ones += " 1";
     refuse("ascii_word.vtk", ascii + "1 2 abc" + ones, "\"abc\"");
     refuse("ascii_range.vtk", replaced(ascii, "short", "unsigned_char") + "300" + ones, "\"300\"");
-    refuse("ascii_big.vtk", replaced(replaced(ascii, "4 3 2", "1000 1000 100"), "POINT_DATA 24",
-                                     "POINT_DATA 100000000") + "1 2 3", "ASCII numbers");
+    refuse("ascii_big.vtk",
+           replaced(replaced(ascii, "4 3 2", "1000 1000 100"), "POINT_DATA 24", "POINT_DATA 100000000") + "1 2 3",
+           "ASCII numbers");
     refuse("token.vtk", replaced(kVtk, "DATASET", std::string(1000, 'D')), "longer than");
     refuse("random.vtk", randomBytes(4096, 8), "not a VTK legacy file");
     refuse("empty.vtk", "", "not a VTK legacy file");
@@ -358,7 +397,8 @@ TEST_CASE("hostile DICOM files are refused", "[core][io][hostile][dicom]") {
         expectRefused(dir.file("noise.dcm"), "");
     }
     // Cut anywhere: in the header, in an element, in the pixel data.
-    for (std::size_t keep : {std::size_t(100), std::size_t(200), std::size_t(300), good.size() - 200, good.size() - 1}) {
+    for (std::size_t keep :
+         {std::size_t(100), std::size_t(200), std::size_t(300), good.size() - 200, good.size() - 1}) {
         CAPTURE(keep);
         writeFile(dir.file("truncated.dcm"), good.substr(0, keep));
         expectRefused(dir.file("truncated.dcm"), "");
@@ -381,7 +421,8 @@ TEST_CASE("hostile DICOM files are refused", "[core][io][hostile][dicom]") {
     const auto item = [](std::uint16_t element, std::uint32_t length) {
         return encode(std::uint16_t(0xfffe), false) + encode(element, false) + encode(length, false);
     };
-    delimiter.raw(0x7fe0, 0x0010, "OB", item(0xe000, 0) + item(0xe000, 4) + "abcd" + item(0xe0dd, 0x89000000u), 0xffffffffu);
+    delimiter.raw(0x7fe0, 0x0010, "OB", item(0xe000, 0) + item(0xe000, 4) + "abcd" + item(0xe0dd, 0x89000000u),
+                  0xffffffffu);
     writeFile(dir.file("delimiter.dcm"), delimiter.bytes());
     expectRefused(dir.file("delimiter.dcm"), "delimitation item declares 2298478592 bytes");
     // RLE frames whose headers lie about their segments (GDCM's decoder seeks to the offsets unchecked).
@@ -474,7 +515,8 @@ TEST_CASE("an all-NaN volume gives empty meshes; its range is empty", "[core][io
 }
 
 TEST_CASE("scattered NaN and infinite samples give only finite vertices", "[core][io][hostile][nan]") {
-    for (const Volume& v : {sphereWithHoles<float>(ScalarType::Float32), sphereWithHoles<double>(ScalarType::Float64)}) {
+    for (const Volume& v :
+         {sphereWithHoles<float>(ScalarType::Float32), sphereWithHoles<double>(ScalarType::Float64)}) {
         CAPTURE(scalarTypeName(v.type()));
         const double iso = fieldDefaultIso("sphere");
         for (TableKind table : {TableKind::Consistent, TableKind::Classic}) {

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "io_test_files.h"
 #include "isotrack/errors.h"
 #include "isotrack/fields.h"
 #include "isotrack/io.h"
-#include "io_test_files.h"
 
 using namespace isotrack;
 
@@ -42,8 +42,7 @@ std::string withField(std::string header, const std::string& from, const std::st
 
 Mesh sampleMesh() {
     Mesh m;
-    for (int i = 0; i < 5; ++i)
-        m.vertices.push_back({{float(i), float(i) * 0.5f, -float(i)}, {0.0f, 0.6f, 0.8f}});
+    for (int i = 0; i < 5; ++i) m.vertices.push_back({{float(i), float(i) * 0.5f, -float(i)}, {0.0f, 0.6f, 0.8f}});
     m.indices = {0, 1, 2, 2, 3, 4, 4, 1, 0};
     return m;
 }
@@ -141,7 +140,8 @@ TEST_CASE("NRRD detached header", "[core][io]") {
 
     writeFile(dir.file("missing.nhdr"),
               "NRRD0004\ntype: float\ndimension: 3\nsizes: 5 4 3\nendian: big\nencoding: raw\ndata file: nope.raw\n");
-    CHECK_THROWS_WITH(loadVolume(dir.file("missing.nhdr")), Catch::Contains("nope.raw") && Catch::Contains("cannot open"));
+    CHECK_THROWS_WITH(loadVolume(dir.file("missing.nhdr")),
+                      Catch::Contains("nope.raw") && Catch::Contains("cannot open"));
 }
 
 TEST_CASE("NRRD loader refuses malformed files", "[core][io]") {
@@ -168,8 +168,7 @@ TEST_CASE("NRRD loader refuses malformed files", "[core][io]") {
     CHECK_THROWS_AS(load(withField(kHeader16, "sizes: 2 2 2", "sizes: 2 2") + data), FormatError);
     CHECK_THROWS_AS(load(withField(kHeader16, "sizes: 2 2 2", "sizes: 2 2 2 2") + data), FormatError);
     CHECK_THROWS_AS(load(withField(kHeader16, "sizes: 2 2 2", "sizes: 2 2 x") + data), FormatError);
-    CHECK_THROWS_AS(load(withField(kHeader16, "sizes: 2 2 2", "sizes: 2 2 99999999999999999999") + data),
-                    FormatError);
+    CHECK_THROWS_AS(load(withField(kHeader16, "sizes: 2 2 2", "sizes: 2 2 99999999999999999999") + data), FormatError);
     CHECK_THROWS_AS(load(withField(kHeader16, "sizes: 2 2 2", "sizes: 2147483647 2147483647 2147483647") + data),
                     FormatError);
     // Refused on the size check, before anything is allocated (the hostile-file
@@ -194,11 +193,10 @@ TEST_CASE("NRRD loader refuses malformed files", "[core][io]") {
     CHECK_THROWS_AS(load(withField(kHeader16, "dimension: 3", "dimension: 3\ndimension: 3") + data), FormatError);
     CHECK_THROWS_AS(load(withField(kHeader16, "dimension: 3", "this line has no separator") + data), FormatError);
     CHECK_THROWS_AS(load(withField(kHeader16, "dimension: 3", "dimension: 3\nspacings: 1 0 1") + data), FormatError);
-    CHECK_THROWS_AS(load(withField(kHeader16, "dimension: 3", "dimension: 3\nspacings: 1 nan 1") + data),
-                    FormatError);
-    CHECK_THROWS_AS(load(withField(kHeader16, "dimension: 3", "dimension: 3\nspace directions: (1,0,0) none (0,0,1)") +
-                         data),
-                    FormatError);
+    CHECK_THROWS_AS(load(withField(kHeader16, "dimension: 3", "dimension: 3\nspacings: 1 nan 1") + data), FormatError);
+    CHECK_THROWS_AS(
+        load(withField(kHeader16, "dimension: 3", "dimension: 3\nspace directions: (1,0,0) none (0,0,1)") + data),
+        FormatError);
     CHECK_THROWS_AS(load(withField(kHeader16, "dimension: 3", "dimension: 3\nspace origin: (1,2)") + data),
                     FormatError);
     // Header never ends: no blank line and no data file.
@@ -216,8 +214,8 @@ TEST_CASE("NRRD loader refuses malformed files", "[core][io]") {
     }
 
     writeFile(dir.file("vol.raw"), data);
-    CHECK_THROWS_WITH(loadVolume(dir.file("vol.raw")), Catch::Contains("vol.raw") && Catch::Contains(".nrrd") &&
-                                                           Catch::Contains(".nhdr"));
+    CHECK_THROWS_WITH(loadVolume(dir.file("vol.raw")),
+                      Catch::Contains("vol.raw") && Catch::Contains(".nrrd") && Catch::Contains(".nhdr"));
 }
 
 TEST_CASE("PLY write/read round trip", "[core][io]") {

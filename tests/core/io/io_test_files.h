@@ -1,9 +1,9 @@
 #pragma once
 // Files written by the I/O tests themselves: a temporary directory, compressed
 // bytes, samples in either byte order, and NIfTI-1 headers built field by field.
-#include <catch2/catch.hpp>
 #include <unistd.h>
 #include <zlib.h>
+#include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -25,8 +25,8 @@ public:
     TempDir() {
         static std::atomic<int> counter{0};
         const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
-        path_ = std::filesystem::temp_directory_path() /
-                ("isotrack-io-" + std::to_string(::getpid()) + "-" + std::to_string(stamp) + "-" + std::to_string(counter++));
+        path_ = std::filesystem::temp_directory_path() / ("isotrack-io-" + std::to_string(::getpid()) + "-" +
+                                                          std::to_string(stamp) + "-" + std::to_string(counter++));
         std::filesystem::create_directories(path_);
     }
     ~TempDir() {
@@ -95,8 +95,8 @@ std::string encode(T value, bool bigEndian) {
 }
 
 inline const std::vector<ScalarType>& allScalarTypes() {
-    static const std::vector<ScalarType> types = {ScalarType::UInt8,  ScalarType::Int8,   ScalarType::UInt16,
-                                                  ScalarType::Int16,  ScalarType::UInt32, ScalarType::Int32,
+    static const std::vector<ScalarType> types = {ScalarType::UInt8,   ScalarType::Int8,   ScalarType::UInt16,
+                                                  ScalarType::Int16,   ScalarType::UInt32, ScalarType::Int32,
                                                   ScalarType::Float32, ScalarType::Float64};
     return types;
 }

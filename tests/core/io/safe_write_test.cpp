@@ -106,5 +106,6 @@ TEST_CASE("safe write keeps an existing file's permissions", "[core][io][safe_wr
                                            std::filesystem::perms::group_read);
     writeFileSafely(path, "y");
     CHECK(std::filesystem::status(path).permissions() ==
-          (std::filesystem::perms::owner_read | std::filesystem::perms::owner_write | std::filesystem::perms::group_read));
+          (std::filesystem::perms::owner_read | std::filesystem::perms::owner_write |
+           std::filesystem::perms::group_read));
 }

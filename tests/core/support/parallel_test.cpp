@@ -34,7 +34,8 @@ TEST_CASE("parallelFor runs every index once, step after step", "[core][parallel
     }
 }
 
-TEST_CASE("parallelForWithState gives each thread taking part its own state and increasing indices", "[core][parallel]") {
+TEST_CASE("parallelForWithState gives each thread taking part its own state and increasing indices",
+          "[core][parallel]") {
     struct State {
         int last = -1;
     };

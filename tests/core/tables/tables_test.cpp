@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <fstream>
-#include <sstream>
-#include <string>
 #include <map>
 #include <set>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "isotrack/continuation.h"
@@ -101,7 +101,8 @@ TEST_CASE("the classic table has Lorensen and Cline's invariants", "[core][table
         std::uint8_t mask = lorensenClineBaseCases()[origin.baseCase].mask;
         if (origin.complemented) mask = std::uint8_t(~mask);
         CHECK(cube::rotateConfig(mask, cube::rotations()[origin.rotation]) == c);
-        CHECK(origin.complemented == (popcount(unsigned(c)) > 4 || (popcount(unsigned(c)) == 4 && origin.complemented)));
+        CHECK(origin.complemented ==
+              (popcount(unsigned(c)) > 4 || (popcount(unsigned(c)) == 4 && origin.complemented)));
     }
     // The 15 base cases are distinct classes under rotation and complement.
     std::set<std::uint8_t> bases;
@@ -293,7 +294,8 @@ TEST_CASE("a cell piece has at most 5 triangles, so the 4 pieces around a vertex
     for (const TableKind kind : {TableKind::Consistent, TableKind::Classic}) {
         int most = 0;
         for (const CaseContinuation& cased : continuationTable(kind)) {
-            for (int p = 0; p < cased.pieceCount; ++p) most = std::max<int>(most, cased.pieces[std::size_t(p)].triangleCount);
+            for (int p = 0; p < cased.pieceCount; ++p)
+                most = std::max<int>(most, cased.pieces[std::size_t(p)].triangleCount);
         }
         CHECK(most <= 5);
         CHECK(4 * most < 32);

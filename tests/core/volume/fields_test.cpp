@@ -200,7 +200,8 @@ TEST_CASE("blobs field: 125 separate blobs of distinct sizes", "[core][fields]")
     // Each blob's surface is the sphere blobsFieldBlobs describes.
     const std::vector<Blob> blobs = blobsFieldBlobs(n);
     for (const Blob& b : blobs) {
-        const int x = int(std::lround(b.centre[0])), y = int(std::lround(b.centre[1])), z = int(std::lround(b.centre[2]));
+        const int x = int(std::lround(b.centre[0])), y = int(std::lround(b.centre[1])),
+                  z = int(std::lround(b.centre[2]));
         const double d = dist({double(x), double(y), double(z)}, b.centre);
         CHECK((v.value(x, y, z) > iso) == (d < b.radius));
         const int outside = int(std::ceil(b.centre[0] + b.radius + 0.01));

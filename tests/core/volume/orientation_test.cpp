@@ -96,7 +96,8 @@ void requireOutward(const Mesh& mesh, const Vec3d& centre) {
         const Vertex& c = mesh.vertices[mesh.indices[t + 2]];
         const Vec3d n = cross(sub(b.position, a.position), sub(c.position, a.position));
         if (dot(n, n) < 1e-12) continue;
-        const Vec3d sum{double(a.normal[0]) + b.normal[0] + c.normal[0], double(a.normal[1]) + b.normal[1] + c.normal[1],
+        const Vec3d sum{double(a.normal[0]) + b.normal[0] + c.normal[0],
+                        double(a.normal[1]) + b.normal[1] + c.normal[1],
                         double(a.normal[2]) + b.normal[2] + c.normal[2]};
         if (dot(n, sum) <= 0) ++against;
     }
@@ -115,7 +116,8 @@ Mesh inFrame(const Volume& v, WorldFrame frame) {
 TEST_CASE("a NIfTI sform, flipped or oblique: exported vertices are the sform applied to voxel positions",
           "[core][orientation]") {
     TempDir dir;
-    for (const auto& [name, sform] : {std::pair<std::string, Affine>{"flipped.nii", flippedSform()}, {"oblique.nii", obliqueSform()}}) {
+    for (const auto& [name, sform] :
+         {std::pair<std::string, Affine>{"flipped.nii", flippedSform()}, {"oblique.nii", obliqueSform()}}) {
         INFO(name);
         const Volume v = loadWithSform(dir, sform, name);
         const Mesh voxel = inFrame(v, WorldFrame::Voxel);
@@ -127,7 +129,8 @@ TEST_CASE("a NIfTI sform, flipped or oblique: exported vertices are the sform ap
         for (std::size_t i = 0; i < ras.vertices.size(); ++i) {
             const float* q = voxel.vertices[i].position;
             const Vec3d expected = apply(sform, {q[0], q[1], q[2]});
-            for (std::size_t a = 0; a < 3; ++a) worst = std::max(worst, std::fabs(ras.vertices[i].position[a] - expected[a]));
+            for (std::size_t a = 0; a < 3; ++a)
+                worst = std::max(worst, std::fabs(ras.vertices[i].position[a] - expected[a]));
         }
         CHECK(worst < 1e-4);
         // Voxel positions are indices: the ball's own, whatever the sform.
@@ -176,12 +179,13 @@ TEST_CASE("a seed in a frame comes back to the grid point it names", "[core][ori
     const Volume v = loadWithSform(dir, obliqueSform(), "o.nii");
     for (WorldFrame frame : {WorldFrame::Lps, WorldFrame::Ras, WorldFrame::Voxel}) {
         const FrameTransform t = gridToFrame(v, frame);
-        const Vec3d grid{v.origin()[0] + 3.5 * v.spacing()[0], v.origin()[1] + 2 * v.spacing()[1], v.origin()[2] + 9 * v.spacing()[2]};
+        const Vec3d grid{v.origin()[0] + 3.5 * v.spacing()[0], v.origin()[1] + 2 * v.spacing()[1],
+                         v.origin()[2] + 9 * v.spacing()[2]};
         const Vec3d back = t.toGrid(t.apply(grid));
         for (std::size_t a = 0; a < 3; ++a) CHECK(back[a] == Approx(grid[a]).margin(1e-9));
     }
-    const Vec3d index = gridToFrame(v, WorldFrame::Voxel).apply(
-        {v.origin()[0] + 3.5 * v.spacing()[0], v.origin()[1], v.origin()[2]});
+    const Vec3d index =
+        gridToFrame(v, WorldFrame::Voxel).apply({v.origin()[0] + 3.5 * v.spacing()[0], v.origin()[1], v.origin()[2]});
     CHECK(index[0] == Approx(3.5));
     // LPS from the loader's transform equals the sform, flipped.
     const Vec3d lps = indexToWorld(v, {3, 4, 5});
@@ -228,8 +232,8 @@ TEST_CASE("NIfTI: sform first, then qform (quaternion and qfac), then pixdim", "
     h.sformCode = 1;
     h.srow[0][1] = 0.5f;
     writeFile(dir.file("shear.nii"), niftiFile(h, samples));
-    CHECK_THROWS_WITH(loadNifti(dir.file("shear.nii")), Catch::Contains("shear.nii") && Catch::Contains("srow") &&
-                                                            Catch::Contains("orthogonal"));
+    CHECK_THROWS_WITH(loadNifti(dir.file("shear.nii")),
+                      Catch::Contains("shear.nii") && Catch::Contains("srow") && Catch::Contains("orthogonal"));
 }
 
 TEST_CASE("NRRD space and space directions; writeNrrd keeps a turned volume", "[core][orientation][nrrd]") {
@@ -250,17 +254,23 @@ TEST_CASE("NRRD space and space directions; writeNrrd keeps a turned volume", "[
     CHECK(back.spacing() == v.spacing());
     CHECK(back.origin() == v.origin());
     // Not orthogonal: refused, naming the field.
-    writeFile(dir.file("skew.nrrd"), "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 2 2 2\n"
-                                     "space directions: (1,0,0) (1,1,0) (0,0,1)\nencoding: raw\n\n" + samples);
-    CHECK_THROWS_WITH(loadNrrd(dir.file("skew.nrrd")), Catch::Contains("space directions") && Catch::Contains("orthogonal"));
+    writeFile(dir.file("skew.nrrd"),
+              "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 2 2 2\n"
+              "space directions: (1,0,0) (1,1,0) (0,0,1)\nencoding: raw\n\n" +
+                  samples);
+    CHECK_THROWS_WITH(loadNrrd(dir.file("skew.nrrd")),
+                      Catch::Contains("space directions") && Catch::Contains("orthogonal"));
 }
 
 TEST_CASE("MetaImage TransformMatrix, else AnatomicalOrientation", "[core][orientation][metaimage]") {
     TempDir dir;
     const std::string samples(8, '\1');
-    const std::string base = "ObjectType = Image\nNDims = 3\nDimSize = 2 2 2\nElementType = MET_UCHAR\nOffset = 1 2 3\n";
-    writeFile(dir.file("tm.mha"), base + "TransformMatrix = 0 1 0 -1 0 0 0 0 1\nAnatomicalOrientation = RAI\n"
-                                         "ElementDataFile = LOCAL\n" + samples);
+    const std::string base =
+        "ObjectType = Image\nNDims = 3\nDimSize = 2 2 2\nElementType = MET_UCHAR\nOffset = 1 2 3\n";
+    writeFile(dir.file("tm.mha"), base +
+                                      "TransformMatrix = 0 1 0 -1 0 0 0 0 1\nAnatomicalOrientation = RAI\n"
+                                      "ElementDataFile = LOCAL\n" +
+                                      samples);
     const Volume tm = loadMetaImage(dir.file("tm.mha"));
     CHECK(tm.direction() == Mat3d{{{0, 1, 0}, {-1, 0, 0}, {0, 0, 1}}});
     CHECK(tm.origin() == Vec3d{1, 2, 3});
