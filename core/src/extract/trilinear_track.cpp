@@ -22,7 +22,6 @@
 #include <memory>
 #include <numeric>
 #include <stdexcept>
-#include <unordered_map>
 #include <vector>
 
 #include <cmath>
@@ -44,6 +43,7 @@ constexpr int kCorners = kInteriorVertex + kMaxInteriorVertices;
 // enters the cell across, in the order the walk queues them.
 struct SubcasePieces {
     std::array<std::int8_t, kCorners> piece{};  // per corner its piece, -1 if unused
+    std::uint8_t allPieces = 0;                 // a bit per piece
     std::array<std::uint8_t, 9> firstExit{};    // piece p's exits are exits[firstExit[p] .. firstExit[p + 1])
     std::array<std::uint8_t, 24> exits{};       // face << 4 | entry edge in the cell across
 };
@@ -114,6 +114,7 @@ const std::vector<SubcasePieces>& subcasePieces() {
             out.piece = piecesOf(cases[i]);
             const int count = 1 + *std::max_element(out.piece.begin(), out.piece.end());
             if (count > 8) throw std::logic_error("trilinear table: a subcase of more than eight pieces");
+            out.allPieces = static_cast<std::uint8_t>((1u << count) - 1);
             int exitCount = 0;
             for (int p = 0; p < 8; ++p) {
                 out.firstExit[std::size_t(p)] = static_cast<std::uint8_t>(exitCount);
@@ -168,6 +169,13 @@ private:
     // Emits the piece of cell c holding cube edge `entry` unless it was emitted
     // before, and queues the cells it continues into; whether it was emitted.
     bool visit(const std::array<int, 3>& c, int entry) {
+        SparseBlocks::Block* block = blocks_.at(c[0], c[1], c[2]);
+        const auto local = std::size_t(SparseBlocks::local(c[0], c[1], c[2]));
+        std::uint8_t& visited = block->visited[local];
+        // The block's config byte keeps a bit per piece of the cell once it is
+        // classified: a cell whose pieces were all emitted is not classified again.
+        std::uint8_t& pieceBits = block->config[local];
+        if (pieceBits != 0 && visited == pieceBits) return false;
         const std::size_t i = grid_.index(c[0], c[1], c[2]);
         const std::uint8_t config = grid_.cellConfig(i);
         double values[8];
@@ -177,11 +185,9 @@ private:
         }
         const TrilinearCase& subcase = classifyTrilinear(values, config);
         const SubcasePieces& pieces = pieces_[std::size_t(&subcase - cases_)];
+        pieceBits = pieces.allPieces;
         const int mine = pieces.piece[std::size_t(entry)];
-        if (mine < 0) return false;
-        std::uint8_t& visited =
-            blocks_.at(c[0], c[1], c[2])->visited[std::size_t(SparseBlocks::local(c[0], c[1], c[2]))];
-        if (visited & (1u << mine)) return false;
+        if (mine < 0 || (visited & (1u << mine)) != 0) return false;
         visited = static_cast<std::uint8_t>(visited | 1u << mine);
         std::array<std::uint32_t, kCorners> ids{};
         std::array<bool, kCorners> made{};
@@ -313,13 +319,13 @@ std::vector<Surface> allTrilinear(const Volume& volume, double iso, int threads)
         parent[root(mesh.indices[i])] = root(mesh.indices[i + 1]);
         parent[root(mesh.indices[i + 1])] = root(mesh.indices[i + 2]);
     }
-    std::unordered_map<std::uint32_t, std::size_t> surfaceOfRoot;
+    std::vector<std::size_t> surfaceOfRoot(mesh.vertices.size(), ~std::size_t(0));  // per root vertex
     std::vector<Surface> surfaces;
     std::vector<std::uint32_t> local(mesh.vertices.size(), ~0u);
     for (std::size_t i = 0; i < mesh.indices.size(); i += 3) {
-        const auto [it, fresh] = surfaceOfRoot.try_emplace(root(mesh.indices[i]), surfaces.size());
-        if (fresh) surfaces.emplace_back();
-        Mesh& part = surfaces[it->second].mesh;
+        std::size_t& surface = surfaceOfRoot[root(mesh.indices[i])];
+        if (surface == ~std::size_t(0)) surface = surfaces.size(), surfaces.emplace_back();
+        Mesh& part = surfaces[surface].mesh;
         for (std::size_t k = 0; k < 3; ++k) {
             const std::uint32_t v = mesh.indices[i + k];
             if (local[v] == ~0u) {
