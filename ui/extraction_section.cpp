@@ -56,8 +56,7 @@ void extractionSection(const PanelState& state, std::vector<Action>& actions) {
     ImGui::SameLine();
     if (ImGui::RadioButton("trilinear", &table, static_cast<int>(Table::Trilinear)))
         actions.push_back(SetTable{Table::Trilinear});
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("the trilinear interpolant's topology (MC33); surfaces are not grown live");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the trilinear interpolant's topology (MC33)");
 
     int method = static_cast<int>(extraction.method);
     if (ImGui::RadioButton("exhaustive", &method, static_cast<int>(Method::Exhaustive))) {

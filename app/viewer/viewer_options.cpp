@@ -38,7 +38,7 @@ ViewerCommandLine addViewerOptions(CLI::App& app) {
     cli::addRawOptions(*group, *commandLine.raw, volume);
     group->add_option("--iso", o.iso,
                       "Isovalue (default: the field's own, or the valley above a file's tallest histogram peak)");
-    group->add_option("--table", o.table, "Triangle table: consistent (default), classic or trilinear (no live growth)")
+    group->add_option("--table", o.table, "Triangle table: consistent (default), classic or trilinear")
         ->check(CLI::IsMember({"consistent", "classic", "trilinear"}));
     group
         ->add_option("--method", o.method,

@@ -34,17 +34,18 @@ struct CaseContinuation {
     std::array<std::array<std::int8_t, 3>, kMaxCaseTriangles> triangles{};
 };
 
-// Throws InputError (kTrilinearNotLive) for TableKind::Trilinear: its subcases'
-// pieces are found per cell as it is tracked (trackSurface, extractAllSurfaces),
-// not looked up, so the live and labelled walks built on this table refuse it.
+// Throws InputError (kTrilinearNoContinuationTable) for TableKind::Trilinear:
+// its subcases' pieces are found per cell as it is tracked (trackSurface,
+// SurfaceTracker, extractAllSurfaces: trilinear_track.cpp), not looked up, so
+// the walks built on this table refuse it.
 const std::array<CaseContinuation, 256>& continuationTable(TableKind kind);
 
 // Generates the tables extractions with `kind` use (the continuation table, or
 // the trilinear subcases), so that timing them leaves the generation out.
 void prepareTables(TableKind kind);
 
-constexpr const char* kTrilinearNotLive =
-    "the trilinear table does not grow surfaces live; track it in one go (isotrack extract --method track) or use "
-    "the consistent or classic table";
+constexpr const char* kTrilinearNoContinuationTable =
+    "the trilinear table has no continuation table: its pieces are found cell by cell (trackSurface, "
+    "SurfaceTracker, extractAllSurfaces); use the consistent or classic table here";
 
 }  // namespace isotrack

@@ -64,7 +64,7 @@ PieceUnions pieceUnionsFor(TableKind kind) {
 }  // namespace
 
 const PieceUnions& pieceUnions(TableKind kind) {
-    if (kind == TableKind::Trilinear) throw InputError(kTrilinearNotLive);
+    if (kind == TableKind::Trilinear) throw InputError(kTrilinearNoContinuationTable);
     if (kind == TableKind::Consistent) {
         static const PieceUnions consistent = pieceUnionsFor(kind);
         return consistent;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -12,7 +13,6 @@
 #include "isotrack/mesh.h"
 #include "isotrack/surface.h"
 #include "isotrack/volume.h"
-#include "support/flat_hash.h"
 
 namespace isotrack::detail {
 
@@ -262,17 +262,31 @@ struct SurfaceMeasure {
 };
 
 // Every directed side appears once and so does its reverse: no holes, no
-// non-manifold edges, consistent winding.
+// non-manifold edges, consistent winding. The sides are grouped by their first
+// vertex (a counting sort) and each is looked for among its reverse's group, a
+// handful of neighbours, rather than hashed: a large mesh's sides would fill a
+// table far bigger than the caches.
 inline bool meshIsClosed(const Mesh& mesh) {
     if (mesh.indices.empty()) return false;
-    FlatHashMap sides(mesh.indices.size());
-    for (std::size_t i = 0; i < mesh.indices.size(); ++i) {
-        const std::size_t next = i % 3 == 2 ? i - 2 : i + 1;
-        if (!sides.insert(std::uint64_t(mesh.indices[i]) << 32 | mesh.indices[next])) return false;
-    }
-    for (std::size_t i = 0; i < mesh.indices.size(); ++i) {
-        const std::size_t next = i % 3 == 2 ? i - 2 : i + 1;
-        if (!sides.find(std::uint64_t(mesh.indices[next]) << 32 | mesh.indices[i])) return false;
+    const std::uint32_t* indices = mesh.indices.data();
+    const std::size_t sideCount = mesh.indices.size(), vertexCount = mesh.vertices.size();
+    auto nextOf = [](std::size_t i) { return i % 3 == 2 ? i - 2 : i + 1; };
+    std::vector<std::size_t> first(vertexCount + 1, 0);  // vertex v's sides: to[first[v] .. first[v + 1])
+    for (std::size_t i = 0; i < sideCount; ++i) ++first[std::size_t(indices[i]) + 1];
+    for (std::size_t v = 0; v < vertexCount; ++v) first[v + 1] += first[v];
+    std::vector<std::size_t> end(first.begin(), first.end() - 1);
+    std::vector<std::uint32_t> to(sideCount);
+    for (std::size_t i = 0; i < sideCount; ++i) to[end[indices[i]]++] = indices[nextOf(i)];
+    for (std::size_t v = 0; v < vertexCount; ++v) {
+        for (std::size_t a = first[v]; a < first[v + 1]; ++a) {
+            const std::uint32_t w = to[a];
+            if (std::find(to.begin() + std::ptrdiff_t(a + 1), to.begin() + std::ptrdiff_t(first[v + 1]), w) !=
+                to.begin() + std::ptrdiff_t(first[v + 1]))
+                return false;  // the side v -> w twice
+            const auto reverse = to.begin() + std::ptrdiff_t(first[w]),
+                       reverseEnd = to.begin() + std::ptrdiff_t(first[w + 1]);
+            if (std::find(reverse, reverseEnd, std::uint32_t(v)) == reverseEnd) return false;  // no side w -> v
+        }
     }
     return true;
 }

@@ -1,10 +1,13 @@
 // SurfaceTracker: one surface grown a budget at a time, breadth-first from its
-// seed, for a viewer to show it growing.
+// seed, for a viewer to show it growing. With the trilinear table the walk is
+// trilinear_track.cpp's, a budget of (cell, piece) pairs at a time, and the
+// figures of the surface so far are measured as the steps add to it.
 #include <limits>
 #include <memory>
 
 #include "isotrack/tracking.h"
 #include "track_walker.h"
+#include "trilinear_march.h"
 
 namespace isotrack {
 
@@ -22,18 +25,42 @@ struct SurfaceTracker::Impl {
     const Volume* volume;
     double iso;
     TableKind table;
-    std::unique_ptr<TrackWorker> worker;
+    std::unique_ptr<TrackWorker> worker;  // null with the trilinear table
     TrackState state;
+    std::unique_ptr<detail::TrilinearWalk> trilinear;  // once started, with the trilinear table
+    // The trilinear walk's figures so far: its vertices and triangles before these are measured.
+    detail::SurfaceMeasure measure;
+    std::size_t measuredVertices = 0, measuredIndices = 0;
+
+    const Mesh& mesh() const { return trilinear ? trilinear->mesh() : state.walker.mesh; }
+    void measureNew();
 };
 
+void SurfaceTracker::Impl::measureNew() {
+    const Mesh& m = trilinear->mesh();
+    for (; measuredVertices < m.vertices.size(); ++measuredVertices)
+        measure.addVertex(m.vertices[measuredVertices], m.vertexEdges[measuredVertices], volume->dims());
+    for (; measuredIndices < m.indices.size(); measuredIndices += 3) {
+        const std::uint32_t* t = m.indices.data() + measuredIndices;
+        measure.triangles.add(m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]);
+    }
+}
+
 SurfaceTracker::SurfaceTracker(const Volume& volume, double iso, TableKind table)
-    : impl_(std::make_unique<Impl>(Impl{&volume, iso, table, makeWorker(volume, iso, table),
-                                        TrackState(volume.dims(), WalkOrder::BreadthFirst)})) {}
+    : impl_(std::make_unique<Impl>(
+          Impl{&volume, iso, table, table == TableKind::Trilinear ? nullptr : makeWorker(volume, iso, table),
+               TrackState(volume.dims(), WalkOrder::BreadthFirst), nullptr, detail::SurfaceMeasure{}, 0, 0})) {}
 SurfaceTracker::~SurfaceTracker() = default;
 SurfaceTracker::SurfaceTracker(SurfaceTracker&&) noexcept = default;
 SurfaceTracker& SurfaceTracker::operator=(SurfaceTracker&&) noexcept = default;
 
 void SurfaceTracker::start(const GridEdge& seed) {
+    if (impl_->table == TableKind::Trilinear) {
+        impl_->trilinear = detail::startTrilinear(*impl_->volume, impl_->iso, seed);
+        impl_->measure = detail::SurfaceMeasure{};
+        impl_->measuredVertices = impl_->measuredIndices = 0;
+        return;
+    }
     checkSeed(*impl_->volume, impl_->iso, *impl_->worker, seed);
     impl_->state = TrackState(impl_->volume->dims(), WalkOrder::BreadthFirst);
     queueSeed(*impl_->volume, seed, *impl_->worker, impl_->state.blocks, impl_->state.walker);
@@ -41,9 +68,12 @@ void SurfaceTracker::start(const GridEdge& seed) {
 
 SurfaceTracker::Step SurfaceTracker::step(std::size_t cellBudget) {
     TrackState& s = impl_->state;
-    const Mesh& mesh = s.walker.mesh;
+    const Mesh& mesh = impl_->mesh();
     Step step{mesh.vertices.size(), 0, mesh.indices.size(), 0, 0};
-    step.cellsVisited = impl_->worker->advance(s.blocks, s.denseVisited, s.walker, cellBudget);
+    if (impl_->trilinear)
+        step.cellsVisited = impl_->trilinear->advance(cellBudget);
+    else if (impl_->worker)
+        step.cellsVisited = impl_->worker->advance(s.blocks, s.denseVisited, s.walker, cellBudget);
     step.vertexCount = mesh.vertices.size() - step.firstVertex;
     step.indexCount = mesh.indices.size() - step.firstIndex;
     return step;
@@ -51,7 +81,7 @@ SurfaceTracker::Step SurfaceTracker::step(std::size_t cellBudget) {
 
 SurfaceTracker::Step SurfaceTracker::stepFor(std::chrono::nanoseconds budget) {
     const auto deadline = Clock::now() + budget;
-    const Mesh& mesh = impl_->state.walker.mesh;
+    const Mesh& mesh = impl_->mesh();
     Step total{mesh.vertices.size(), 0, mesh.indices.size(), 0, 0};
     do {
         total.cellsVisited += step(512).cellsVisited;
@@ -61,18 +91,32 @@ SurfaceTracker::Step SurfaceTracker::stepFor(std::chrono::nanoseconds budget) {
     return total;
 }
 
-bool SurfaceTracker::done() const { return impl_->state.walker.queue.empty(); }
-const Mesh& SurfaceTracker::mesh() const { return impl_->state.walker.mesh; }
-std::size_t SurfaceTracker::cellsVisited() const { return impl_->state.walker.cellsVisited; }
+bool SurfaceTracker::done() const {
+    return impl_->trilinear ? impl_->trilinear->done() : impl_->state.walker.queue.empty();
+}
+const Mesh& SurfaceTracker::mesh() const { return impl_->mesh(); }
+std::size_t SurfaceTracker::cellsVisited() const {
+    return impl_->trilinear ? impl_->trilinear->piecesVisited() : impl_->state.walker.cellsVisited;
+}
 std::size_t SurfaceTracker::workingBytes() const {
+    if (impl_->trilinear) return impl_->trilinear->workingBytes();
     return impl_->state.blocks.byteSize() + impl_->state.walker.queue.byteSize();
 }
 SurfaceStats SurfaceTracker::stats() const {
+    if (impl_->trilinear) {
+        impl_->measureNew();
+        SurfaceStats stats = detail::measuredStats(impl_->trilinear->mesh(), impl_->measure);
+        stats.cellsVisited = impl_->trilinear->piecesVisited();
+        return stats;
+    }
     const Walker& walker = impl_->state.walker;
     SurfaceStats stats = detail::measuredStats(walker.mesh, walker.measure);
     stats.cellsVisited = walker.cellsVisited;
     return stats;
 }
-Surface SurfaceTracker::takeSurface() { return finishedSurface(impl_->state.walker, impl_->table); }
+Surface SurfaceTracker::takeSurface() {
+    if (impl_->trilinear) return detail::finishedTrilinear(*impl_->trilinear, *impl_->volume);
+    return finishedSurface(impl_->state.walker, impl_->table);
+}
 
 }  // namespace isotrack

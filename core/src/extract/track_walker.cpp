@@ -153,7 +153,7 @@ struct WalkTable {
 };
 
 const WalkTable& walkTable(TableKind kind) {
-    if (kind == TableKind::Trilinear) throw InputError(kTrilinearNotLive);
+    if (kind == TableKind::Trilinear) throw InputError(kTrilinearNoContinuationTable);
     static const WalkTable consistent(TableKind::Consistent);
     static const WalkTable classic(TableKind::Classic);
     return kind == TableKind::Classic ? classic : consistent;

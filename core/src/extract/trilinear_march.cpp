@@ -1,8 +1,10 @@
 // Exhaustive marching cubes with the trilinear table, over chunks of slabs run
 // in parallel.
 //
-// Per cell: classify the eight samples (the configuration), skip cells the
-// surface misses, then let classifyTrilinear pick the subcase from the samples
+// Per row of cells: trim the row to the cells between the first and the last
+// change of classification along its four rows of samples (beyond them, every
+// cell's eight samples agree). Per cell: classify the eight samples (the
+// configuration), skip cells the surface misses, then let classifyTrilinear pick the subcase from the samples
 // (asymptotic decider on the ambiguous faces, the interior test where a tunnel
 // is possible). Each crossed cube edge maps to its grid edge, whose vertex id
 // lives in a per-slice cache, so a crossed grid edge gets its vertex computed
@@ -19,6 +21,7 @@
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "edge_vertex.h"
@@ -83,19 +86,63 @@ public:
     void run(TrilinearChunk& chunk) {
         chunk_ = &chunk;
         std::fill(planar_[0].begin(), planar_[0].end(), kNoVertex);
+        rowSpans(chunk.zBegin, spans_[0]);
         for (int z = chunk.zBegin; z < chunk.zEnd; ++z) {
             bottom_ = (z - chunk.zBegin) & 1;
             std::fill(planar_[bottom_ ^ 1].begin(), planar_[bottom_ ^ 1].end(), kNoVertex);
             std::fill(vertical_.begin(), vertical_.end(), kNoVertex);
             seamSlab_ = !chunk.last && z + 1 == chunk.zEnd;
+            rowSpans(z + 1, spans_[std::size_t(bottom_ ^ 1)]);
             for (int y = 0; y + 1 < ny_; ++y) {
-                for (int x = 0; x + 1 < nx_; ++x) marchCell(x, y, z);
+                const auto [begin, end] = cellSpan(y);
+                for (int x = begin; x < end; ++x) marchCell(x, y, z);
             }
             if (z == chunk.zBegin) chunk.firstSliceIds = planar_[bottom_];
         }
     }
 
 private:
+    // A row of samples: its first and last sample's classification, the first
+    // sample classified unlike the first (nx if none) and the last unlike the last (-1 if none).
+    struct RowSpan {
+        bool head = false, tail = false;
+        int first = 0, last = -1;
+    };
+
+    void rowSpans(int z, std::vector<RowSpan>& out) const {
+        out.resize(std::size_t(ny_));
+        for (int y = 0; y < ny_; ++y) {
+            const std::size_t i = grid_.index(0, y, z);
+            RowSpan& row = out[std::size_t(y)];
+            row.head = grid_.above(i);
+            row.tail = grid_.above(i + std::size_t(nx_ - 1));
+            row.first = 1;
+            while (row.first < nx_ && grid_.above(i + std::size_t(row.first)) == row.head) ++row.first;
+            row.last = row.first == nx_ ? -1 : nx_ - 2;
+            while (row.last >= 0 && grid_.above(i + std::size_t(row.last)) == row.tail) --row.last;
+        }
+    }
+
+    // The cells [begin, end) of row (y, z) that may hold surface: before the
+    // first change along its four rows of samples and after the last one, a
+    // cell's eight samples agree when the rows' heads (tails) agree.
+    std::pair<int, int> cellSpan(int y) const {
+        const RowSpan* rows[4] = {
+            &spans_[std::size_t(bottom_)][std::size_t(y)], &spans_[std::size_t(bottom_)][std::size_t(y + 1)],
+            &spans_[std::size_t(bottom_ ^ 1)][std::size_t(y)], &spans_[std::size_t(bottom_ ^ 1)][std::size_t(y + 1)]};
+        bool heads = true, tails = true;
+        int first = nx_, last = -1;
+        for (const RowSpan* row : rows) {
+            heads = heads && row->head == rows[0]->head;
+            tails = tails && row->tail == rows[0]->tail;
+            first = std::min(first, row->first);
+            last = std::max(last, row->last);
+        }
+        const int begin = heads ? std::max(0, first - 1) : 0;
+        const int end = tails ? std::min(nx_ - 1, last + 1) : nx_ - 1;
+        return {begin, end};
+    }
+
     void marchCell(int x, int y, int z) {
         const std::size_t i = grid_.index(x, y, z);
         const std::uint8_t config = grid_.cellConfig(i);
@@ -184,6 +231,7 @@ private:
     bool seamSlab_ = false;
     std::array<std::vector<std::uint32_t>, 2> planar_;  // x then y edges of a slice, ping-pong
     std::vector<std::uint32_t> vertical_;               // z edges of the current slab
+    std::array<std::vector<RowSpan>, 2> spans_;         // rows of samples of a slice, ping-pong as planar_
 };
 
 // The chunks' meshes as one, placeholders resolved from the next chunk's first slice.

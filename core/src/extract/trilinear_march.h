@@ -1,5 +1,7 @@
 #pragma once
 // Exhaustive marching cubes with the trilinear table (isotrack/trilinear.h).
+#include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "isotrack/mesh.h"
@@ -12,6 +14,28 @@ namespace isotrack::detail {
 // each cell whose subcase needs one (its vertexEdges entry has axis
 // kCellInterior and the cell's first sample).
 Mesh marchTrilinear(const Volume& volume, double iso, int threads);
+
+// The surface through a seed by piecewise continuation over the trilinear
+// subcases, walked breadth-first a budget of pieces at a time (trackTrilinear
+// and SurfaceTracker's walk with the trilinear table).
+class TrilinearWalk {
+public:
+    virtual ~TrilinearWalk() = default;
+    // Emits up to `pieceBudget` more (cell, piece) pairs; returns how many it emitted.
+    virtual std::size_t advance(std::size_t pieceBudget) = 0;
+    virtual bool done() const = 0;
+    virtual Mesh& mesh() = 0;
+    virtual const Mesh& mesh() const = 0;
+    virtual std::size_t piecesVisited() const = 0;
+    // Bytes of the walk's sparse blocks and queue, mesh excluded.
+    virtual std::size_t workingBytes() const = 0;
+};
+
+// The walk from `seed`, nothing walked yet; InputError when the seed is outside or not crossed.
+std::unique_ptr<TrilinearWalk> startTrilinear(const Volume& volume, double iso, const GridEdge& seed);
+
+// The walk's surface (its mesh taken) with measureSurface's figures and its pieces visited.
+Surface finishedTrilinear(TrilinearWalk& walk, const Volume& volume);
 
 // The surface through `seed` by piecewise continuation over the trilinear
 // subcases (one thread); InputError when the seed is outside or not crossed.

@@ -1,24 +1,27 @@
 // One surface and every surface with the trilinear table.
 //
 // Tracking is piecewise continuation over the trilinear subcases: a queue of
-// (cell, entry edge) pairs from the seed edge. For each pair the cell is
-// classified (configuration, decided faces, tunnel: classifyTrilinear), its
-// subcase's triangles are grouped into pieces (triangles sharing a corner), the
-// piece holding the entry edge is emitted unless seen before, and the cell
-// across every face the piece reaches is queued, entered through the segment
-// the piece draws on that face: the asymptotic decider reads only the face's
-// samples, so the cell across draws the same segment in one of its pieces.
-// Vertex ids live in a hash map keyed by grid edge; a piece's interior vertices
-// belong to it alone and are made with it.
+// (cell, entry edge) pairs from the seed edge, walked breadth-first. For each
+// pair the cell is classified (configuration, decided faces, tunnel:
+// classifyTrilinear), the piece of its subcase holding the entry edge is looked
+// up (each subcase's pieces and their exits are worked out once, SubcasePieces),
+// the piece is emitted unless seen before, and the cell across every face the
+// piece reaches is queued, entered through the segment the piece draws on that
+// face: the asymptotic decider reads only the face's samples, so the cell across
+// draws the same segment in one of its pieces. Visited pieces and the vertex ids
+// of grid edges live in sparse 8x8x8 blocks, as the consistent tracker keeps
+// them (sparse_blocks.h); a piece's interior vertices belong to it alone and are
+// made with it. The walk goes a budget of pieces at a time, for SurfaceTracker.
 //
 // Every surface is the exhaustive pass's mesh split into its connected parts
 // (a union-find over the vertices of each triangle), largest first.
 #include <algorithm>
 #include <chrono>
 #include <deque>
+#include <limits>
+#include <memory>
 #include <numeric>
-#include <unordered_map>
-#include <unordered_set>
+#include <stdexcept>
 #include <vector>
 
 #include <cmath>
@@ -27,6 +30,7 @@
 #include "isotrack/cube.h"
 #include "isotrack/errors.h"
 #include "isotrack/trilinear.h"
+#include "sparse_blocks.h"
 #include "trilinear_march.h"
 
 namespace isotrack::detail {
@@ -34,8 +38,18 @@ namespace {
 
 constexpr int kCorners = kInteriorVertex + kMaxInteriorVertices;
 
-// A subcase's triangles grouped into pieces: per corner its piece, -1 if unused.
-std::array<int, kCorners> piecesOf(const TrilinearCase& subcase) {
+// A subcase's triangles grouped into pieces (triangles sharing a corner), and
+// each piece's exits: the faces where it draws a segment, with the edge that
+// enters the cell across, in the order the walk queues them.
+struct SubcasePieces {
+    std::array<std::int8_t, kCorners> piece{};  // per corner its piece, -1 if unused
+    std::uint8_t allPieces = 0;                 // a bit per piece
+    std::array<std::uint8_t, 9> firstExit{};    // piece p's exits are exits[firstExit[p] .. firstExit[p + 1])
+    std::array<std::uint8_t, 24> exits{};       // face << 4 | entry edge in the cell across
+};
+
+// Per corner, its piece among the subcase's triangles; -1 if unused.
+std::array<std::int8_t, kCorners> piecesOf(const TrilinearCase& subcase) {
     std::array<int, kCorners> parent{};
     std::iota(parent.begin(), parent.end(), 0);
     auto root = [&](int v) {
@@ -50,7 +64,7 @@ std::array<int, kCorners> piecesOf(const TrilinearCase& subcase) {
             parent[std::size_t(root(tri[std::size_t(k)]))] = root(tri[std::size_t((k + 1) % 3)]);
         }
     }
-    std::array<int, kCorners> piece{};
+    std::array<std::int8_t, kCorners> piece{};
     piece.fill(-1);
     std::array<int, kCorners> number{};
     number.fill(-1);
@@ -59,42 +73,92 @@ std::array<int, kCorners> piecesOf(const TrilinearCase& subcase) {
         if (!used[std::size_t(c)]) continue;
         int& n = number[std::size_t(root(c))];
         if (n < 0) n = count++;
-        piece[std::size_t(c)] = n;
+        piece[std::size_t(c)] = static_cast<std::int8_t>(n);
     }
     return piece;
 }
 
-std::uint64_t edgeKey(const GridEdge& e, const Dims& n) {
-    return ((std::uint64_t(e.z) * std::uint64_t(n[1]) + std::uint64_t(e.y)) * std::uint64_t(n[0]) +
-            std::uint64_t(e.x)) *
-               3 +
-           std::uint64_t(e.axis);
+// The exits of one piece: its triangles' sides used once that join two cube
+// edges lie on a face, in the order of the sides' first use.
+void addExits(const TrilinearCase& subcase, int mine, SubcasePieces& out, int& exitCount) {
+    std::array<std::uint8_t, kCorners * kCorners> uses{};  // per side (a, b), a < b
+    std::array<std::uint16_t, 3 * kMaxTrilinearTriangles> sides{};
+    int sideCount = 0;
+    for (int t = 0; t < subcase.triangleCount; ++t) {
+        const auto& tri = subcase.triangles[std::size_t(t)];
+        if (out.piece[std::size_t(tri[0])] != mine) continue;
+        for (int k = 0; k < 3; ++k) {
+            const int a = tri[std::size_t(k)], b = tri[std::size_t((k + 1) % 3)];
+            const auto side = static_cast<std::uint16_t>(std::min(a, b) * kCorners + std::max(a, b));
+            if (uses[side]++ == 0) sides[std::size_t(sideCount++)] = side;
+        }
+    }
+    for (int s = 0; s < sideCount; ++s) {
+        const int a = sides[std::size_t(s)] / kCorners, b = sides[std::size_t(s)] % kCorners;
+        if (uses[sides[std::size_t(s)]] != 1 || b >= kInteriorVertex) continue;
+        for (int f = 0; f < cube::kFaceCount; ++f) {
+            if (!cube::edgeOnFace(a, f) || !cube::edgeOnFace(b, f)) continue;
+            if (exitCount == int(out.exits.size())) throw std::logic_error("trilinear table: a subcase of many exits");
+            out.exits[std::size_t(exitCount++)] = static_cast<std::uint8_t>(f << 4 | cube::edgeAcrossFace(a, f));
+        }
+    }
+}
+
+// SubcasePieces of every subcase of the trilinear table, by its index in cases().
+const std::vector<SubcasePieces>& subcasePieces() {
+    static const std::vector<SubcasePieces> all = [] {
+        const auto& cases = trilinearTable().cases();
+        std::vector<SubcasePieces> pieces(cases.size());
+        for (std::size_t i = 0; i < cases.size(); ++i) {
+            SubcasePieces& out = pieces[i];
+            out.piece = piecesOf(cases[i]);
+            const int count = 1 + *std::max_element(out.piece.begin(), out.piece.end());
+            if (count > 8) throw std::logic_error("trilinear table: a subcase of more than eight pieces");
+            out.allPieces = static_cast<std::uint8_t>((1u << count) - 1);
+            int exitCount = 0;
+            for (int p = 0; p < 8; ++p) {
+                out.firstExit[std::size_t(p)] = static_cast<std::uint8_t>(exitCount);
+                if (p < count) addExits(cases[i], p, out, exitCount);
+            }
+            out.firstExit[8] = static_cast<std::uint8_t>(exitCount);
+        }
+        return pieces;
+    }();
+    return all;
 }
 
 template <class T>
-class TrilinearTracker {
+class TrilinearTracker final : public TrilinearWalk {
 public:
-    TrilinearTracker(const Volume& volume, const SampleGrid<T>& grid)
-        : volume_(volume), grid_(grid), n_(volume.dims()) {}
-
-    Surface track(const GridEdge& seed) {
+    TrilinearTracker(const Volume& volume, const T* samples, double iso, const GridEdge& seed)
+        : grid_(volume, samples, iso),
+          n_(volume.dims()),
+          blocks_(volume.dims()),
+          cases_(trilinearTable().cases().data()),
+          pieces_(subcasePieces()) {
         // A cell holding the seed edge: its origin moves back along the other axes where it can.
         std::array<int, 3> cell{seed.x, seed.y, seed.z}, offset{0, 0, 0};
         for (int k = 0; k < 3; ++k) {
             if (k != seed.axis && cell[std::size_t(k)] == n_[k] - 1) --cell[std::size_t(k)], offset[std::size_t(k)] = 1;
         }
         queue_.push_back({cell, cube::edgeAt(offset, seed.axis)});
-        while (!queue_.empty()) {
-            const auto [at, entry] = queue_.front();
-            queue_.pop_front();
-            visit(at, entry);
-        }
-        Surface surface;
-        surface.mesh = std::move(mesh_);
-        return surface;
     }
 
-    std::size_t piecesVisited() const { return visited_.size(); }
+    std::size_t advance(std::size_t pieceBudget) override {
+        std::size_t walked = 0;
+        while (walked < pieceBudget && !queue_.empty()) {
+            const auto [at, entry] = queue_.front();
+            queue_.pop_front();
+            walked += visit(at, entry) ? 1 : 0;
+        }
+        piecesVisited_ += walked;
+        return walked;
+    }
+    bool done() const override { return queue_.empty(); }
+    Mesh& mesh() override { return mesh_; }
+    const Mesh& mesh() const override { return mesh_; }
+    std::size_t piecesVisited() const override { return piecesVisited_; }
+    std::size_t workingBytes() const override { return blocks_.byteSize() + queue_.size() * sizeof(Entry); }
 
 private:
     struct Entry {
@@ -102,7 +166,16 @@ private:
         int edge;
     };
 
-    void visit(const std::array<int, 3>& c, int entry) {
+    // Emits the piece of cell c holding cube edge `entry` unless it was emitted
+    // before, and queues the cells it continues into; whether it was emitted.
+    bool visit(const std::array<int, 3>& c, int entry) {
+        SparseBlocks::Block* block = blocks_.at(c[0], c[1], c[2]);
+        const auto local = std::size_t(SparseBlocks::local(c[0], c[1], c[2]));
+        std::uint8_t& visited = block->visited[local];
+        // The block's config byte keeps a bit per piece of the cell once it is
+        // classified: a cell whose pieces were all emitted is not classified again.
+        std::uint8_t& pieceBits = block->config[local];
+        if (pieceBits != 0 && visited == pieceBits) return false;
         const std::size_t i = grid_.index(c[0], c[1], c[2]);
         const std::uint8_t config = grid_.cellConfig(i);
         double values[8];
@@ -111,10 +184,11 @@ private:
             values[v] = grid_.at(grid_.index(c[0] + o[0], c[1] + o[1], c[2] + o[2])) - grid_.iso();
         }
         const TrilinearCase& subcase = classifyTrilinear(values, config);
-        const std::array<int, kCorners> piece = piecesOf(subcase);
-        const int mine = piece[std::size_t(entry)];
-        if (mine < 0) return;
-        if (!visited_.insert(i * 8 + std::size_t(mine)).second) return;
+        const SubcasePieces& pieces = pieces_[std::size_t(&subcase - cases_)];
+        pieceBits = pieces.allPieces;
+        const int mine = pieces.piece[std::size_t(entry)];
+        if (mine < 0 || (visited & (1u << mine)) != 0) return false;
+        visited = static_cast<std::uint8_t>(visited | 1u << mine);
         std::array<std::uint32_t, kCorners> ids{};
         std::array<bool, kCorners> made{};
         auto id = [&](int corner) {
@@ -125,42 +199,32 @@ private:
             }
             return ids[std::size_t(corner)];
         };
-        std::array<std::uint8_t, kCorners * kCorners> uses{};  // per side (a, b), a < b, of the piece's triangles
-        std::array<std::uint16_t, 3 * kMaxTrilinearTriangles> sides{};
-        int sideCount = 0;
         for (int t = 0; t < subcase.triangleCount; ++t) {
             const auto& tri = subcase.triangles[std::size_t(t)];
-            if (piece[std::size_t(tri[0])] != mine) continue;
-            for (int k = 0; k < 3; ++k) {
-                mesh_.indices.push_back(id(tri[std::size_t(k)]));
-                const int a = tri[std::size_t(k)], b = tri[std::size_t((k + 1) % 3)];
-                const auto side = static_cast<std::uint16_t>(std::min(a, b) * kCorners + std::max(a, b));
-                if (uses[side]++ == 0) sides[std::size_t(sideCount++)] = side;
-            }
+            if (pieces.piece[std::size_t(tri[0])] != mine) continue;
+            for (int k = 0; k < 3; ++k) mesh_.indices.push_back(id(tri[std::size_t(k)]));
         }
-        for (int s = 0; s < sideCount; ++s) {
-            const int a = sides[std::size_t(s)] / kCorners, b = sides[std::size_t(s)] % kCorners;
-            if (uses[sides[std::size_t(s)]] != 1 || b >= kInteriorVertex) continue;
-            for (int f = 0; f < cube::kFaceCount; ++f) {
-                if (!cube::edgeOnFace(a, f) || !cube::edgeOnFace(b, f)) continue;
-                std::array<int, 3> next = c;
-                next[std::size_t(cube::faceAxis(f))] += cube::faceSide(f) ? 1 : -1;
-                const int axis = cube::faceAxis(f);
-                if (next[std::size_t(axis)] < 0 || next[std::size_t(axis)] > n_[axis] - 2) continue;
-                queue_.push_back({next, cube::edgeAcrossFace(a, f)});
-            }
+        for (int e = pieces.firstExit[std::size_t(mine)]; e < pieces.firstExit[std::size_t(mine) + 1]; ++e) {
+            const int f = pieces.exits[std::size_t(e)] >> 4, axis = cube::faceAxis(f);
+            std::array<int, 3> next = c;
+            next[std::size_t(axis)] += cube::faceSide(f) ? 1 : -1;
+            if (next[std::size_t(axis)] < 0 || next[std::size_t(axis)] > n_[axis] - 2) continue;
+            queue_.push_back({next, pieces.exits[std::size_t(e)] & 15});
         }
+        return true;
     }
 
     std::uint32_t edgeVertex(const std::array<int, 3>& c, int edge) {
         const auto& o = cube::edgeOrigin(edge);
         const GridEdge e{c[0] + o[0], c[1] + o[1], c[2] + o[2], cube::edgeAxis(edge)};
-        const auto [it, fresh] = vertexIds_.try_emplace(edgeKey(e, n_), std::uint32_t(mesh_.vertices.size()));
-        if (fresh) {
+        std::uint32_t& id =
+            blocks_.at(e.x, e.y, e.z)->vertex[std::size_t(3 * SparseBlocks::local(e.x, e.y, e.z) + e.axis)];
+        if (id == SparseBlocks::kNoVertex) {
+            id = std::uint32_t(mesh_.vertices.size());
             grid_.edgeVertex(e.x, e.y, e.z, e.axis, mesh_.vertices.emplace_back());
             mesh_.vertexEdges.push_back(e);
         }
-        return it->second;
+        return id;
     }
 
     template <class Ids, class Made>
@@ -194,13 +258,14 @@ private:
         return id;
     }
 
-    const Volume& volume_;
-    const SampleGrid<T>& grid_;
+    SampleGrid<T> grid_;
     const Dims n_;
+    SparseBlocks blocks_;
+    const TrilinearCase* cases_;
+    const std::vector<SubcasePieces>& pieces_;
     Mesh mesh_;
     std::deque<Entry> queue_;
-    std::unordered_map<std::uint64_t, std::uint32_t> vertexIds_;
-    std::unordered_set<std::size_t> visited_;
+    std::size_t piecesVisited_ = 0;
 };
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
@@ -209,8 +274,7 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-Surface trackTrilinear(const Volume& volume, double iso, const GridEdge& seed) {
-    const auto start = std::chrono::steady_clock::now();
+std::unique_ptr<TrilinearWalk> startTrilinear(const Volume& volume, double iso, const GridEdge& seed) {
     const Dims& n = volume.dims();
     const int p[3] = {seed.x, seed.y, seed.z};
     bool inside = seed.axis >= 0 && seed.axis < 3;
@@ -219,16 +283,27 @@ Surface trackTrilinear(const Volume& volume, double iso, const GridEdge& seed) {
     const int end[3] = {seed.x + (seed.axis == 0), seed.y + (seed.axis == 1), seed.z + (seed.axis == 2)};
     const bool a = volume.value(seed.x, seed.y, seed.z) >= iso, b = volume.value(end[0], end[1], end[2]) >= iso;
     if (a == b) throw InputError("track: the seed edge is not crossed by the surface at this isovalue");
-    return visitSamples(volume, [&](const auto* samples) {
+    return visitSamples(volume, [&](const auto* samples) -> std::unique_ptr<TrilinearWalk> {
         using T = std::remove_cv_t<std::remove_pointer_t<decltype(samples)>>;
-        const SampleGrid<T> grid(volume, samples, iso);
-        TrilinearTracker<T> tracker(volume, grid);
-        Surface surface = tracker.track(seed);
-        surface.stats = measureSurface(surface.mesh, volume);
-        surface.stats.cellsVisited = tracker.piecesVisited();
-        surface.stats.seconds = secondsSince(start);
-        return surface;
+        return std::make_unique<TrilinearTracker<T>>(volume, samples, iso, seed);
     });
+}
+
+Surface finishedTrilinear(TrilinearWalk& walk, const Volume& volume) {
+    Surface surface;
+    surface.mesh = std::move(walk.mesh());
+    surface.stats = measureSurface(surface.mesh, volume);
+    surface.stats.cellsVisited = walk.piecesVisited();
+    return surface;
+}
+
+Surface trackTrilinear(const Volume& volume, double iso, const GridEdge& seed) {
+    const auto start = std::chrono::steady_clock::now();
+    const auto walk = startTrilinear(volume, iso, seed);
+    walk->advance(std::numeric_limits<std::size_t>::max());
+    Surface surface = finishedTrilinear(*walk, volume);
+    surface.stats.seconds = secondsSince(start);
+    return surface;
 }
 
 std::vector<Surface> allTrilinear(const Volume& volume, double iso, int threads) {
@@ -244,13 +319,13 @@ std::vector<Surface> allTrilinear(const Volume& volume, double iso, int threads)
         parent[root(mesh.indices[i])] = root(mesh.indices[i + 1]);
         parent[root(mesh.indices[i + 1])] = root(mesh.indices[i + 2]);
     }
-    std::unordered_map<std::uint32_t, std::size_t> surfaceOfRoot;
+    std::vector<std::size_t> surfaceOfRoot(mesh.vertices.size(), ~std::size_t(0));  // per root vertex
     std::vector<Surface> surfaces;
     std::vector<std::uint32_t> local(mesh.vertices.size(), ~0u);
     for (std::size_t i = 0; i < mesh.indices.size(); i += 3) {
-        const auto [it, fresh] = surfaceOfRoot.try_emplace(root(mesh.indices[i]), surfaces.size());
-        if (fresh) surfaces.emplace_back();
-        Mesh& part = surfaces[it->second].mesh;
+        std::size_t& surface = surfaceOfRoot[root(mesh.indices[i])];
+        if (surface == ~std::size_t(0)) surface = surfaces.size(), surfaces.emplace_back();
+        Mesh& part = surfaces[surface].mesh;
         for (std::size_t k = 0; k < 3; ++k) {
             const std::uint32_t v = mesh.indices[i + k];
             if (local[v] == ~0u) {

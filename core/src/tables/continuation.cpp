@@ -120,7 +120,7 @@ void prepareTables(TableKind kind) {
 }
 
 const std::array<CaseContinuation, 256>& continuationTable(TableKind kind) {
-    if (kind == TableKind::Trilinear) throw InputError(kTrilinearNotLive);
+    if (kind == TableKind::Trilinear) throw InputError(kTrilinearNoContinuationTable);
     static const auto consistent = buildTable(TableKind::Consistent);
     static const auto classic = buildTable(TableKind::Classic);
     return kind == TableKind::Classic ? classic : consistent;

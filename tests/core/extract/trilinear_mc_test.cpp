@@ -91,6 +91,28 @@ TEST_CASE("a sphere with the trilinear table is the consistent table's sphere", 
     CHECK(mesh.triangleCount() == marchingCubes(volume, 0.0, TableKind::Consistent).triangleCount());
 }
 
+TEST_CASE("the trilinear pass finds surface at the very ends of rows and alone in a row", "[core][mc][trilinear]") {
+    // Rows are trimmed to their first and last change of sign: here the only
+    // changes are next to a row's first or last sample, or one sample inside a
+    // row, in some rows only; no cube is ambiguous, so the consistent table's
+    // mesh is the reference.
+    const int n = 13;
+    Volume volume({n, n - 2, n - 4}, ScalarType::Float32);
+    for (int z = 0; z < n - 4; ++z)
+        for (int y = 0; y < n - 2; ++y)
+            for (int x = 0; x < n; ++x) {
+                const bool end = (x == 0 && y < 4) || (x == n - 1 && z > 5);
+                const bool lone = x == 6 && y == 5 && z == 4;
+                volume.setValue(x, y, z, end || lone ? 1.0 : 0.0);
+            }
+    for (int threads : {1, 3}) {
+        const Mesh mesh = marchingCubes(volume, 0.5, TableKind::Trilinear, threads);
+        const Mesh reference = marchingCubes(volume, 0.5, TableKind::Consistent, threads);
+        CHECK(mesh.triangleCount() == reference.triangleCount());
+        CHECK(mesh.vertices.size() == countCrossedEdges(volume, 0.5));
+    }
+}
+
 namespace {
 
 // A vertex as a comparable key: its grid edge, or for an interior vertex its cell and position.
