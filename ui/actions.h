@@ -74,12 +74,17 @@ struct SetWireframe {
 struct SetBoundingBox {
     bool on = true;
 };
+struct SetSurfaceIso {  // method tree: surface `id` at an isovalue of its own
+    std::uint32_t id = 0;
+    double iso = 0.0;
+};
 struct FrameSelection {};
 struct FrameAll {};
 
-using Action = std::variant<LoadField, LoadFile, SetIso, SetTable, SetMethod, Growth, SetCellsPerFrame, SetGrowthBudget,
-                            SetColourByGrowth, Select, SetVisible, Isolate, ShowAll, Delete, Export, SetColour,
-                            SetOffset, SetExplode, SetWireframe, SetBoundingBox, FrameSelection, FrameAll>;
+using Action =
+    std::variant<LoadField, LoadFile, SetIso, SetTable, SetMethod, Growth, SetCellsPerFrame, SetGrowthBudget,
+                 SetColourByGrowth, Select, SetVisible, Isolate, ShowAll, Delete, Export, SetColour, SetOffset,
+                 SetExplode, SetWireframe, SetBoundingBox, SetSurfaceIso, FrameSelection, FrameAll>;
 
 inline constexpr const char* kDefaultExportPattern = "surface_{id}.ply";
 

@@ -74,6 +74,10 @@ struct SurfaceRow {
     // arc's persistence, when the extraction measured them (method tree).
     std::optional<long> euler, borderLoops, genus;
     std::optional<double> persistence;
+    // Method tree: the surface is on a contour-tree arc, so it may have an isovalue of its
+    // own; `ownIso` is that of its mesh on screen, `ownIsoWanted` the one asked for.
+    bool hasArc = false;
+    std::optional<double> ownIso, ownIsoWanted;
     bool tracked = false;  // has a seed, kept across isovalues
     // A tracked surface may have no mesh at this isovalue: gone, or merged into another tracked surface.
     enum Presence { Shown, Gone, Merged } presence = Shown;

@@ -30,8 +30,9 @@ public:
     ui::Method method() const { return method_; }
     void setMethod(ui::Method method) { method_ = method; }
 
-    // Sends what is wanted, with the tracked surfaces' seeds.
-    void submit(std::vector<SeedRequest> seeds);
+    // Sends what is wanted, with the tracked surfaces' seeds and the flexible
+    // surfaces' own isovalues; `onlyFlexible`: only those surfaces changed.
+    void submit(std::vector<SeedRequest> seeds, std::vector<FlexibleRequest> flexible = {}, bool onlyFlexible = false);
     // The newest finished result that is not void, if one is waiting.
     std::optional<ExtractionResult> take();
 

@@ -91,6 +91,8 @@ void ExtractionWorker::submit(ExtractionRequest request) {
                           !finished_->volume || finished_->volume->source != request.source)) {
             finished_.reset();
         }
+        // A flexible surface's request must not drop a waiting request for the whole scene.
+        if (request.onlyFlexible && pending_ && !pending_->onlyFlexible) request.onlyFlexible = false;
         pending_ = std::move(request);
     }
     wake_.notify_all();
@@ -174,6 +176,7 @@ ExtractionResult ExtractionWorker::work(const ExtractionRequest& request) {
     result.generation = request.generation;
     result.table = request.table;
     result.method = request.method;
+    result.onlyFlexible = request.onlyFlexible;
     try {
         result.volume = volumeFor(request.source, result.loadMs);
         if (cancelling()) throw Cancelled{};
@@ -213,6 +216,11 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
     setPhase(methodPhase(request.method), known != lastMs_.end() ? known->second : 0.0);
     const Volume& volume = loaded.volume;
     const auto start = Clock::now();
+    if (request.onlyFlexible) {
+        trackFlexible(request, volume, result);
+        result.extractMs = msSince(start);
+        return;
+    }
     if (request.method != Method::Track) {  // track: only the seeds' surfaces, below
         ExtractRequest exhaustive;
         exhaustive.method = request.method;
@@ -228,6 +236,7 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
         result.surfaces = isotrack::extract(volume, exhaustive);
     }
     if (cancelling()) throw Cancelled{};
+    trackFlexible(request, volume, result);
     trackSeeds(request, volume, result);
     result.footprints.reserve(result.surfaces.size());
     for (const Surface& surface : result.surfaces) result.footprints.push_back(footprintOf(surface.mesh));
@@ -274,6 +283,35 @@ void ExtractionWorker::trackSeeds(const ExtractionRequest& request, const Volume
         result.seeds.push_back(seed);
     }
     seedsTotal_ = 0;
+}
+
+// Flexible surfaces (Carr & Snoeyink's flexible isosurfaces): each is followed
+// along the tree to its own isovalue and tracked from its arc's seed; the
+// surface it stands in for at the request's isovalue is left out of the rest.
+void ExtractionWorker::trackFlexible(const ExtractionRequest& request, const Volume& volume, ExtractionResult& result) {
+    if (request.flexible.empty() || request.method != Method::Tree || request.table != TableKind::Consistent) return;
+    const ContourTree& tree = treeOf(volume);
+    for (const FlexibleRequest& wanted : request.flexible) {
+        if (cancelling()) throw Cancelled{};
+        const std::size_t origin = followArc(tree, wanted.origin, result.iso);
+        const auto displaced = std::remove_if(result.surfaces.begin(), result.surfaces.end(),
+                                              [&](const Surface& s) { return s.stats.arc == origin; });
+        result.surfaces.erase(displaced, result.surfaces.end());
+        FlexibleResult flexible;
+        flexible.surface = wanted.surface;
+        flexible.iso = wanted.iso;
+        const std::size_t arc = followArc(tree, wanted.arc, wanted.iso);
+        if (arc < tree.arcs.size()) {
+            const ArcSeed seed = arcSeeds(tree, volume, wanted.iso, {arc}).front();
+            Surface surface = trackSurface(volume, wanted.iso, seed.edge, TableKind::Consistent, threads_);
+            surface.stats.arc = arc;
+            surface.stats.persistence = tree.persistence(arc);
+            measureTopology(surface);
+            flexible.footprint = footprintOf(surface.mesh);
+            flexible.mesh = std::move(surface);
+        }
+        result.flexible.push_back(std::move(flexible));
+    }
 }
 
 }  // namespace isotrack::viewer

@@ -59,13 +59,25 @@ struct SeedRequest {
     Vec3d point{0, 0, 0};
 };
 
+// A surface with its own isovalue (method tree): shown at `iso` on the arc the
+// contour tree leads `arc` to (followArc); at the request's isovalue it stands
+// in for the surface on the arc `origin` leads to, which is left out.
+struct FlexibleRequest {
+    std::uint32_t surface = 0;
+    std::size_t arc = 0;     // its arc at its last isovalue
+    std::size_t origin = 0;  // its arc when it got its own isovalue
+    double iso = 0.0;
+};
+
 struct ExtractionRequest {
     std::uint64_t generation = 0;
     VolumeSource source;
     std::optional<double> iso;  // nullopt: the source's default
     TableKind table = TableKind::Consistent;
     ui::Method method = ui::Method::All;
-    std::vector<SeedRequest> seeds;  // every tracked surface, in any method
+    std::vector<SeedRequest> seeds;         // every tracked surface, in any method
+    std::vector<FlexibleRequest> flexible;  // every surface with its own isovalue (method tree)
+    bool onlyFlexible = false;              // re-track the flexible surfaces, nothing else
 };
 
 // Where a seed went at the result's isovalue.
@@ -73,6 +85,14 @@ struct SeedResult {
     std::uint32_t surface = 0;         // the viewer's id, as requested
     std::optional<FollowedSeed> seed;  // nullopt: no surface near it at this isovalue
     int index = -1;                    // into ExtractionResult::surfaces; shared when seeds' surfaces merged
+};
+
+// A flexible surface at its own isovalue; no surface when it vanished on the way.
+struct FlexibleResult {
+    std::uint32_t surface = 0;
+    double iso = 0.0;
+    std::optional<Surface> mesh;
+    SurfaceFootprint footprint;
 };
 
 struct ExtractionResult {
@@ -86,6 +106,8 @@ struct ExtractionResult {
     std::vector<Surface> surfaces;
     std::vector<SurfaceFootprint> footprints;  // one per surface
     std::vector<SeedResult> seeds;             // one per requested seed
+    std::vector<FlexibleResult> flexible;      // one per flexible surface requested
+    bool onlyFlexible = false;                 // the other surfaces were not extracted again
     double loadMs = 0.0, extractMs = 0.0;
     std::chrono::steady_clock::time_point started{}, finished{};  // on the worker
     std::string error;  // set when loading or extracting failed; then only `generation` is meaningful
@@ -133,6 +155,7 @@ private:
     void extract(const ExtractionRequest& request, const LoadedVolume& volume, ExtractionResult& result);
     const ContourTree& treeOf(const Volume& volume);
     void trackSeeds(const ExtractionRequest& request, const Volume& volume, ExtractionResult& result);
+    void trackFlexible(const ExtractionRequest& request, const Volume& volume, ExtractionResult& result);
     bool cancelling() const { return cancel_.load(std::memory_order_relaxed); }
     void setPhase(const std::string& what, double expectedMs);
 

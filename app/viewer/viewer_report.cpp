@@ -152,7 +152,10 @@ nlohmann::json Viewer::summary() const {
                             {"visible", surface->style().visible},
                             {"colour", {colour.r, colour.g, colour.b}},
                             {"offset", {offset.x, offset.y, offset.z}},
-                            {"selected", scene_.selected == surface->id()}});
+                            {"selected", scene_.selected == surface->id()},
+                            {"isovalue", surface->ownIso ? surface->ownIso->shown : shownIso()},
+                            {"own_isovalue", surface->ownIso.has_value()}});
+        if (surface->stats().arc) surfaces.back()["arc"] = *surface->stats().arc;
         if (surface->presence() == Presence::Merged) surfaces.back()["merged_into"] = surface->mergedInto();
         if (const auto& seed = surface->seedPoint()) surfaces.back()["seed"] = *seed;
     }

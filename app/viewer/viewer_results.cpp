@@ -6,7 +6,9 @@
 // surface in the list to claim a result surface shows it, a later one whose
 // seed lies on the same surface is Merged into it, and one whose seed found no
 // surface is Gone; either keeps its seed and style for when the isovalue comes
-// back. The other surfaces are matched by footprint (isotrack/follow.h): each
+// back. Surfaces with an isovalue of their own (method tree) keep their place
+// and get the mesh the worker tracked along their arc, or are Gone when their
+// arc ended on the way. The other surfaces are matched by footprint (isotrack/follow.h): each
 // new surface continues the old one it shares the most 4x4x4-cell blocks with.
 // The largest new surface continuing an old one takes its place in the list,
 // its id (and so the selection), colour, visibility and offset; further parts
@@ -68,7 +70,14 @@ void Viewer::applyResult(ExtractionResult result) {
         renderer_->arena().trim();  // pages sized for the old volume's surfaces go
         nextColour_ = 0;
     }
+    if (result.onlyFlexible) {  // the other surfaces, and the common isovalue shown, are as they were
+        placeFlexible(result, scene_.surfaces());
+        return;
+    }
     extraction_.applied(result);
+    if (result.method != ui::Method::Tree) {  // own isovalues live on the contour tree's arcs
+        for (auto& surface : scene_.surfaces()) surface->ownIso.reset();
+    }
 
     // Room for the whole result in one page before its surfaces arrive one by
     // one: they then draw in one call, and no page is made halfway.
@@ -85,6 +94,7 @@ void Viewer::applyResult(ExtractionResult result) {
     Structures next;
     next.reserve(old.size() + result.surfaces.size());
     placeTracked(result, old, claimed);
+    placeFlexible(result, old);
     placeUntracked(result, old, claimed, next);
     for (auto& surface : next) scene_.add(std::move(surface));
     if (scene_.selected && !scene_.find(*scene_.selected)) scene_.selected.reset();
@@ -117,12 +127,29 @@ void Viewer::placeTracked(ExtractionResult& result, Structures& old, std::vector
     }
 }
 
+// Surfaces with their own isovalue get their mesh at it, or are gone when their arc ended on the way.
+void Viewer::placeFlexible(ExtractionResult& result, Structures& surfaces) {
+    for (FlexibleResult& flexible : result.flexible) {
+        const auto found = std::find_if(surfaces.begin(), surfaces.end(),
+                                        [&](const auto& s) { return s && s->id() == flexible.surface; });
+        if (found == surfaces.end() || !(*found)->ownIso) continue;  // deleted, or back at the common isovalue
+        SurfaceStructure& surface = **found;
+        surface.ownIso->shown = flexible.iso;
+        if (flexible.mesh) {
+            surface.ownIso->arc = flexible.mesh->stats.arc.value_or(surface.ownIso->arc);
+            surface.replaceSurface(std::move(*flexible.mesh), std::move(flexible.footprint));
+        } else {
+            surface.setAbsent(Presence::Gone, flexible.iso);
+        }
+    }
+}
+
 // The result's other surfaces continue the untracked ones by footprint; `next` receives the whole list.
 void Viewer::placeUntracked(ExtractionResult& result, Structures& old, std::vector<bool>& claimed, Structures& next) {
     std::vector<const SurfaceFootprint*> previous, fresh;
     std::vector<std::size_t> previousSlot, freshIndex;
     for (std::size_t i = 0; i < old.size(); ++i) {
-        if (old[i]->tracked()) continue;
+        if (old[i]->keepsPlace()) continue;
         previous.push_back(&old[i]->footprint());
         previousSlot.push_back(i);
     }
@@ -149,7 +176,7 @@ void Viewer::placeUntracked(ExtractionResult& result, Structures& old, std::vect
     std::size_t slot = 0;  // index into previous
     for (std::size_t i = 0; i < old.size(); ++i) {
         std::unique_ptr<SurfaceStructure>& surface = old[i];
-        if (surface->tracked()) {
+        if (surface->keepsPlace()) {
             next.push_back(std::move(surface));
             continue;
         }

@@ -48,6 +48,11 @@ void Viewer::checkpoint(const std::string& name, int line) {
     nlohmann::json mark = memoryJson();
     mark["name"] = name;
     mark["line"] = line;
+    nlohmann::json triangles = nlohmann::json::object();  // by surface id, to tell which surfaces changed
+    for (const auto& surface : scene_.surfaces()) {
+        triangles[std::to_string(surface->id())] = surface->mesh().triangleCount();
+    }
+    mark["surface_triangles"] = triangles;
     checkpoints_.push_back(mark);
 }
 
