@@ -231,6 +231,7 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
         exhaustive.cancel = &cancel_;
         if (request.method == Method::Tree && request.table == TableKind::Consistent) {
             exhaustive.tree = &treeOf(volume);
+            result.tree = tree_;
             setPhase(methodPhase(request.method), known != lastMs_.end() ? known->second : 0.0);
         }
         result.surfaces = isotrack::extract(volume, exhaustive);
@@ -249,7 +250,7 @@ const ContourTree& ExtractionWorker::treeOf(const Volume& volume) {
     if (!tree_) {
         setPhase("building the contour tree", lastMs_.count("tree") ? lastMs_["tree"] : 0.0);
         const auto start = Clock::now();
-        tree_ = std::make_unique<const ContourTree>(computeContourTree(volume, threads_));
+        tree_ = std::make_shared<const ContourTree>(computeContourTree(volume, threads_));
         lastMs_["tree"] = msSince(start);
     }
     return *tree_;

@@ -107,6 +107,7 @@ struct ExtractionResult {
     std::vector<SurfaceFootprint> footprints;  // one per surface
     std::vector<SeedResult> seeds;             // one per requested seed
     std::vector<FlexibleResult> flexible;      // one per flexible surface requested
+    std::shared_ptr<const ContourTree> tree;   // method tree: the volume's tree, to match surfaces by arc
     bool onlyFlexible = false;                 // the other surfaces were not extracted again
     double loadMs = 0.0, extractMs = 0.0;
     std::chrono::steady_clock::time_point started{}, finished{};  // on the worker
@@ -177,7 +178,7 @@ private:
 
     // Worker-thread only.
     std::shared_ptr<const LoadedVolume> cache_;
-    std::unique_ptr<const ContourTree> tree_;  // cache_'s contour tree, built on the first tree request
+    std::shared_ptr<const ContourTree> tree_;  // cache_'s contour tree, built on the first tree request
     std::map<std::string, double> lastMs_;     // per source and method: how long extraction took last time
 
     std::thread thread_;

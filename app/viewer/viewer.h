@@ -91,7 +91,8 @@ private:
                       std::vector<bool>& claimed);
     void placeFlexible(ExtractionResult& result, std::vector<std::unique_ptr<SurfaceStructure>>& surfaces);
     void placeUntracked(ExtractionResult& result, std::vector<std::unique_ptr<SurfaceStructure>>& old,
-                        std::vector<bool>& claimed, std::vector<std::unique_ptr<SurfaceStructure>>& next);
+                        std::vector<bool>& claimed, std::vector<std::unique_ptr<SurfaceStructure>>& next,
+                        std::optional<double> previousIso);
 
     // viewer_actions.cpp
     void apply(const ui::Action& action) override;

@@ -8,7 +8,8 @@
 // surface is Gone; either keeps its seed and style for when the isovalue comes
 // back. Surfaces with an isovalue of their own (method tree) keep their place
 // and get the mesh the worker tracked along their arc, or are Gone when their
-// arc ended on the way. The other surfaces are matched by footprint (isotrack/follow.h): each
+// arc ended on the way. With the contour tree, the other surfaces are matched
+// by arc (viewer/arc_match.h); otherwise by footprint (isotrack/follow.h): each
 // new surface continues the old one it shares the most 4x4x4-cell blocks with.
 // The largest new surface continuing an old one takes its place in the list,
 // its id (and so the selection), colour, visibility and offset; further parts
@@ -20,6 +21,7 @@
 #include <map>
 
 #include "render/palette.h"
+#include "viewer/arc_match.h"
 #include "viewer/viewer.h"
 
 namespace isotrack::viewer {
@@ -74,6 +76,7 @@ void Viewer::applyResult(ExtractionResult result) {
         placeFlexible(result, scene_.surfaces());
         return;
     }
+    const std::optional<double> previousIso = extraction_.shownIso();  // of the surfaces in the scene
     extraction_.applied(result);
     if (result.method != ui::Method::Tree) {  // own isovalues live on the contour tree's arcs
         for (auto& surface : scene_.surfaces()) surface->ownIso.reset();
@@ -95,7 +98,7 @@ void Viewer::applyResult(ExtractionResult result) {
     next.reserve(old.size() + result.surfaces.size());
     placeTracked(result, old, claimed);
     placeFlexible(result, old);
-    placeUntracked(result, old, claimed, next);
+    placeUntracked(result, old, claimed, next, previousIso);
     for (auto& surface : next) scene_.add(std::move(surface));
     if (scene_.selected && !scene_.find(*scene_.selected)) scene_.selected.reset();
 }
@@ -145,7 +148,8 @@ void Viewer::placeFlexible(ExtractionResult& result, Structures& surfaces) {
 }
 
 // The result's other surfaces continue the untracked ones by footprint; `next` receives the whole list.
-void Viewer::placeUntracked(ExtractionResult& result, Structures& old, std::vector<bool>& claimed, Structures& next) {
+void Viewer::placeUntracked(ExtractionResult& result, Structures& old, std::vector<bool>& claimed, Structures& next,
+                            std::optional<double> previousIso) {
     std::vector<const SurfaceFootprint*> previous, fresh;
     std::vector<std::size_t> previousSlot, freshIndex;
     for (std::size_t i = 0; i < old.size(); ++i) {
@@ -158,7 +162,14 @@ void Viewer::placeUntracked(ExtractionResult& result, Structures& old, std::vect
         fresh.push_back(&result.footprints[j]);
         freshIndex.push_back(j);
     }
-    const std::vector<int> match = matchSurfaces(previous, fresh);
+    std::optional<std::vector<int>> byArc;  // method tree: exact, by the contour tree's arcs (arc_match.h)
+    if (result.tree && previousIso && result.method == ui::Method::Tree) {
+        std::vector<std::optional<std::size_t>> oldArcs, newArcs;
+        for (std::size_t i : previousSlot) oldArcs.push_back(old[i]->stats().arc);
+        for (std::size_t j : freshIndex) newArcs.push_back(result.surfaces[j].stats.arc);
+        byArc = matchByArc(*result.tree, *previousIso, oldArcs, newArcs);
+    }
+    const std::vector<int> match = byArc ? *byArc : matchSurfaces(previous, fresh);
     // The parts continuing each old surface, largest first (result order is largest first in `all`).
     std::vector<std::vector<std::size_t>> parts(previous.size());
     std::vector<std::size_t> unmatched;

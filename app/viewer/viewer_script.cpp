@@ -53,6 +53,11 @@ void Viewer::checkpoint(const std::string& name, int line) {
         triangles[std::to_string(surface->id())] = surface->mesh().triangleCount();
     }
     mark["surface_triangles"] = triangles;
+    nlohmann::json arcs = nlohmann::json::object();  // method tree: each surface's contour-tree arc, by id
+    for (const auto& surface : scene_.surfaces()) {
+        if (surface->stats().arc) arcs[std::to_string(surface->id())] = *surface->stats().arc;
+    }
+    mark["surface_arcs"] = arcs;
     checkpoints_.push_back(mark);
 }
 
