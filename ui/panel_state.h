@@ -42,12 +42,13 @@ struct ExtractionState {
     double shownIso = 0.0;  // of the surfaces on screen; trails `iso` by about one extraction while it is dragged
     Table table = Table::Consistent;
     Method method = Method::All;
-    bool busy = false;         // the worker is loading or extracting
-    std::string busyWhat;      // e.g. "extracting every surface"
-    double busySeconds = 0.0;  // elapsed
-    float fraction = -1.0f;    // estimated completion 0..1, or < 0 when unknown
-    double lastMs = 0.0;       // the last finished extraction (worker time)
-    std::string error;         // the last failure, shown until the next success
+    double minPersistence = 0.0;  // method tree: surfaces whose arc's persistence is below it are hidden
+    bool busy = false;            // the worker is loading or extracting
+    std::string busyWhat;         // e.g. "extracting every surface"
+    double busySeconds = 0.0;     // elapsed
+    float fraction = -1.0f;       // estimated completion 0..1, or < 0 when unknown
+    double lastMs = 0.0;          // the last finished extraction (worker time)
+    std::string error;            // the last failure, shown until the next success
 };
 
 struct GrowthState {

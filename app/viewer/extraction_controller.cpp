@@ -15,6 +15,7 @@ void ExtractionController::submit(std::vector<SeedRequest> seeds, std::vector<Fl
     request.iso = iso_;
     request.table = table_;
     request.method = method_;
+    request.minPersistence = minPersistence_;
     if (!lastRequest_ || supersedes(request, *lastRequest_)) epoch_ = request.generation;
     lastRequest_ = request;
     request.seeds = std::move(seeds);

@@ -205,6 +205,8 @@ std::shared_ptr<const LoadedVolume> ExtractionWorker::volumeFor(const VolumeSour
     const auto start = Clock::now();
     cache_.reset();  // the old volume goes before the new one is read
     tree_.reset();
+    simplified_.reset();
+    lastTree_.reset();
     cache_ = loadForView(source);
     loadMs = msSince(start);
     return cache_;
@@ -230,8 +232,8 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
         exhaustive.measure = true;
         exhaustive.cancel = &cancel_;
         if (request.method == Method::Tree && request.table == TableKind::Consistent) {
-            exhaustive.tree = &treeOf(volume);
-            result.tree = tree_;
+            exhaustive.tree = &treeOf(volume, request.minPersistence);
+            result.tree = lastTree_;
             setPhase(methodPhase(request.method), known != lastMs_.end() ? known->second : 0.0);
         }
         result.surfaces = isotrack::extract(volume, exhaustive);
@@ -245,15 +247,28 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
     lastMs_[key] = result.extractMs;
 }
 
-// The volume's contour tree, built once (the phase says so while it is built).
-const ContourTree& ExtractionWorker::treeOf(const Volume& volume) {
+// The volume's contour tree, built once (the phase says so while it is built),
+// and its copy simplified by the last persistence asked for. Arcs keep their
+// numbers in the copy (pruned ones are only marked), so surfaces match across both.
+const ContourTree& ExtractionWorker::treeOf(const Volume& volume, double minPersistence) {
     if (!tree_) {
         setPhase("building the contour tree", lastMs_.count("tree") ? lastMs_["tree"] : 0.0);
         const auto start = Clock::now();
         tree_ = std::make_shared<const ContourTree>(computeContourTree(volume, threads_));
         lastMs_["tree"] = msSince(start);
     }
-    return *tree_;
+    lastTree_ = tree_;
+    if (minPersistence > 0.0) {
+        if (!simplified_ || simplifiedBy_ != minPersistence) {
+            simplified_.reset();
+            ContourTree simplified = *tree_;
+            simplifyContourTree(simplified, minPersistence);
+            simplified_ = std::make_shared<const ContourTree>(std::move(simplified));
+            simplifiedBy_ = minPersistence;
+        }
+        lastTree_ = simplified_;
+    }
+    return *lastTree_;
 }
 
 // Each seed is followed to the new isovalue; in `all` it names the surface that
@@ -291,7 +306,7 @@ void ExtractionWorker::trackSeeds(const ExtractionRequest& request, const Volume
 // surface it stands in for at the request's isovalue is left out of the rest.
 void ExtractionWorker::trackFlexible(const ExtractionRequest& request, const Volume& volume, ExtractionResult& result) {
     if (request.flexible.empty() || request.method != Method::Tree || request.table != TableKind::Consistent) return;
-    const ContourTree& tree = treeOf(volume);
+    const ContourTree& tree = treeOf(volume, request.minPersistence);
     for (const FlexibleRequest& wanted : request.flexible) {
         if (cancelling()) throw Cancelled{};
         const std::size_t origin = followArc(tree, wanted.origin, result.iso);

@@ -75,6 +75,7 @@ struct ExtractionRequest {
     std::optional<double> iso;  // nullopt: the source's default
     TableKind table = TableKind::Consistent;
     ui::Method method = ui::Method::All;
+    double minPersistence = 0.0;            // method tree: the tree simplified by this persistence
     std::vector<SeedRequest> seeds;         // every tracked surface, in any method
     std::vector<FlexibleRequest> flexible;  // every surface with its own isovalue (method tree)
     bool onlyFlexible = false;              // re-track the flexible surfaces, nothing else
@@ -154,7 +155,7 @@ private:
     ExtractionResult work(const ExtractionRequest& request);
     std::shared_ptr<const LoadedVolume> volumeFor(const VolumeSource& source, double& loadMs);
     void extract(const ExtractionRequest& request, const LoadedVolume& volume, ExtractionResult& result);
-    const ContourTree& treeOf(const Volume& volume);
+    const ContourTree& treeOf(const Volume& volume, double minPersistence);
     void trackSeeds(const ExtractionRequest& request, const Volume& volume, ExtractionResult& result);
     void trackFlexible(const ExtractionRequest& request, const Volume& volume, ExtractionResult& result);
     bool cancelling() const { return cancel_.load(std::memory_order_relaxed); }
@@ -178,8 +179,11 @@ private:
 
     // Worker-thread only.
     std::shared_ptr<const LoadedVolume> cache_;
-    std::shared_ptr<const ContourTree> tree_;  // cache_'s contour tree, built on the first tree request
-    std::map<std::string, double> lastMs_;     // per source and method: how long extraction took last time
+    std::shared_ptr<const ContourTree> tree_;        // cache_'s contour tree, built on the first tree request
+    std::shared_ptr<const ContourTree> simplified_;  // tree_ simplified by simplifiedBy_ (> 0)
+    double simplifiedBy_ = 0.0;
+    std::shared_ptr<const ContourTree> lastTree_;  // the one treeOf returned last
+    std::map<std::string, double> lastMs_;         // per source and method: how long extraction took last time
 
     std::thread thread_;
 };

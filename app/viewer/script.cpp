@@ -49,6 +49,7 @@ const std::map<std::string, Syntax>& commands() {
         {"showall", {"", 0, {}}},
         {"delete", {"I", 0, {}}},
         {"surface-iso", {"IN", 0, {}}},
+        {"min-persistence", {"N", 0, {}}},
         {"move", {"INNN", 0, {}}},
         {"colour", {"INNN", 0, {}}},
         {"color", {"INNN", 0, {}}},

@@ -78,6 +78,7 @@ ui::PanelState Viewer::panelState() const {
     extraction.shownIso = shownIso();
     extraction.table = extraction_.table();
     extraction.method = extraction_.method();
+    extraction.minPersistence = extraction_.minPersistence();
     const WorkerProgress progress = extraction_.progress();
     extraction.busy = progress.busy;
     extraction.busyWhat = progress.what;
@@ -168,6 +169,7 @@ nlohmann::json Viewer::summary() const {
         {"extractions_cancelled", extraction_.cancelledCount()},
         {"table", tableKindName(extraction_.table())},
         {"method", ui::methodName(extraction_.method())},
+        {"min_persistence", extraction_.minPersistence()},
         {"surfaces", surfaces},
         {"cpu_bytes", cpuBytes()},
         {"cpu_bytes_detail",
