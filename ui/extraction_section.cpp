@@ -35,11 +35,12 @@ void progress(const ExtractionState& extraction, bool frozen) {
 void persistenceSlider(const PanelState& state, std::vector<Action>& actions) {
     double persistence = state.extraction.minPersistence;
     const double low = 0.0, high = std::max(state.data.rangeMax - state.data.rangeMin, 0.0);
-    if (ImGui::SliderScalar("min persistence", ImGuiDataType_Double, &persistence, &low, &high, "%.4g")) {
+    if (ImGui::SliderScalar("persistence", ImGuiDataType_Double, &persistence, &low, &high, "%.4g")) {
         actions.push_back(SetMinPersistence{persistence});
     }
     if (ImGui::IsItemHovered()) {
-        ImGui::SetTooltip("hide surfaces whose contour-tree branch spans less than this range of values (0: none)");
+        ImGui::SetTooltip(
+            "min persistence: hide surfaces whose contour-tree branch spans less than this range of values (0: none)");
     }
 }
 
