@@ -83,7 +83,10 @@ void ownIsoSlider(const SurfaceRow& row, const PanelState& state, std::vector<Ac
 
 void selectedDetails(const SurfaceRow& row, const PanelState& state, PanelScratch& scratch,
                      std::vector<Action>& actions) {
-    if (row.presence == SurfaceRow::Gone) {
+    if (row.presence == SurfaceRow::Gone && row.ownIso) {
+        ImGui::TextWrapped("surface %u: its contour-tree arc ends before its own isovalue %.5g; it comes back nearer",
+                           row.id, *row.ownIso);
+    } else if (row.presence == SurfaceRow::Gone) {
         ImGui::TextWrapped(
             "surface %u: no surface near its seed at isovalue %.5g; the seed is kept and the surface "
             "comes back where there is one again",

@@ -22,3 +22,10 @@ expect surfaces.3.id 3
 expect surfaces.3.colour '[1.0,0.0,1.0]'
 expect surfaces.5.id 5
 expect surfaces.5.visible false
+expect checkpoints.2.name flexible_gone
+expect checkpoints.2.surfaces_gone 1
+expect checkpoints.3.surfaces_gone 0
+expect surfaces.0.id 0
+expect surfaces.0.state shown
+expect surfaces.0.isovalue 0.5
+expect surfaces.1.isovalue 0.3
