@@ -14,7 +14,9 @@
 // core's extract() checks between its passes, the worker between seeds (each
 // seed's surface is tracked on all the worker's threads, as `extract --method
 // track` does). Finished results are uploaded by the frame loop on the main
-// thread (GL objects are created only there).
+// thread (GL objects are created only there). With the contour tree, a request
+// may ask only for the surfaces with an isovalue of their own (flexible
+// isosurfaces): the others are not extracted again.
 #include <array>
 #include <atomic>
 #include <chrono>
