@@ -313,6 +313,7 @@ void ExtractionWorker::trackFlexible(const ExtractionRequest& request, const Vol
         const auto displaced = std::remove_if(result.surfaces.begin(), result.surfaces.end(),
                                               [&](const Surface& s) { return s.stats.arc == origin; });
         result.surfaces.erase(displaced, result.surfaces.end());
+        if (!wanted.retrack) continue;
         FlexibleResult flexible;
         flexible.surface = wanted.surface;
         flexible.iso = wanted.iso;

@@ -69,6 +69,7 @@ struct FlexibleRequest {
     std::size_t arc = 0;     // its arc at its last isovalue
     std::size_t origin = 0;  // its arc when it got its own isovalue
     double iso = 0.0;
+    bool retrack = true;  // false: its mesh is at `iso` already; only the surface it stands in for is left out
 };
 
 struct ExtractionRequest {

@@ -27,7 +27,7 @@ std::vector<FlexibleRequest> Viewer::flexibleSurfaces() const {
     for (const auto& surface : scene_.surfaces()) {
         if (!surface->ownIso) continue;
         const OwnIso& own = *surface->ownIso;
-        flexible.push_back(FlexibleRequest{surface->id(), own.arc, own.origin, own.wanted});
+        flexible.push_back(FlexibleRequest{surface->id(), own.arc, own.origin, own.wanted, own.wanted != own.shown});
     }
     return flexible;
 }
