@@ -74,12 +74,20 @@ struct SetWireframe {
 struct SetBoundingBox {
     bool on = true;
 };
+struct SetMinPersistence {  // method tree: hide surfaces whose arc's persistence is below this
+    double persistence = 0.0;
+};
+struct SetSurfaceIso {  // method tree: surface `id` at an isovalue of its own
+    std::uint32_t id = 0;
+    double iso = 0.0;
+};
 struct FrameSelection {};
 struct FrameAll {};
 
-using Action = std::variant<LoadField, LoadFile, SetIso, SetTable, SetMethod, Growth, SetCellsPerFrame, SetGrowthBudget,
-                            SetColourByGrowth, Select, SetVisible, Isolate, ShowAll, Delete, Export, SetColour,
-                            SetOffset, SetExplode, SetWireframe, SetBoundingBox, FrameSelection, FrameAll>;
+using Action =
+    std::variant<LoadField, LoadFile, SetIso, SetTable, SetMethod, Growth, SetCellsPerFrame, SetGrowthBudget,
+                 SetColourByGrowth, Select, SetVisible, Isolate, ShowAll, Delete, Export, SetColour, SetOffset,
+                 SetExplode, SetWireframe, SetBoundingBox, SetMinPersistence, SetSurfaceIso, FrameSelection, FrameAll>;
 
 inline constexpr const char* kDefaultExportPattern = "surface_{id}.ply";
 

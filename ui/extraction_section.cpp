@@ -30,6 +30,20 @@ void progress(const ExtractionState& extraction, bool frozen) {
     }
 }
 
+// Method tree: noise hidden by persistence. The tree is simplified (leaf branches whose value range is below
+// the threshold pruned) and the surfaces extracted again from its remaining arcs.
+void persistenceSlider(const PanelState& state, std::vector<Action>& actions) {
+    double persistence = state.extraction.minPersistence;
+    const double low = 0.0, high = std::max(state.data.rangeMax - state.data.rangeMin, 0.0);
+    if (ImGui::SliderScalar("persistence", ImGuiDataType_Double, &persistence, &low, &high, "%.4g")) {
+        actions.push_back(SetMinPersistence{persistence});
+    }
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip(
+            "min persistence: hide surfaces whose contour-tree branch spans less than this range of values (0: none)");
+    }
+}
+
 }  // namespace
 
 void extractionSection(const PanelState& state, std::vector<Action>& actions) {
@@ -80,6 +94,7 @@ void extractionSection(const PanelState& state, std::vector<Action>& actions) {
     if (ImGui::IsItemHovered()) {
         ImGui::SetTooltip("every surface from its contour-tree arc's seed: no scan once the tree is built");
     }
+    if (extraction.method == Method::Tree) persistenceSlider(state, actions);
     progress(extraction, state.stats.deterministic);
     if (!extraction.error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));

@@ -42,12 +42,13 @@ struct ExtractionState {
     double shownIso = 0.0;  // of the surfaces on screen; trails `iso` by about one extraction while it is dragged
     Table table = Table::Consistent;
     Method method = Method::All;
-    bool busy = false;         // the worker is loading or extracting
-    std::string busyWhat;      // e.g. "extracting every surface"
-    double busySeconds = 0.0;  // elapsed
-    float fraction = -1.0f;    // estimated completion 0..1, or < 0 when unknown
-    double lastMs = 0.0;       // the last finished extraction (worker time)
-    std::string error;         // the last failure, shown until the next success
+    double minPersistence = 0.0;  // method tree: surfaces whose arc's persistence is below it are hidden
+    bool busy = false;            // the worker is loading or extracting
+    std::string busyWhat;         // e.g. "extracting every surface"
+    double busySeconds = 0.0;     // elapsed
+    float fraction = -1.0f;       // estimated completion 0..1, or < 0 when unknown
+    double lastMs = 0.0;          // the last finished extraction (worker time)
+    std::string error;            // the last failure, shown until the next success
 };
 
 struct GrowthState {
@@ -74,6 +75,10 @@ struct SurfaceRow {
     // arc's persistence, when the extraction measured them (method tree).
     std::optional<long> euler, borderLoops, genus;
     std::optional<double> persistence;
+    // Method tree: the surface is on a contour-tree arc, so it may have an isovalue of its
+    // own; `ownIso` is that of its mesh on screen, `ownIsoWanted` the one asked for.
+    bool hasArc = false;
+    std::optional<double> ownIso, ownIsoWanted;
     bool tracked = false;  // has a seed, kept across isovalues
     // A tracked surface may have no mesh at this isovalue: gone, or merged into another tracked surface.
     enum Presence { Shown, Gone, Merged } presence = Shown;

@@ -67,8 +67,26 @@ void surfaceRow(const SurfaceRow& row, bool selected, const PanelScratch& scratc
     ImGui::PopID();
 }
 
-void selectedDetails(const SurfaceRow& row, PanelScratch& scratch, std::vector<Action>& actions) {
-    if (row.presence == SurfaceRow::Gone) {
+// Method tree: the surface's own isovalue, dragged across the data's range; only it is tracked again.
+void ownIsoSlider(const SurfaceRow& row, const PanelState& state, std::vector<Action>& actions) {
+    if (!row.hasArc) return;
+    double iso = row.ownIsoWanted.value_or(state.extraction.shownIso);
+    const double low = state.data.rangeMin, high = state.data.rangeMax;
+    if (ImGui::SliderScalar("own isovalue", ImGuiDataType_Double, &iso, &low, &high, "%.5g")) {
+        actions.push_back(SetSurfaceIso{row.id, iso});
+    }
+    if (row.ownIso) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("showing %.5g", *row.ownIso);
+    }
+}
+
+void selectedDetails(const SurfaceRow& row, const PanelState& state, PanelScratch& scratch,
+                     std::vector<Action>& actions) {
+    if (row.presence == SurfaceRow::Gone && row.ownIso) {
+        ImGui::TextWrapped("surface %u: its contour-tree arc ends before its own isovalue %.5g; it comes back nearer",
+                           row.id, *row.ownIso);
+    } else if (row.presence == SurfaceRow::Gone) {
         ImGui::TextWrapped(
             "surface %u: no surface near its seed at isovalue %.5g; the seed is kept and the surface "
             "comes back where there is one again",
@@ -88,6 +106,7 @@ void selectedDetails(const SurfaceRow& row, PanelScratch& scratch, std::vector<A
                     *row.borderLoops == 1 ? "" : "s");
     }
     if (row.persistence) ImGui::Text("contour-tree arc persistence %.5g", *row.persistence);
+    ownIsoSlider(row, state, actions);
     std::array<float, 3> offset = row.offset;
     if (ImGui::DragFloat3("offset", offset.data(), 0.25f)) actions.push_back(SetOffset{row.id, offset});
     if (ImGui::Button("Isolate")) actions.push_back(Isolate{row.id});
@@ -151,7 +170,7 @@ void surfacesSection(const PanelState& state, PanelScratch& scratch, std::vector
         ImGui::EndTable();
     }
     for (const SurfaceRow& row : state.surfaces) {
-        if (state.selected == row.id) selectedDetails(row, scratch, actions);
+        if (state.selected == row.id) selectedDetails(row, state, scratch, actions);
     }
     if (!state.selected) ImGui::TextDisabled("click a surface (here or in the view) to select it");
 }

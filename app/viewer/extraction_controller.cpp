@@ -7,16 +7,20 @@ void ExtractionController::setSource(VolumeSource source) {
     iso_.reset();
 }
 
-void ExtractionController::submit(std::vector<SeedRequest> seeds) {
+void ExtractionController::submit(std::vector<SeedRequest> seeds, std::vector<FlexibleRequest> flexible,
+                                  bool onlyFlexible) {
     ExtractionRequest request;
     request.generation = ++generation_;
     request.source = source_;
     request.iso = iso_;
     request.table = table_;
     request.method = method_;
+    request.minPersistence = minPersistence_;
     if (!lastRequest_ || supersedes(request, *lastRequest_)) epoch_ = request.generation;
     lastRequest_ = request;
     request.seeds = std::move(seeds);
+    request.flexible = std::move(flexible);
+    request.onlyFlexible = onlyFlexible;
     worker_.submit(std::move(request));
 }
 

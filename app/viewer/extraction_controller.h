@@ -29,9 +29,12 @@ public:
     void setTable(TableKind table) { table_ = table; }
     ui::Method method() const { return method_; }
     void setMethod(ui::Method method) { method_ = method; }
+    double minPersistence() const { return minPersistence_; }  // method tree: 0, or the simplification's
+    void setMinPersistence(double persistence) { minPersistence_ = persistence; }
 
-    // Sends what is wanted, with the tracked surfaces' seeds.
-    void submit(std::vector<SeedRequest> seeds);
+    // Sends what is wanted, with the tracked surfaces' seeds and the flexible
+    // surfaces' own isovalues; `onlyFlexible`: only those surfaces changed.
+    void submit(std::vector<SeedRequest> seeds, std::vector<FlexibleRequest> flexible = {}, bool onlyFlexible = false);
     // The newest finished result that is not void, if one is waiting.
     std::optional<ExtractionResult> take();
 
@@ -51,6 +54,7 @@ private:
     std::optional<double> iso_;
     TableKind table_ = TableKind::Consistent;
     ui::Method method_ = ui::Method::All;
+    double minPersistence_ = 0.0;
 
     std::uint64_t generation_ = 0;
     std::uint64_t epoch_ = 0;  // results of requests before this one are void

@@ -91,6 +91,8 @@ void ExtractionWorker::submit(ExtractionRequest request) {
                           !finished_->volume || finished_->volume->source != request.source)) {
             finished_.reset();
         }
+        // A flexible surface's request must not drop a waiting request for the whole scene.
+        if (request.onlyFlexible && pending_ && !pending_->onlyFlexible) request.onlyFlexible = false;
         pending_ = std::move(request);
     }
     wake_.notify_all();
@@ -174,6 +176,7 @@ ExtractionResult ExtractionWorker::work(const ExtractionRequest& request) {
     result.generation = request.generation;
     result.table = request.table;
     result.method = request.method;
+    result.onlyFlexible = request.onlyFlexible;
     try {
         result.volume = volumeFor(request.source, result.loadMs);
         if (cancelling()) throw Cancelled{};
@@ -202,6 +205,8 @@ std::shared_ptr<const LoadedVolume> ExtractionWorker::volumeFor(const VolumeSour
     const auto start = Clock::now();
     cache_.reset();  // the old volume goes before the new one is read
     tree_.reset();
+    simplified_.reset();
+    lastTree_.reset();
     cache_ = loadForView(source);
     loadMs = msSince(start);
     return cache_;
@@ -213,6 +218,11 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
     setPhase(methodPhase(request.method), known != lastMs_.end() ? known->second : 0.0);
     const Volume& volume = loaded.volume;
     const auto start = Clock::now();
+    if (request.onlyFlexible) {
+        trackFlexible(request, volume, result);
+        result.extractMs = msSince(start);
+        return;
+    }
     if (request.method != Method::Track) {  // track: only the seeds' surfaces, below
         ExtractRequest exhaustive;
         exhaustive.method = request.method;
@@ -222,12 +232,14 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
         exhaustive.measure = true;
         exhaustive.cancel = &cancel_;
         if (request.method == Method::Tree && request.table == TableKind::Consistent) {
-            exhaustive.tree = &treeOf(volume);
+            exhaustive.tree = &treeOf(volume, request.minPersistence);
+            result.tree = lastTree_;
             setPhase(methodPhase(request.method), known != lastMs_.end() ? known->second : 0.0);
         }
         result.surfaces = isotrack::extract(volume, exhaustive);
     }
     if (cancelling()) throw Cancelled{};
+    trackFlexible(request, volume, result);
     trackSeeds(request, volume, result);
     result.footprints.reserve(result.surfaces.size());
     for (const Surface& surface : result.surfaces) result.footprints.push_back(footprintOf(surface.mesh));
@@ -235,15 +247,28 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
     lastMs_[key] = result.extractMs;
 }
 
-// The volume's contour tree, built once (the phase says so while it is built).
-const ContourTree& ExtractionWorker::treeOf(const Volume& volume) {
+// The volume's contour tree, built once (the phase says so while it is built),
+// and its copy simplified by the last persistence asked for. Arcs keep their
+// numbers in the copy (pruned ones are only marked), so surfaces match across both.
+const ContourTree& ExtractionWorker::treeOf(const Volume& volume, double minPersistence) {
     if (!tree_) {
         setPhase("building the contour tree", lastMs_.count("tree") ? lastMs_["tree"] : 0.0);
         const auto start = Clock::now();
-        tree_ = std::make_unique<const ContourTree>(computeContourTree(volume, threads_));
+        tree_ = std::make_shared<const ContourTree>(computeContourTree(volume, threads_));
         lastMs_["tree"] = msSince(start);
     }
-    return *tree_;
+    lastTree_ = tree_;
+    if (minPersistence > 0.0) {
+        if (!simplified_ || simplifiedBy_ != minPersistence) {
+            simplified_.reset();
+            ContourTree simplified = *tree_;
+            simplifyContourTree(simplified, minPersistence);
+            simplified_ = std::make_shared<const ContourTree>(std::move(simplified));
+            simplifiedBy_ = minPersistence;
+        }
+        lastTree_ = simplified_;
+    }
+    return *lastTree_;
 }
 
 // Each seed is followed to the new isovalue; in `all` it names the surface that
@@ -274,6 +299,36 @@ void ExtractionWorker::trackSeeds(const ExtractionRequest& request, const Volume
         result.seeds.push_back(seed);
     }
     seedsTotal_ = 0;
+}
+
+// Flexible surfaces (Carr & Snoeyink's flexible isosurfaces): each is followed
+// along the tree to its own isovalue and tracked from its arc's seed; the
+// surface it stands in for at the request's isovalue is left out of the rest.
+void ExtractionWorker::trackFlexible(const ExtractionRequest& request, const Volume& volume, ExtractionResult& result) {
+    if (request.flexible.empty() || request.method != Method::Tree || request.table != TableKind::Consistent) return;
+    const ContourTree& tree = treeOf(volume, request.minPersistence);
+    for (const FlexibleRequest& wanted : request.flexible) {
+        if (cancelling()) throw Cancelled{};
+        const std::size_t origin = followArc(tree, wanted.origin, result.iso);
+        const auto displaced = std::remove_if(result.surfaces.begin(), result.surfaces.end(),
+                                              [&](const Surface& s) { return s.stats.arc == origin; });
+        result.surfaces.erase(displaced, result.surfaces.end());
+        if (!wanted.retrack) continue;
+        FlexibleResult flexible;
+        flexible.surface = wanted.surface;
+        flexible.iso = wanted.iso;
+        const std::size_t arc = followArc(tree, wanted.arc, wanted.iso);
+        if (arc < tree.arcs.size()) {
+            const ArcSeed seed = arcSeeds(tree, volume, wanted.iso, {arc}).front();
+            Surface surface = trackSurface(volume, wanted.iso, seed.edge, TableKind::Consistent, threads_);
+            surface.stats.arc = arc;
+            surface.stats.persistence = tree.persistence(arc);
+            measureTopology(surface);
+            flexible.footprint = footprintOf(surface.mesh);
+            flexible.mesh = std::move(surface);
+        }
+        result.flexible.push_back(std::move(flexible));
+    }
 }
 
 }  // namespace isotrack::viewer

@@ -14,7 +14,9 @@
 // core's extract() checks between its passes, the worker between seeds (each
 // seed's surface is tracked on all the worker's threads, as `extract --method
 // track` does). Finished results are uploaded by the frame loop on the main
-// thread (GL objects are created only there).
+// thread (GL objects are created only there). With the contour tree, a request
+// may ask only for the surfaces with an isovalue of their own (flexible
+// isosurfaces): the others are not extracted again.
 #include <array>
 #include <atomic>
 #include <chrono>
@@ -59,13 +61,27 @@ struct SeedRequest {
     Vec3d point{0, 0, 0};
 };
 
+// A surface with its own isovalue (method tree): shown at `iso` on the arc the
+// contour tree leads `arc` to (followArc); at the request's isovalue it stands
+// in for the surface on the arc `origin` leads to, which is left out.
+struct FlexibleRequest {
+    std::uint32_t surface = 0;
+    std::size_t arc = 0;     // its arc at its last isovalue
+    std::size_t origin = 0;  // its arc when it got its own isovalue
+    double iso = 0.0;
+    bool retrack = true;  // false: its mesh is at `iso` already; only the surface it stands in for is left out
+};
+
 struct ExtractionRequest {
     std::uint64_t generation = 0;
     VolumeSource source;
     std::optional<double> iso;  // nullopt: the source's default
     TableKind table = TableKind::Consistent;
     ui::Method method = ui::Method::All;
-    std::vector<SeedRequest> seeds;  // every tracked surface, in any method
+    double minPersistence = 0.0;            // method tree: the tree simplified by this persistence
+    std::vector<SeedRequest> seeds;         // every tracked surface, in any method
+    std::vector<FlexibleRequest> flexible;  // every surface with its own isovalue (method tree)
+    bool onlyFlexible = false;              // re-track the flexible surfaces, nothing else
 };
 
 // Where a seed went at the result's isovalue.
@@ -73,6 +89,14 @@ struct SeedResult {
     std::uint32_t surface = 0;         // the viewer's id, as requested
     std::optional<FollowedSeed> seed;  // nullopt: no surface near it at this isovalue
     int index = -1;                    // into ExtractionResult::surfaces; shared when seeds' surfaces merged
+};
+
+// A flexible surface at its own isovalue; no surface when it vanished on the way.
+struct FlexibleResult {
+    std::uint32_t surface = 0;
+    double iso = 0.0;
+    std::optional<Surface> mesh;
+    SurfaceFootprint footprint;
 };
 
 struct ExtractionResult {
@@ -86,6 +110,9 @@ struct ExtractionResult {
     std::vector<Surface> surfaces;
     std::vector<SurfaceFootprint> footprints;  // one per surface
     std::vector<SeedResult> seeds;             // one per requested seed
+    std::vector<FlexibleResult> flexible;      // one per flexible surface requested
+    std::shared_ptr<const ContourTree> tree;   // method tree: the volume's tree, to match surfaces by arc
+    bool onlyFlexible = false;                 // the other surfaces were not extracted again
     double loadMs = 0.0, extractMs = 0.0;
     std::chrono::steady_clock::time_point started{}, finished{};  // on the worker
     std::string error;  // set when loading or extracting failed; then only `generation` is meaningful
@@ -131,8 +158,9 @@ private:
     ExtractionResult work(const ExtractionRequest& request);
     std::shared_ptr<const LoadedVolume> volumeFor(const VolumeSource& source, double& loadMs);
     void extract(const ExtractionRequest& request, const LoadedVolume& volume, ExtractionResult& result);
-    const ContourTree& treeOf(const Volume& volume);
+    const ContourTree& treeOf(const Volume& volume, double minPersistence);
     void trackSeeds(const ExtractionRequest& request, const Volume& volume, ExtractionResult& result);
+    void trackFlexible(const ExtractionRequest& request, const Volume& volume, ExtractionResult& result);
     bool cancelling() const { return cancel_.load(std::memory_order_relaxed); }
     void setPhase(const std::string& what, double expectedMs);
 
@@ -154,8 +182,11 @@ private:
 
     // Worker-thread only.
     std::shared_ptr<const LoadedVolume> cache_;
-    std::unique_ptr<const ContourTree> tree_;  // cache_'s contour tree, built on the first tree request
-    std::map<std::string, double> lastMs_;     // per source and method: how long extraction took last time
+    std::shared_ptr<const ContourTree> tree_;        // cache_'s contour tree, built on the first tree request
+    std::shared_ptr<const ContourTree> simplified_;  // tree_ simplified by simplifiedBy_ (> 0)
+    double simplifiedBy_ = 0.0;
+    std::shared_ptr<const ContourTree> lastTree_;  // the one treeOf returned last
+    std::map<std::string, double> lastMs_;         // per source and method: how long extraction took last time
 
     std::thread thread_;
 };

@@ -48,6 +48,8 @@ const std::map<std::string, Syntax>& commands() {
         {"isolate", {"I", 0, {}}},
         {"showall", {"", 0, {}}},
         {"delete", {"I", 0, {}}},
+        {"surface-iso", {"IN", 0, {}}},
+        {"min-persistence", {"N", 0, {}}},
         {"move", {"INNN", 0, {}}},
         {"colour", {"INNN", 0, {}}},
         {"color", {"INNN", 0, {}}},

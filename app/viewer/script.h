@@ -22,6 +22,8 @@
 //   checkpoint NAME           note CPU, GPU and resident bytes for the --json summary
 //   camera YAW,PITCH,DISTANCE,TX,TY,TZ[,FOV]    frame [all|selection]
 //   select I|none  hide I  show I  isolate I  showall  delete I
+//   min-persistence P         method tree: hide surfaces whose arc's persistence is below P
+//   surface-iso I V           method tree: surface I at its own isovalue V (only it is tracked again)
 //   move I DX DY DZ  colour I R G B  export I PATH  explode F
 //   growth play|pause|step|restart  cells N  budget MS  growth-colour on|off
 //   wireframe on|off  box on|off

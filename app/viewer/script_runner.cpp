@@ -167,6 +167,10 @@ bool ScriptRunner::runCommand(const ScriptCommand& c) {
         host_.apply(ui::ShowAll{});
     } else if (name == "delete") {
         host_.apply(ui::Delete{surfaceAt(c, 0)});
+    } else if (name == "min-persistence") {
+        host_.apply(ui::SetMinPersistence{c.numbers[0]});
+    } else if (name == "surface-iso") {
+        host_.apply(ui::SetSurfaceIso{surfaceAt(c, 0), c.numbers[1]});
     } else if (name == "move") {
         host_.apply(ui::SetOffset{surfaceAt(c, 0), {float(c.numbers[1]), float(c.numbers[2]), float(c.numbers[3])}});
     } else if (name == "colour" || name == "color") {

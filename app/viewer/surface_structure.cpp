@@ -155,6 +155,11 @@ void SurfaceStructure::buildUI(ui::PanelState& state) const {
     row.borderLoops = stats_.borderLoops;
     row.genus = stats_.genus;
     row.persistence = stats_.persistence;
+    row.hasArc = (stats_.arc.has_value() || ownIso.has_value()) && !tracked();
+    if (ownIso) {
+        row.ownIso = ownIso->shown;
+        row.ownIsoWanted = ownIso->wanted;
+    }
     row.tracked = tracked();
     if (presence_ == Presence::Gone) {
         row.presence = ui::SurfaceRow::Gone;

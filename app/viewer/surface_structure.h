@@ -42,6 +42,15 @@ struct GrowthStep {
 // style when the isovalue moves back or the surfaces split again.
 enum class Presence { Shown, Gone, Merged };
 
+// Method tree: a surface with an isovalue of its own (a flexible isosurface).
+// `wanted` is the one asked for, `shown` that of the mesh on screen; `origin`
+// is its contour-tree arc when it got its own isovalue, the arc it stands in
+// for at the common isovalue; `arc` the arc of its last mesh (kept while it is gone).
+struct OwnIso {
+    double wanted = 0.0, shown = 0.0;
+    std::size_t origin = 0, arc = 0;
+};
+
 class SurfaceStructure {
 public:
     // A finished surface, uploaded in one go. Its GPU mesh lives in `arena`,
@@ -92,6 +101,9 @@ public:
     const render::SurfaceStyle& style() const { return style_; }
     // The user's move; the exploded view adds explodeOffset on top.
     glm::vec3 userOffset{0.0f};
+    std::optional<OwnIso> ownIso;  // nullopt: at the common isovalue
+    // Kept in its place by its seed or its own isovalue, not matched by footprint.
+    bool keepsPlace() const { return tracked() || ownIso.has_value(); }
     void setExplode(float factor, const glm::vec3& volumeCentre);
     glm::vec3 offset() const { return style_.offset; }
     glm::vec3 centre() const;  // of its bounds, unmoved

@@ -81,14 +81,18 @@ private:
     double currentIso() const;  // the isovalue asked for (the slider)
     double shownIso() const;    // the isovalue of the surfaces on screen
     std::vector<SeedRequest> trackedSeeds() const;
+    std::vector<FlexibleRequest> flexibleSurfaces() const;
+    void setSurfaceIso(std::uint32_t id, double iso);
 
     // viewer_results.cpp: results applied so that surfaces keep who they are
     void takeResult();
     void applyResult(ExtractionResult result);
     void placeTracked(ExtractionResult& result, std::vector<std::unique_ptr<SurfaceStructure>>& old,
                       std::vector<bool>& claimed);
+    void placeFlexible(ExtractionResult& result, std::vector<std::unique_ptr<SurfaceStructure>>& surfaces);
     void placeUntracked(ExtractionResult& result, std::vector<std::unique_ptr<SurfaceStructure>>& old,
-                        std::vector<bool>& claimed, std::vector<std::unique_ptr<SurfaceStructure>>& next);
+                        std::vector<bool>& claimed, std::vector<std::unique_ptr<SurfaceStructure>>& next,
+                        std::optional<double> previousIso);
 
     // viewer_actions.cpp
     void apply(const ui::Action& action) override;

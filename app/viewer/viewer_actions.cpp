@@ -75,6 +75,11 @@ void Viewer::apply(const ui::Action& action) {
                    },
                    [&](const ui::Delete& a) { scene_.remove(a.id); },
                    [&](const ui::Export& a) { exportSurface(a.id, a.path); },
+                   [&](const ui::SetSurfaceIso& a) { setSurfaceIso(a.id, a.iso); },
+                   [&](const ui::SetMinPersistence& a) {
+                       extraction_.setMinPersistence(std::max(a.persistence, 0.0));
+                       submit();
+                   },
                    [&](const ui::SetColour& a) {
                        if (SurfaceStructure* s = scene_.find(a.id)) s->style().colour = toVec3(a.colour);
                    },

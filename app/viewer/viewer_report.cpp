@@ -78,6 +78,7 @@ ui::PanelState Viewer::panelState() const {
     extraction.shownIso = shownIso();
     extraction.table = extraction_.table();
     extraction.method = extraction_.method();
+    extraction.minPersistence = extraction_.minPersistence();
     const WorkerProgress progress = extraction_.progress();
     extraction.busy = progress.busy;
     extraction.busyWhat = progress.what;
@@ -152,7 +153,10 @@ nlohmann::json Viewer::summary() const {
                             {"visible", surface->style().visible},
                             {"colour", {colour.r, colour.g, colour.b}},
                             {"offset", {offset.x, offset.y, offset.z}},
-                            {"selected", scene_.selected == surface->id()}});
+                            {"selected", scene_.selected == surface->id()},
+                            {"isovalue", surface->ownIso ? surface->ownIso->shown : shownIso()},
+                            {"own_isovalue", surface->ownIso.has_value()}});
+        if (surface->stats().arc) surfaces.back()["arc"] = *surface->stats().arc;
         if (surface->presence() == Presence::Merged) surfaces.back()["merged_into"] = surface->mergedInto();
         if (const auto& seed = surface->seedPoint()) surfaces.back()["seed"] = *seed;
     }
@@ -165,6 +169,7 @@ nlohmann::json Viewer::summary() const {
         {"extractions_cancelled", extraction_.cancelledCount()},
         {"table", tableKindName(extraction_.table())},
         {"method", ui::methodName(extraction_.method())},
+        {"min_persistence", extraction_.minPersistence()},
         {"surfaces", surfaces},
         {"cpu_bytes", cpuBytes()},
         {"cpu_bytes_detail",

@@ -6,7 +6,10 @@
 // surface in the list to claim a result surface shows it, a later one whose
 // seed lies on the same surface is Merged into it, and one whose seed found no
 // surface is Gone; either keeps its seed and style for when the isovalue comes
-// back. The other surfaces are matched by footprint (isotrack/follow.h): each
+// back. Surfaces with an isovalue of their own (method tree) keep their place
+// and get the mesh the worker tracked along their arc, or are Gone when their
+// arc ended on the way. With the contour tree, the other surfaces are matched
+// by arc (viewer/arc_match.h); otherwise by footprint (isotrack/follow.h): each
 // new surface continues the old one it shares the most 4x4x4-cell blocks with.
 // The largest new surface continuing an old one takes its place in the list,
 // its id (and so the selection), colour, visibility and offset; further parts
@@ -18,6 +21,7 @@
 #include <map>
 
 #include "render/palette.h"
+#include "viewer/arc_match.h"
 #include "viewer/viewer.h"
 
 namespace isotrack::viewer {
@@ -68,7 +72,15 @@ void Viewer::applyResult(ExtractionResult result) {
         renderer_->arena().trim();  // pages sized for the old volume's surfaces go
         nextColour_ = 0;
     }
+    if (result.onlyFlexible) {  // the other surfaces, and the common isovalue shown, are as they were
+        placeFlexible(result, scene_.surfaces());
+        return;
+    }
+    const std::optional<double> previousIso = extraction_.shownIso();  // of the surfaces in the scene
     extraction_.applied(result);
+    if (result.method != ui::Method::Tree) {  // own isovalues live on the contour tree's arcs
+        for (auto& surface : scene_.surfaces()) surface->ownIso.reset();
+    }
 
     // Room for the whole result in one page before its surfaces arrive one by
     // one: they then draw in one call, and no page is made halfway.
@@ -85,7 +97,8 @@ void Viewer::applyResult(ExtractionResult result) {
     Structures next;
     next.reserve(old.size() + result.surfaces.size());
     placeTracked(result, old, claimed);
-    placeUntracked(result, old, claimed, next);
+    placeFlexible(result, old);
+    placeUntracked(result, old, claimed, next, previousIso);
     for (auto& surface : next) scene_.add(std::move(surface));
     if (scene_.selected && !scene_.find(*scene_.selected)) scene_.selected.reset();
 }
@@ -117,12 +130,30 @@ void Viewer::placeTracked(ExtractionResult& result, Structures& old, std::vector
     }
 }
 
+// Surfaces with their own isovalue get their mesh at it, or are gone when their arc ended on the way.
+void Viewer::placeFlexible(ExtractionResult& result, Structures& surfaces) {
+    for (FlexibleResult& flexible : result.flexible) {
+        const auto found = std::find_if(surfaces.begin(), surfaces.end(),
+                                        [&](const auto& s) { return s && s->id() == flexible.surface; });
+        if (found == surfaces.end() || !(*found)->ownIso) continue;  // deleted, or back at the common isovalue
+        SurfaceStructure& surface = **found;
+        surface.ownIso->shown = flexible.iso;
+        if (flexible.mesh) {
+            surface.ownIso->arc = flexible.mesh->stats.arc.value_or(surface.ownIso->arc);
+            surface.replaceSurface(std::move(*flexible.mesh), std::move(flexible.footprint));
+        } else {
+            surface.setAbsent(Presence::Gone, flexible.iso);
+        }
+    }
+}
+
 // The result's other surfaces continue the untracked ones by footprint; `next` receives the whole list.
-void Viewer::placeUntracked(ExtractionResult& result, Structures& old, std::vector<bool>& claimed, Structures& next) {
+void Viewer::placeUntracked(ExtractionResult& result, Structures& old, std::vector<bool>& claimed, Structures& next,
+                            std::optional<double> previousIso) {
     std::vector<const SurfaceFootprint*> previous, fresh;
     std::vector<std::size_t> previousSlot, freshIndex;
     for (std::size_t i = 0; i < old.size(); ++i) {
-        if (old[i]->tracked()) continue;
+        if (old[i]->keepsPlace()) continue;
         previous.push_back(&old[i]->footprint());
         previousSlot.push_back(i);
     }
@@ -131,7 +162,14 @@ void Viewer::placeUntracked(ExtractionResult& result, Structures& old, std::vect
         fresh.push_back(&result.footprints[j]);
         freshIndex.push_back(j);
     }
-    const std::vector<int> match = matchSurfaces(previous, fresh);
+    std::optional<std::vector<int>> byArc;  // method tree: exact, by the contour tree's arcs (arc_match.h)
+    if (result.tree && previousIso && result.method == ui::Method::Tree) {
+        std::vector<std::optional<std::size_t>> oldArcs, newArcs;
+        for (std::size_t i : previousSlot) oldArcs.push_back(old[i]->stats().arc);
+        for (std::size_t j : freshIndex) newArcs.push_back(result.surfaces[j].stats.arc);
+        byArc = matchByArc(*result.tree, *previousIso, oldArcs, newArcs);
+    }
+    const std::vector<int> match = byArc ? *byArc : matchSurfaces(previous, fresh);
     // The parts continuing each old surface, largest first (result order is largest first in `all`).
     std::vector<std::vector<std::size_t>> parts(previous.size());
     std::vector<std::size_t> unmatched;
@@ -149,7 +187,7 @@ void Viewer::placeUntracked(ExtractionResult& result, Structures& old, std::vect
     std::size_t slot = 0;  // index into previous
     for (std::size_t i = 0; i < old.size(); ++i) {
         std::unique_ptr<SurfaceStructure>& surface = old[i];
-        if (surface->tracked()) {
+        if (surface->keepsPlace()) {
             next.push_back(std::move(surface));
             continue;
         }

@@ -22,8 +22,36 @@ std::vector<SeedRequest> Viewer::trackedSeeds() const {
     return seeds;
 }
 
+std::vector<FlexibleRequest> Viewer::flexibleSurfaces() const {
+    std::vector<FlexibleRequest> flexible;
+    for (const auto& surface : scene_.surfaces()) {
+        if (!surface->ownIso) continue;
+        const OwnIso& own = *surface->ownIso;
+        flexible.push_back(FlexibleRequest{surface->id(), own.arc, own.origin, own.wanted, own.wanted != own.shown});
+    }
+    return flexible;
+}
+
 void Viewer::submit() {
-    extraction_.submit(trackedSeeds());
+    extraction_.submit(trackedSeeds(), flexibleSurfaces());
+    if (script_) script_->noteSubmitted();
+}
+
+// Flexible isosurfaces: the surface gets an isovalue of its own and only it is
+// tracked again, along its contour-tree arc; the others keep theirs.
+void Viewer::setSurfaceIso(std::uint32_t id, double iso) {
+    SurfaceStructure* surface = scene_.find(id);
+    if (!surface) return;
+    if (extraction_.method() != ui::Method::Tree || (!surface->stats().arc && !surface->ownIso) || surface->tracked()) {
+        const std::string message = "surface " + std::to_string(id) +
+                                    " is on no contour-tree arc: an isovalue of its own needs the method tree";
+        if (script_) throw InputError(message);
+        status(message);
+        return;
+    }
+    if (!surface->ownIso) surface->ownIso = OwnIso{iso, shownIso(), *surface->stats().arc, *surface->stats().arc};
+    surface->ownIso->wanted = iso;
+    extraction_.submit(trackedSeeds(), flexibleSurfaces(), true);
     if (script_) script_->noteSubmitted();
 }
 

@@ -48,6 +48,16 @@ void Viewer::checkpoint(const std::string& name, int line) {
     nlohmann::json mark = memoryJson();
     mark["name"] = name;
     mark["line"] = line;
+    nlohmann::json triangles = nlohmann::json::object();  // by surface id, to tell which surfaces changed
+    for (const auto& surface : scene_.surfaces()) {
+        triangles[std::to_string(surface->id())] = surface->mesh().triangleCount();
+    }
+    mark["surface_triangles"] = triangles;
+    nlohmann::json arcs = nlohmann::json::object();  // method tree: each surface's contour-tree arc, by id
+    for (const auto& surface : scene_.surfaces()) {
+        if (surface->stats().arc) arcs[std::to_string(surface->id())] = *surface->stats().arc;
+    }
+    mark["surface_arcs"] = arcs;
     checkpoints_.push_back(mark);
 }
 

@@ -82,3 +82,30 @@ TEST_CASE("panel text helpers", "[viewer][ui]") {
     CHECK(ui::formatCount(1234567) == "1,234,567");
     CHECK(std::string(ui::methodName(ui::Method::Exhaustive)) == "mc");
 }
+
+TEST_CASE("with the contour tree the panel adds the persistence and own isovalue sliders", "[viewer][ui]") {
+    const HeadlessImGui imgui;
+    ui::Panel panel;
+    std::vector<ui::Action> actions;
+    const auto vertices = [&](const ui::PanelState& state) {
+        int count = 0;
+        for (int frame = 0; frame < 3; ++frame) {
+            ImGui::NewFrame();
+            panel.build(state, actions);
+            ImGui::Render();
+            count = ImGui::GetDrawData()->TotalVtxCount;
+        }
+        return count;
+    };
+    ImGui::GetIO().DisplaySize = ImVec2(960.0f, 4000.0f);  // tall enough that nothing of the panel is clipped
+    ui::PanelState plain = busyState();
+    plain.displayHeight = 4000;
+    plain.extraction.method = ui::Method::Tree;
+    ui::PanelState tree = plain;
+    tree.surfaces[7].hasArc = true;  // the selected surface, at its own isovalue
+    tree.surfaces[7].ownIso = 0.5;
+    tree.surfaces[7].ownIsoWanted = 0.5;
+    plain.extraction.method = ui::Method::All;
+    CHECK(vertices(tree) > vertices(plain));
+    CHECK(actions.empty());
+}

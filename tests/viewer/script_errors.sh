@@ -44,6 +44,9 @@ expect_error bad_field "bad_field.isotrack:1:" "$isotrack" --script bad_field.is
 # Found while running, in the window: there is no surface 3 in an empty scene.
 script no_surface "field sphere:16" "method track" "wait" "hide 3" "quit"
 expect_error no_surface "no_surface.isotrack:4: hide: there is no surface 3 (0 surfaces)" "$isotrack" --script no_surface.isotrack
+# An isovalue of its own needs the contour tree: with `all` the surface is on no arc.
+script not_tree "field sphere:16" "method all" "wait" "surface-iso 0 0.5" "quit"
+expect_error not_tree "not_tree.isotrack:4: surface 0 is on no contour-tree arc" "$isotrack" --script not_tree.isotrack
 expect_error no_script "no/such.isotrack: cannot read the script" "$isotrack" --script no/such.isotrack
 expect_error no_volume "--volume no/such.nrrd: cannot open the file" "$isotrack" --volume no/such.nrrd
 expect_error no_display "xvfb-run" env -u DISPLAY -u WAYLAND_DISPLAY "$isotrack"

@@ -87,13 +87,14 @@ TEST_CASE("commands that need no wait all run in one frame, as actions and host 
         "iso 0.25\ntable classic\nmethod track\nselect 1\nselect none\nhide 0\nshow 1\nisolate 1\nshowall\n"
         "delete 0\nmove 1 1 -2 3.5\ncolour 0 1 0.5 0\nexplode 0.5\ngrowth step\ncells 100\nbudget 8\n"
         "growth-colour on\nwireframe on\nbox off\ncamera -60,22,100,1,2,3\nframe selection\nframe\n"
-        "profile trace.json\ncheckpoint warm\nexport 1 out.ply\n");
+        "profile trace.json\ncheckpoint warm\nexport 1 out.ply\nsurface-iso 1 0.6\n"
+        "min-persistence 0.125\n");
     s.host.ids = {10, 11};
     s.frame();
     CHECK(s.runner.finished());
     CHECK_FALSE(s.runner.failed());
     const std::vector<ui::Action>& a = s.host.actions;
-    REQUIRE(a.size() == 19);
+    REQUIRE(a.size() == 21);
     CHECK(std::get<ui::SetIso>(a[0]).iso == 0.25);
     CHECK(std::get<ui::SetTable>(a[1]).table == ui::Table::Classic);
     CHECK(std::get<ui::SetMethod>(a[2]).method == ui::Method::Track);
@@ -114,6 +115,9 @@ TEST_CASE("commands that need no wait all run in one frame, as actions and host 
     CHECK(std::get<ui::SetColourByGrowth>(a[16]).on);
     CHECK(std::get<ui::SetWireframe>(a[17]).on);
     CHECK_FALSE(std::get<ui::SetBoundingBox>(a[18]).on);
+    CHECK(std::get<ui::SetSurfaceIso>(a[19]).id == 11);  // surface index 1, its own isovalue
+    CHECK(std::get<ui::SetSurfaceIso>(a[19]).iso == 0.6);
+    CHECK(std::get<ui::SetMinPersistence>(a[20]).persistence == 0.125);
     CHECK(s.host.calls == std::vector<std::string>{"camera -60,22,100,1,2,3", "frame selection", "frame all",
                                                    "profile trace.json", "checkpoint warm line 24",
                                                    "export 11 out.ply"});

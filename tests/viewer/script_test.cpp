@@ -66,6 +66,15 @@ TEST_CASE("a script of every command parses, skipping comments and blank lines",
     CHECK(script.commands.back().name == "quit");
 }
 
+TEST_CASE("surface-iso takes a surface index and an isovalue", "[viewer][script]") {
+    const Script script = parseScriptText("method tree\nsurface-iso 3 0.45\n", "s.isotrack");
+    REQUIRE(script.commands.size() == 2);
+    CHECK(script.commands[1].name == "surface-iso");
+    CHECK(script.commands[1].numbers == std::vector<double>{3, 0.45});
+    CHECK_THAT(errorOf("surface-iso 3"), Catch::StartsWith("s.isotrack:1: surface-iso"));
+    CHECK(errorOf("surface-iso x 0.4") == "s.isotrack:1: surface-iso: \"x\" is not a whole number >= 0");
+}
+
 TEST_CASE("script errors name the file and the line", "[viewer][script]") {
     CHECK(errorOf("iso 1\nfrobnicate\n") == "s.isotrack:2: unknown command \"frobnicate\"");
     CHECK(errorOf("\n\niso one\n") == "s.isotrack:3: iso: \"one\" is not a number");

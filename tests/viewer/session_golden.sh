@@ -5,7 +5,9 @@
 # it under xvfb-run), then checks NAME.png against tests/golden/viewer_NAME.png
 # (metric: tests/viewer/viewer_check.cpp) and the --json summary. When
 # tests/viewer/NAME.expect exists, each of its lines "KEY VALUE" (a summary
-# field as viewer_check field prints it) must hold too.
+# field as viewer_check field prints it) must hold too; when NAME.check exists,
+# each of its lines is a viewer_check command run with the summary's path after
+# its first word.
 set -euo pipefail
 isotrack=$1 check=$2 out=$3 name=$4
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -26,4 +28,12 @@ if [[ -f $expect ]]; then
         fi
         echo "$key = $got"
     done < "$expect"
+fi
+checks="$here/$name.check"
+if [[ -f $checks ]]; then
+    while read -r command args; do
+        [[ -z $command || $command == \#* ]] && continue
+        # shellcheck disable=SC2086
+        "$check" "$command" "$name.json" $args
+    done < "$checks"
 fi

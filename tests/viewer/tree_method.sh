@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The viewer's contour-tree method (tests/viewer/tree_method.isotrack): as many
-# surfaces and triangles as `isotrack extract --method all` at each isovalue.
+# surfaces and triangles as `isotrack extract --method all` at each isovalue, and
+# as `--method tree --min-persistence 0.1` with the panel's persistence.
 #   tree_method.sh ISOTRACK VIEWER_CHECK OUT_DIR
 set -euo pipefail
 isotrack=$1 check=$2 out=$3
@@ -19,3 +20,10 @@ for k in 0 1; do
     [[ $(field "checkpoints.$k.triangles") == "$triangles" ]] || { echo "triangles differ from all's $triangles"; exit 1; }
 done
 [[ $(field checkpoints.2.surfaces) == $(field checkpoints.1.surfaces) ]]
+"$isotrack" extract --field noise:32 --iso 0.45 --method tree --min-persistence 0.1 --json > simplified.json
+want=$("$check" field simplified.json components)
+echo "checkpoint $(field checkpoints.3.name): $(field checkpoints.3.surfaces) surfaces (tree simplified: $want)"
+[[ $want -lt $(field checkpoints.1.surfaces) ]] || { echo "persistence 0.1 hides no surface"; exit 1; }
+[[ $(field checkpoints.3.surfaces) == "$want" ]] || exit 1
+[[ $(field checkpoints.3.triangles) == $("$check" field simplified.json triangles) ]] || exit 1
+[[ $(field min_persistence) == 0.1 ]]

@@ -8,6 +8,11 @@
 //   viewer_check field FILE.json KEY        print a number from the summary
 //   viewer_check surfaces FILE.json         one line per surface: index id triangles tracked selected
 //                                           state visible
+//   viewer_check others-unchanged FILE.json BEFORE AFTER ID
+//       (checkpoint names) the same surface ids at both, each with the same triangles, but surface
+//       ID, whose triangles must differ (the only surface whose isovalue changed)
+//   viewer_check same-arcs FILE.json BEFORE AFTER
+//       (checkpoint names) the same surface ids at both, each on the same contour-tree arc
 //   viewer_check sweep FILE.json PROFILE.json BEFORE STILL SWEPT DONE --min-applied N
 //       (checkpoint names) extractions applied from STILL to DONE must be at least N; prints the
 //       median frame time from STILL to SWEPT (the isovalue moving) against BEFORE to STILL (not)
@@ -216,6 +221,42 @@ int sweep(char** argv, long minApplied) {
     return 0;
 }
 
+int othersUnchanged(const std::string& path, const std::string& beforeName, const std::string& afterName,
+                    const std::string& changed) {
+    const json s = readJson(path);
+    const json &before = checkpoint(s, beforeName)["surface_triangles"],
+               &after = checkpoint(s, afterName)["surface_triangles"];
+    if (before.size() != after.size()) {
+        return fail(std::to_string(before.size()) + " surfaces at " + beforeName + ", " + std::to_string(after.size()) +
+                    " at " + afterName);
+    }
+    std::size_t same = 0;
+    for (const auto& [id, triangles] : before.items()) {
+        if (!after.contains(id)) return fail("surface " + id + " is gone at " + afterName);
+        if (id == changed) {
+            if (after[id] == triangles) return fail("surface " + id + " kept its " + triangles.dump() + " triangles");
+            continue;
+        }
+        if (after[id] != triangles) {
+            return fail("surface " + id + " changed: " + triangles.dump() + " -> " + after[id].dump() + " triangles");
+        }
+        ++same;
+    }
+    if (!before.contains(changed)) return fail("no surface " + changed + " at " + beforeName);
+    std::printf("others-unchanged: %zu surfaces keep their triangles; surface %s went from %s to %s\n", same,
+                changed.c_str(), before[changed].dump().c_str(), after[changed].dump().c_str());
+    return 0;
+}
+
+int sameArcs(const std::string& path, const std::string& beforeName, const std::string& afterName) {
+    const json s = readJson(path);
+    const json &before = checkpoint(s, beforeName)["surface_arcs"], &after = checkpoint(s, afterName)["surface_arcs"];
+    if (before.empty()) return fail("no surface has an arc at " + beforeName);
+    if (before != after) return fail("surface ids or arcs differ: " + before.dump() + " against " + after.dump());
+    std::printf("same-arcs: %zu surfaces keep their ids and arcs\n", before.size());
+    return 0;
+}
+
 int surfaces(const std::string& path) {
     const json s = readJson(path);
     std::size_t index = 0;
@@ -238,6 +279,8 @@ int main(int argc, char** argv) {
         if (what == "profile" && argc == 5) return profile(argv[2], std::atol(argv[4]));
         if (what == "soak" && argc == 7) return soak(argv[2], argv[3], argv[4], std::atol(argv[6]));
         if (what == "surfaces" && argc == 3) return surfaces(argv[2]);
+        if (what == "same-arcs" && argc == 5) return sameArcs(argv[2], argv[3], argv[4]);
+        if (what == "others-unchanged" && argc == 6) return othersUnchanged(argv[2], argv[3], argv[4], argv[5]);
         if (what == "sweep" && argc == 10 && std::string(argv[8]) == "--min-applied") {
             return sweep(argv, std::atol(argv[9]));
         }
