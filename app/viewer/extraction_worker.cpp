@@ -202,6 +202,7 @@ std::shared_ptr<const LoadedVolume> ExtractionWorker::volumeFor(const VolumeSour
     const auto start = Clock::now();
     cache_.reset();  // the old volume goes before the new one is read
     tree_.reset();
+    treeLayout_.reset();
     cache_ = loadForView(source);
     loadMs = msSince(start);
     return cache_;
@@ -223,6 +224,7 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
         exhaustive.cancel = &cancel_;
         if (request.method == Method::Tree && request.table == TableKind::Consistent) {
             exhaustive.tree = &treeOf(volume);
+            result.treeLayout = treeLayout_;
             setPhase(methodPhase(request.method), known != lastMs_.end() ? known->second : 0.0);
         }
         result.surfaces = isotrack::extract(volume, exhaustive);
@@ -241,6 +243,7 @@ const ContourTree& ExtractionWorker::treeOf(const Volume& volume) {
         setPhase("building the contour tree", lastMs_.count("tree") ? lastMs_["tree"] : 0.0);
         const auto start = Clock::now();
         tree_ = std::make_unique<const ContourTree>(computeContourTree(volume, threads_));
+        treeLayout_ = std::make_shared<const TreeLayout>(layoutContourTree(*tree_, ui::kTreePlotBranches));
         lastMs_["tree"] = msSince(start);
     }
     return *tree_;

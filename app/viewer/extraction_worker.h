@@ -34,8 +34,10 @@
 #include "isotrack/source.h"
 #include "isotrack/tables.h"
 #include "isotrack/tracking.h"
+#include "isotrack/tree_layout.h"
 #include "isotrack/volume.h"
 #include "ui/panel_state.h"
+#include "ui/tree_plot.h"
 
 namespace isotrack::viewer {
 
@@ -84,8 +86,9 @@ struct ExtractionResult {
     // mc: the exhaustive mesh first, then the seeds' surfaces; all: largest first
     // (seeds point into them); track: the seeds' surfaces.
     std::vector<Surface> surfaces;
-    std::vector<SurfaceFootprint> footprints;  // one per surface
-    std::vector<SeedResult> seeds;             // one per requested seed
+    std::vector<SurfaceFootprint> footprints;      // one per surface
+    std::vector<SeedResult> seeds;                 // one per requested seed
+    std::shared_ptr<const TreeLayout> treeLayout;  // method tree: the volume's tree laid out for the panel's plot
     double loadMs = 0.0, extractMs = 0.0;
     std::chrono::steady_clock::time_point started{}, finished{};  // on the worker
     std::string error;  // set when loading or extracting failed; then only `generation` is meaningful
@@ -154,8 +157,9 @@ private:
 
     // Worker-thread only.
     std::shared_ptr<const LoadedVolume> cache_;
-    std::unique_ptr<const ContourTree> tree_;  // cache_'s contour tree, built on the first tree request
-    std::map<std::string, double> lastMs_;     // per source and method: how long extraction took last time
+    std::shared_ptr<const TreeLayout> treeLayout_;  // tree_'s plot, laid out with it
+    std::unique_ptr<const ContourTree> tree_;       // cache_'s contour tree, built on the first tree request
+    std::map<std::string, double> lastMs_;          // per source and method: how long extraction took last time
 
     std::thread thread_;
 };

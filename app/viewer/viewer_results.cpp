@@ -67,7 +67,9 @@ void Viewer::applyResult(ExtractionResult result) {
         scene_.clearSurfaces();
         renderer_->arena().trim();  // pages sized for the old volume's surfaces go
         nextColour_ = 0;
+        treeLayout_.reset();
     }
+    if (result.treeLayout) treeLayout_ = result.treeLayout;
     extraction_.applied(result);
 
     // Room for the whole result in one page before its surfaces arrive one by
