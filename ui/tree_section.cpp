@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 
 #include "ui/sections.h"
 #include "ui/tree_plot.h"
@@ -49,20 +48,21 @@ struct PlotFrame {
 
 void drawPlot(const PanelState& state, const PlotFrame& frame, ImDrawList& draw) {
     const TreeLayout& layout = *state.tree.layout;
-    std::unordered_map<std::size_t, const TreePlotSurface*> surfaceOn;
-    for (const TreePlotSurface& surface : state.tree.surfaces) surfaceOn.emplace(surface.arc, &surface);
     draw.AddRectFilled(frame.min, frame.max, IM_COL32(24, 24, 28, 255));
     for (const TreeLayout::Link& link : layout.links) {
         const float y = frame.py(link.value);
         draw.AddLine(ImVec2(frame.px(link.x0), y), ImVec2(frame.px(link.x1), y), IM_COL32(90, 90, 96, 255));
     }
-    for (const TreeLayout::Segment& segment : layout.segments) {
-        const auto on = surfaceOn.find(segment.arc);
-        const bool selected = on != surfaceOn.end() && state.selected == on->second->id;
-        const ImU32 colour = on != surfaceOn.end() ? colourOf(on->second->colour) : IM_COL32(150, 150, 150, 255);
-        const float x = frame.px(segment.x);
-        draw.AddLine(ImVec2(x, frame.py(segment.lower)), ImVec2(x, frame.py(segment.upper)), colour,
-                     on != surfaceOn.end() ? (selected ? 4.0f : 2.5f) : 1.0f);
+    for (const TreeLayout::BranchLine& line : layout.branchLines) {
+        const float x = frame.px(line.x);
+        draw.AddLine(ImVec2(x, frame.py(line.lower)), ImVec2(x, frame.py(line.upper)), IM_COL32(150, 150, 150, 255));
+    }
+    for (const TreePlotSurface& surface : state.tree.surfaces) {
+        const TreeLayout::Segment* segment = layout.segmentOf(surface.arc);
+        if (!segment) continue;
+        const float x = frame.px(segment->x);
+        draw.AddLine(ImVec2(x, frame.py(segment->lower)), ImVec2(x, frame.py(segment->upper)), colourOf(surface.colour),
+                     state.selected == surface.id ? 4.0f : 2.5f);
     }
     const float isoY = frame.py(state.extraction.iso);
     draw.AddLine(ImVec2(frame.min.x, isoY), ImVec2(frame.max.x, isoY), IM_COL32(255, 255, 255, 160));

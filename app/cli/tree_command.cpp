@@ -90,7 +90,10 @@ int runTree(const TreeOptions& options) {
         double(tree.byteSize()) / 1e6, tree.arcsAt(at).size(), at);
     if (json) writeFileSafely(options.out, treeJson(tree, at).dump() + "\n");
     if (svg) {
-        const TreeLayout layout = layoutContourTree(tree, options.maxBranches);
+        TreeLayout layout;
+        const double layoutSeconds = secondsOf([&] { layout = layoutContourTree(tree, options.maxBranches); });
+        std::printf("plot: %zu branches, %zu arcs drawn, %zu hidden, laid out in %.3f ms\n", layout.branches,
+                    layout.segments.size(), layout.hiddenArcs + layout.prunedArcs, layoutSeconds * 1e3);
         writeFileSafely(options.out, treeSvg(layout, plottedSurfaces(tree, source.volume, at, options.threads), at));
     }
     return 0;

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
-#include <unordered_map>
 
 namespace isotrack::cli {
 namespace {
@@ -26,8 +25,6 @@ std::string treeSvg(const TreeLayout& layout, const std::vector<PlottedSurface>&
         const double t = std::clamp((v - layout.lo) / (layout.hi - layout.lo), 0.0, 1.0);
         return kHeight - kMargin - (kHeight - 2 * kMargin) * t;
     };
-    std::unordered_map<std::size_t, std::size_t> surfaceOn;
-    for (std::size_t s = 0; s < surfaces.size(); ++s) surfaceOn.emplace(surfaces[s].arc, s);
     std::ostringstream svg;
     svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\"" << kHeight << "\">\n"
         << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
@@ -35,14 +32,18 @@ std::string treeSvg(const TreeLayout& layout, const std::vector<PlottedSurface>&
         svg << "<line class=\"link\" x1=\"" << px(link.x0) << "\" y1=\"" << py(link.value) << "\" x2=\"" << px(link.x1)
             << "\" y2=\"" << py(link.value) << "\" stroke=\"#ccc\" stroke-width=\"1\"/>\n";
     }
-    for (const TreeLayout::Segment& segment : layout.segments) {
-        const auto on = surfaceOn.find(segment.arc);
-        svg << "<line class=\"arc\" data-arc=\"" << segment.arc << "\"";
-        if (on != surfaceOn.end()) svg << " data-surface=\"" << on->second << "\"";
-        svg << " x1=\"" << px(segment.x) << "\" y1=\"" << py(segment.lower) << "\" x2=\"" << px(segment.x) << "\" y2=\""
-            << py(segment.upper) << "\" stroke=\""
-            << (on != surfaceOn.end() ? hexColour(surfaces[on->second].colour) : std::string("#999"))
-            << "\" stroke-width=\"" << (on != surfaceOn.end() ? 3 : 1) << "\"/>\n";
+    for (std::size_t b = 0; b < layout.branchLines.size(); ++b) {
+        const TreeLayout::BranchLine& line = layout.branchLines[b];
+        svg << "<line class=\"branch\" data-branch=\"" << b << "\" data-arcs=\"" << line.arcs << "\" x1=\""
+            << px(line.x) << "\" y1=\"" << py(line.lower) << "\" x2=\"" << px(line.x) << "\" y2=\"" << py(line.upper)
+            << "\" stroke=\"#999\" stroke-width=\"1\"/>\n";
+    }
+    for (std::size_t s = 0; s < surfaces.size(); ++s) {
+        const TreeLayout::Segment* segment = layout.segmentOf(surfaces[s].arc);
+        if (!segment) continue;
+        svg << "<line class=\"arc\" data-arc=\"" << segment->arc << "\" data-surface=\"" << s << "\" x1=\""
+            << px(segment->x) << "\" y1=\"" << py(segment->lower) << "\" x2=\"" << px(segment->x) << "\" y2=\""
+            << py(segment->upper) << "\" stroke=\"" << hexColour(surfaces[s].colour) << "\" stroke-width=\"3\"/>\n";
     }
     svg << "<line class=\"iso\" x1=\"0\" x2=\"" << kWidth << "\" y1=\"" << py(at) << "\" y2=\"" << py(at)
         << "\" stroke=\"black\" stroke-dasharray=\"4 3\"/>\n";

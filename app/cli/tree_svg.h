@@ -17,10 +17,11 @@ struct PlottedSurface {
     double iso = 0.0;
 };
 
-// One <line class="arc"> per segment (data-arc, and data-surface for the
-// index in `surfaces` of the surface on it, coloured as that surface; other
-// arcs grey), one <line class="link"> per link, the isovalue `at` as a dashed
-// line and each surface's isovalue as a <circle class="surface">.
+// One <line class="branch"> per branch of the layout (data-arcs: how many
+// arcs it draws, grey), over it one <line class="arc"> per surface on a drawn
+// arc (data-arc, data-surface: its index in `surfaces`, in its colour), one
+// <line class="link"> per link, the isovalue `at` as a dashed line and each
+// surface's isovalue as a <circle class="surface">.
 std::string treeSvg(const TreeLayout& layout, const std::vector<PlottedSurface>& surfaces, double at);
 
 }  // namespace isotrack::cli

@@ -92,7 +92,7 @@ TEST_CASE("the panel draws the tree plot with method tree only", "[viewer][ui][t
     };
     vertices(ui::Method::All);  // the first frame lays the windows out
     const int all = vertices(ui::Method::All), tree = vertices(ui::Method::Tree);
-    CHECK(tree > all + int(state.tree.layout->segments.size()));  // every arc is a line of 4 vertices at least
+    CHECK(tree > all + 4 * int(state.tree.layout->branches));  // a line per branch, 4 vertices at least
     CHECK(actions.empty());
     ImGui::DestroyContext();
 }

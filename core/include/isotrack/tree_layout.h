@@ -26,7 +26,16 @@ struct TreeLayout {
         float x0 = 0.0f, x1 = 0.0f;
         double value = 0.0;
     };
-    std::vector<Segment> segments;  // sorted by arc
+    // A branch drawn whole: its column and value range, and its number of arcs.
+    // A plot draws these, and only the arcs it colours one by one, so its cost
+    // is that of the branches, however many arcs they hold.
+    struct BranchLine {
+        float x = 0.0f;
+        double lower = 0.0, upper = 0.0;
+        std::size_t arcs = 0;
+    };
+    std::vector<Segment> segments;        // sorted by arc
+    std::vector<BranchLine> branchLines;  // by branch
     std::vector<Link> links;
     std::size_t branches = 0;
     double lo = 0.0, hi = 1.0;         // the finite node values' range (hi > lo)

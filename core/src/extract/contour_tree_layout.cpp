@@ -223,11 +223,16 @@ TreeLayout layoutContourTree(const ContourTree& tree, std::size_t maxBranches) {
     for (const ContourTree::Arc& arc : tree.arcs) kept += arc.pruned ? 0 : 1;
     layout.prunedArcs = tree.arcs.size() - kept;
     for (std::size_t b = 0; b < branches.size(); ++b) {
+        TreeLayout::BranchLine line{x[b], std::numeric_limits<double>::infinity(),
+                                    -std::numeric_limits<double>::infinity(), branches[b].arcs.size()};
         for (const std::size_t a : branches[b].arcs) {
             const ContourTree::Arc& arc = tree.arcs[a];
             layout.segments.push_back(
                 {std::uint32_t(a), std::uint32_t(b), x[b], valueAt(arc.lower), valueAt(arc.upper)});
+            line.lower = std::min(line.lower, layout.segments.back().lower);
+            line.upper = std::max(line.upper, layout.segments.back().upper);
         }
+        layout.branchLines.push_back(line);
         if (b > 0) layout.links.push_back({x[branches[b].parent], x[b], valueAt(branches[b].start)});
     }
     layout.hiddenArcs = kept - layout.segments.size();

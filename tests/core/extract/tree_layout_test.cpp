@@ -53,6 +53,17 @@ void requireBranchesApart(const TreeLayout& layout) {
         for (std::size_t k = 1; k < segments.size(); ++k) REQUIRE(segments[k - 1]->upper <= segments[k]->lower);
     }
     REQUIRE(layout.links.size() + 1 == layout.branches);
+    // Each branch's line covers its arcs' segments.
+    REQUIRE(layout.branchLines.size() == layout.branches);
+    std::vector<std::size_t> arcsOn(layout.branches, 0);
+    for (const TreeLayout::Segment& s : layout.segments) {
+        const TreeLayout::BranchLine& line = layout.branchLines[s.branch];
+        REQUIRE(line.x == s.x);
+        REQUIRE(line.lower <= s.lower);
+        REQUIRE(line.upper >= s.upper);
+        ++arcsOn[s.branch];
+    }
+    for (std::size_t b = 0; b < layout.branches; ++b) REQUIRE(layout.branchLines[b].arcs == arcsOn[b]);
 }
 
 }  // namespace
