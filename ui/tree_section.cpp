@@ -87,7 +87,7 @@ void treeSection(const PanelState& state, std::vector<Action>& actions) {
     ImGui::Text("%s arcs in %s branches", formatCount(layout.segments.size()).c_str(),
                 formatCount(layout.branches).c_str());
     if (layout.hiddenArcs + layout.prunedArcs > 0) {
-        ImGui::TextDisabled("%s arcs hidden (branches less persistent than %.4g)",
+        ImGui::TextDisabled("%s arcs hidden (persistence < %.3g)",
                             formatCount(layout.hiddenArcs + layout.prunedArcs).c_str(), layout.minShownPersistence);
     }
     PlotFrame frame;
