@@ -184,6 +184,7 @@ private:
 // Pass 5: a column per branch, depth first from the root.
 std::vector<float> branchColumns(const std::vector<Branch>& branches) {
     const std::size_t count = branches.size();
+    if (count == 0) return {};
     std::vector<std::vector<std::size_t>> children(count);
     for (std::size_t b = 1; b < count; ++b) children[branches[b].parent].push_back(b);
     std::vector<float> x(count, 0.0f);

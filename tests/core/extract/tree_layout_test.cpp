@@ -126,3 +126,20 @@ TEST_CASE("the tree's layout is deterministic and picks the arc under the pointe
     }
     REQUIRE(a.pick(2.0f, (a.lo + a.hi) / 2, 0.01f, 0.0) == nullptr);
 }
+
+TEST_CASE("the tree's layout of an empty tree and of a constant volume", "[core][tree]") {
+    const TreeLayout none = layoutContourTree(ContourTree{});
+    REQUIRE(none.segments.empty());
+    REQUIRE(none.branches == 0);
+    REQUIRE(none.hi > none.lo);
+    REQUIRE(none.pick(0.5f, 0.5, 1.0f, 1.0) == nullptr);
+
+    Volume flat({4, 4, 4}, ScalarType::Float32);  // zeros: the tree orders them by index
+    const ContourTree tree = computeContourTree(flat, 1);
+    const TreeLayout layout = layoutContourTree(tree);
+    REQUIRE(layout.segments.size() == tree.arcs.size());
+    REQUIRE(layout.lo == 0.0);
+    REQUIRE(layout.hi == 1.0);
+    requireBranchesApart(layout);
+    REQUIRE(layoutContourTree(tree, 0).segments.empty());
+}
