@@ -93,6 +93,10 @@ void Panel::build(const PanelState& state, std::vector<Action>& actions) {
         }
         if (ImGui::CollapsingHeader("Data", ImGuiTreeNodeFlags_DefaultOpen)) dataSection(state, scratch_, actions);
         if (ImGui::CollapsingHeader("Extraction", ImGuiTreeNodeFlags_DefaultOpen)) extractionSection(state, actions);
+        if (state.extraction.method == Method::Tree &&
+            ImGui::CollapsingHeader("Contour tree", ImGuiTreeNodeFlags_DefaultOpen)) {
+            treeSection(state, actions);
+        }
         if (ImGui::CollapsingHeader("Growth", ImGuiTreeNodeFlags_DefaultOpen)) growthSection(state, actions);
         if (ImGui::CollapsingHeader("Surfaces", ImGuiTreeNodeFlags_DefaultOpen)) {
             surfacesSection(state, scratch_, actions);

@@ -7,7 +7,8 @@
 // histogram with the isovalue), extraction (isovalue, table, method),
 // growth (play, pause, step, restart, cells per frame, colour by growth order),
 // surfaces (colour, visibility, isolate, delete, export and statistics per
-// surface) and view (explode, wireframe, box, framing). The stats (timings,
+// surface), view (explode, wireframe, box, framing) and, with method tree, the
+// contour tree (a plot of its branches; a click on an arc selects its surface). The stats (timings,
 // frame-time plot, CPU and GPU memory) sit in a small window over the 3D
 // view's bottom-right corner.
 #include <array>

@@ -10,6 +10,7 @@
 
 #include "isotrack/extract.h"
 #include "isotrack/tables.h"
+#include "ui/tree_plot_state.h"
 
 namespace isotrack::ui {
 
@@ -121,6 +122,7 @@ struct PanelState {
     std::optional<std::uint32_t> selected;  // surface id
     StatsState stats;
     ViewState view;
+    TreePlotState tree;                           // method tree: the contour-tree plot
     std::string message;                          // the last thing that went wrong or was done (export, pick)
     int displayWidth = 960, displayHeight = 600;  // the window, in pixels
 };

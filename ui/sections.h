@@ -17,5 +17,6 @@ void growthSection(const PanelState& state, std::vector<Action>& actions);
 void surfacesSection(const PanelState& state, PanelScratch& scratch, std::vector<Action>& actions);
 void viewSection(const PanelState& state, std::vector<Action>& actions);
 void statsSection(const PanelState& state);
+void treeSection(const PanelState& state, std::vector<Action>& actions);
 
 }  // namespace isotrack::ui

@@ -207,6 +207,9 @@ std::shared_ptr<const LoadedVolume> ExtractionWorker::volumeFor(const VolumeSour
     tree_.reset();
     simplified_.reset();
     lastTree_.reset();
+    treeLayout_.reset();
+    fullLayout_.reset();
+    simplifiedLayout_.reset();
     cache_ = loadForView(source);
     loadMs = msSince(start);
     return cache_;
@@ -234,6 +237,7 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
         if (request.method == Method::Tree && request.table == TableKind::Consistent) {
             exhaustive.tree = &treeOf(volume, request.minPersistence);
             result.tree = lastTree_;
+            result.treeLayout = treeLayout_;
             setPhase(methodPhase(request.method), known != lastMs_.end() ? known->second : 0.0);
         }
         result.surfaces = isotrack::extract(volume, exhaustive);
@@ -255,6 +259,7 @@ const ContourTree& ExtractionWorker::treeOf(const Volume& volume, double minPers
         setPhase("building the contour tree", lastMs_.count("tree") ? lastMs_["tree"] : 0.0);
         const auto start = Clock::now();
         tree_ = std::make_shared<const ContourTree>(computeContourTree(volume, threads_));
+        fullLayout_ = std::make_shared<const TreeLayout>(layoutContourTree(*tree_, ui::kTreePlotBranches));
         lastMs_["tree"] = msSince(start);
     }
     lastTree_ = tree_;
@@ -264,10 +269,13 @@ const ContourTree& ExtractionWorker::treeOf(const Volume& volume, double minPers
             ContourTree simplified = *tree_;
             simplifyContourTree(simplified, minPersistence);
             simplified_ = std::make_shared<const ContourTree>(std::move(simplified));
+            simplifiedLayout_ =
+                std::make_shared<const TreeLayout>(layoutContourTree(*simplified_, ui::kTreePlotBranches));
             simplifiedBy_ = minPersistence;
         }
         lastTree_ = simplified_;
     }
+    treeLayout_ = lastTree_ == simplified_ ? simplifiedLayout_ : fullLayout_;
     return *lastTree_;
 }
 

@@ -36,8 +36,10 @@
 #include "isotrack/source.h"
 #include "isotrack/tables.h"
 #include "isotrack/tracking.h"
+#include "isotrack/tree_layout.h"
 #include "isotrack/volume.h"
 #include "ui/panel_state.h"
+#include "ui/tree_plot.h"
 
 namespace isotrack::viewer {
 
@@ -108,11 +110,12 @@ struct ExtractionResult {
     // mc: the exhaustive mesh first, then the seeds' surfaces; all: largest first
     // (seeds point into them); track: the seeds' surfaces.
     std::vector<Surface> surfaces;
-    std::vector<SurfaceFootprint> footprints;  // one per surface
-    std::vector<SeedResult> seeds;             // one per requested seed
-    std::vector<FlexibleResult> flexible;      // one per flexible surface requested
-    std::shared_ptr<const ContourTree> tree;   // method tree: the volume's tree, to match surfaces by arc
-    bool onlyFlexible = false;                 // the other surfaces were not extracted again
+    std::vector<SurfaceFootprint> footprints;      // one per surface
+    std::vector<SeedResult> seeds;                 // one per requested seed
+    std::vector<FlexibleResult> flexible;          // one per flexible surface requested
+    std::shared_ptr<const ContourTree> tree;       // method tree: the volume's tree, to match surfaces by arc
+    std::shared_ptr<const TreeLayout> treeLayout;  // method tree: that tree laid out for the panel's plot
+    bool onlyFlexible = false;                     // the other surfaces were not extracted again
     double loadMs = 0.0, extractMs = 0.0;
     std::chrono::steady_clock::time_point started{}, finished{};  // on the worker
     std::string error;  // set when loading or extracting failed; then only `generation` is meaningful
@@ -185,8 +188,11 @@ private:
     std::shared_ptr<const ContourTree> tree_;        // cache_'s contour tree, built on the first tree request
     std::shared_ptr<const ContourTree> simplified_;  // tree_ simplified by simplifiedBy_ (> 0)
     double simplifiedBy_ = 0.0;
-    std::shared_ptr<const ContourTree> lastTree_;  // the one treeOf returned last
-    std::map<std::string, double> lastMs_;         // per source and method: how long extraction took last time
+    std::shared_ptr<const ContourTree> lastTree_;         // the one treeOf returned last
+    std::shared_ptr<const TreeLayout> fullLayout_;        // tree_'s plot, laid out with it
+    std::shared_ptr<const TreeLayout> simplifiedLayout_;  // simplified_'s plot, laid out with it
+    std::shared_ptr<const TreeLayout> treeLayout_;        // lastTree_'s plot
+    std::map<std::string, double> lastMs_;                // per source and method: how long extraction took last time
 
     std::thread thread_;
 };

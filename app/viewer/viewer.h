@@ -147,7 +147,8 @@ private:
 
     // What the user asked for; the worker makes it so.
     ExtractionController extraction_;
-    std::size_t nextColour_ = 0;  // palette rank for the next new surface
+    std::size_t nextColour_ = 0;                    // palette rank for the next new surface
+    std::shared_ptr<const TreeLayout> treeLayout_;  // the volume's contour tree laid out (method tree)
     std::string extractionError_;
     std::string status_;
 

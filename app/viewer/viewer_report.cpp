@@ -87,6 +87,14 @@ ui::PanelState Viewer::panelState() const {
     extraction.lastMs = extraction_.lastMs();
     extraction.error = extractionError_;
 
+    state.tree.layout = treeLayout_;
+    for (const auto& surface : scene_.surfaces()) {
+        if (!surface->stats().arc || surface->presence() != Presence::Shown) continue;
+        const glm::vec3& colour = surface->style().colour;
+        state.tree.surfaces.push_back(
+            {surface->id(), *surface->stats().arc, {colour.r, colour.g, colour.b}, shownIso()});
+    }
+
     ui::GrowthState& growth = state.growth;
     growth.playing = playing_;
     growth.cellsPerFrame = cellsPerFrame_;

@@ -71,7 +71,9 @@ void Viewer::applyResult(ExtractionResult result) {
         scene_.clearSurfaces();
         renderer_->arena().trim();  // pages sized for the old volume's surfaces go
         nextColour_ = 0;
+        treeLayout_.reset();
     }
+    if (result.treeLayout) treeLayout_ = result.treeLayout;
     if (result.onlyFlexible) {  // the other surfaces, and the common isovalue shown, are as they were
         placeFlexible(result, scene_.surfaces());
         return;

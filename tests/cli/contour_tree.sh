@@ -33,6 +33,42 @@ assert len(t['arcs_at']) == $(field all.json components)
 "$isotrack" tree --field blobs:32 --min-persistence 0.05 --out tree.svg > /dev/null
 grep -q "<svg" tree.svg || fail "tree.svg is not an SVG"
 
+# The SVG: well-formed, its branches' lines drawing every kept arc, the surfaces' arcs in the
+# viewer's palette (surface k of extract --method tree in render/palette.cpp's
+# colour k), a mark per surface.
+"$isotrack" tree --field blobs:40 --at 0.3 --out plot.json > /dev/null
+"$isotrack" tree --field blobs:40 --at 0.3 --out plot.svg > /dev/null
+"$isotrack" extract --field blobs:40 --iso 0.3 --method tree --json > plot_surfaces.json
+python3 - plot.svg plot.json plot_surfaces.json <<'PY' || fail "plot.svg does not draw the tree in the surfaces' colours"
+import colorsys, json, math, sys, xml.etree.ElementTree as ET
+root = ET.parse(sys.argv[1]).getroot()
+tree = json.load(open(sys.argv[2]))
+surfaces = json.load(open(sys.argv[3]))["surfaces"]
+ns = "{http://www.w3.org/2000/svg}"
+branches = [e for e in root.iter(ns + "line") if e.get("class") == "branch"]
+arcs = [e for e in root.iter(ns + "line") if e.get("class") == "arc"]
+kept = sum(1 for a in tree["arcs"] if not a["pruned"])
+assert sum(int(e.get("data-arcs")) for e in branches) == kept, kept
+assert all(e.get("stroke") == "#999" for e in branches)
+assert len(arcs) == len(surfaces), (len(arcs), len(surfaces))
+def palette(rank):
+    r = rank % 65536
+    h = math.fmod(0.09 + r * 0.3819660112501051, 1.0)
+    s = 0.40 + 0.35 * math.fmod(0.5 + r * 0.6710436067037893, 1.0)
+    v = 0.68 + 0.27 * math.fmod(0.5 + r * 0.5497004779019703, 1.0)
+    return [round(c * 255) for c in colorsys.hsv_to_rgb(h, s, v)]
+coloured = {int(e.get("data-surface")): e for e in arcs if e.get("data-surface") is not None}
+assert sorted(coloured) == list(range(len(surfaces))), (len(coloured), len(surfaces))
+for k, e in coloured.items():
+    assert int(e.get("data-arc")) == surfaces[k]["arc"], k
+    rgb = [int(e.get("stroke")[i:i + 2], 16) for i in (1, 3, 5)]
+    assert all(abs(a - b) <= 1 for a, b in zip(rgb, palette(k))), (k, rgb, palette(k))
+marks = [e for e in root.iter(ns + "circle") if e.get("class") == "surface"]
+assert len(marks) == len(surfaces)
+PY
+"$isotrack" tree --field noise:24 --max-branches 10 --out few.svg > /dev/null
+grep -q "arcs hidden</text>" few.svg || fail "--max-branches 10: no count of the arcs hidden"
+
 # Flexible isosurfaces: surface 0 at its own isovalue, the others untouched.
 "$isotrack" extract --field blobs:48 --method tree --json > base.json
 "$isotrack" extract --field blobs:48 --method tree --arc-iso 0:0.3 --json > flex.json
