@@ -46,6 +46,7 @@ struct ExtractOptions {
     std::string frame = "lps";  // of the written meshes, the seed and the bounds
     bool json = false;
     double minPersistence = 0.0;      // --method tree: prune the tree's leaf branches below it
+    std::size_t minSize = 0;          // --method tree: prune leaf branches sweeping fewer samples
     std::size_t largestArcs = 0;      // --method tree: only the surfaces of the arcs sweeping the most samples
     std::vector<std::string> arcIso;  // --method tree: I:V, surface I at its own isovalue V
 };
@@ -243,7 +244,8 @@ Extraction extract(const ExtractOptions& options, const Source& source, TableKin
         if (table != TableKind::Consistent) throw InputError("--method tree works with the consistent table only");
         treeSeconds = secondsOf([&] {
             tree = computeContourTree(source.volume, options.threads);
-            if (options.minPersistence > 0) simplifyContourTree(*tree, options.minPersistence);
+            if (options.minPersistence > 0 || options.minSize > 0)
+                simplifyContourTree(*tree, options.minPersistence, options.minSize);
         });
     }
     for (int run = 0; run < options.repeat; ++run) {
@@ -269,8 +271,11 @@ int runExtract(const ExtractOptions& options) {
     const bool perSurface = options.method == "all" || options.method == "tree";
     if (!options.outDir.empty() && !perSurface)
         throw InputError("--out-dir writes one file per surface and needs --method all or tree, not " + options.method);
-    if ((options.minPersistence > 0 || options.largestArcs > 0 || !options.arcIso.empty()) && options.method != "tree")
-        throw InputError("--min-persistence, --largest-arcs and --arc-iso need --method tree, not " + options.method);
+    const bool treeOptions =
+        options.minPersistence > 0 || options.minSize > 0 || options.largestArcs > 0 || !options.arcIso.empty();
+    if (treeOptions && options.method != "tree")
+        throw InputError("--min-persistence, --min-size, --largest-arcs and --arc-iso need --method tree, not " +
+                         options.method);
     const Source source = loadSource(options.source);
     const Dims& dims = source.volume.dims();
 
@@ -343,6 +348,8 @@ RunCommand addExtractCommand(CLI::App& app) {
         ->add_option("--min-persistence", options->minPersistence,
                      "With --method tree: leave out the surfaces of leaf branches less persistent than P")
         ->check(CLI::NonNegativeNumber);
+    command->add_option("--min-size", options->minSize,
+                        "With --method tree: leave out the surfaces of leaf branches sweeping fewer than N samples");
     command->add_option("--largest-arcs", options->largestArcs,
                         "With --method tree: track only the N arcs crossing --iso that sweep the most samples");
     command

@@ -23,6 +23,14 @@ done
 "$isotrack" extract --field noise:24 --iso 0.5 --method all --json > all.json
 (( $(field pruned.json components) < $(field all.json components) )) || fail "--min-persistence pruned nothing"
 
+# Pruning by size (samples swept) keeps as many surfaces as isotrack tree counts
+# with the same --min-size, and fewer than all.
+"$isotrack" extract --field noise:24 --iso 0.5 --method tree --min-size 4 --json > sized.json
+sized=$(field sized.json components)
+(( sized > 0 && sized < $(field all.json components) )) || fail "--min-size 4 kept $sized surfaces"
+"$isotrack" tree --field noise:24 --at 0.5 --min-size 4 | grep -q "; $sized surfaces at iso 0.5" \
+    || fail "extract --min-size and tree --min-size disagree"
+
 "$isotrack" tree --field noise:24 --at 0.5 --out tree.json > tree.txt
 grep -q "surfaces at iso 0.5" tree.txt || fail "no summary line"
 python3 -c "
