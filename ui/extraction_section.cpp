@@ -87,7 +87,11 @@ void extractionSection(const PanelState& state, std::vector<Action>& actions) {
         actions.push_back(SetMethod{Method::Track});
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("click in the view: the surface there grows from the click");
+    // The fourth choice goes on a line of its own when the panel is too narrow for it.
+    const float treeWidth =
+        ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize("contour tree").x;
     ImGui::SameLine();
+    if (ImGui::GetContentRegionAvail().x < treeWidth) ImGui::NewLine();
     if (ImGui::RadioButton("contour tree", &method, static_cast<int>(Method::Tree))) {
         actions.push_back(SetMethod{Method::Tree});
     }
