@@ -101,12 +101,7 @@ void applyArcIsovalues(const ExtractOptions& options, const Volume& volume, cons
         const std::size_t arc = followArc(tree, *surfaces[index].stats.arc, iso);
         if (arc == tree.arcs.size())
             throw InputError("--arc-iso " + item + ": the surface vanishes before that isovalue");
-        const ArcSeed seed = arcSeeds(tree, volume, iso, {arc}).front();
-        Surface surface = trackSurface(volume, iso, seed.edge, TableKind::Consistent, 1);
-        surface.stats.arc = arc;
-        surface.stats.persistence = tree.persistence(arc);
-        measureTopology(surface);
-        surfaces[index] = std::move(surface);
+        surfaces[index] = trackArc(tree, volume, arc, iso);
         isovalues[index] = iso;
     }
 }

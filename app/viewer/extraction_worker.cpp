@@ -327,11 +327,7 @@ void ExtractionWorker::trackFlexible(const ExtractionRequest& request, const Vol
         flexible.iso = wanted.iso;
         const std::size_t arc = followArc(tree, wanted.arc, wanted.iso);
         if (arc < tree.arcs.size()) {
-            const ArcSeed seed = arcSeeds(tree, volume, wanted.iso, {arc}).front();
-            Surface surface = trackSurface(volume, wanted.iso, seed.edge, TableKind::Consistent, threads_);
-            surface.stats.arc = arc;
-            surface.stats.persistence = tree.persistence(arc);
-            measureTopology(surface);
+            Surface surface = trackArc(tree, volume, arc, wanted.iso, threads_);
             flexible.footprint = footprintOf(surface.mesh);
             flexible.mesh = std::move(surface);
         }

@@ -98,6 +98,11 @@ std::vector<ArcSeed> arcSeeds(const ContourTree& tree, const Volume& volume, dou
 // The `count` arcs crossing v that sweep the most samples, most first.
 std::vector<std::size_t> largestArcsAt(const ContourTree& tree, double v, std::size_t count);
 
+// The surface of `arc` at v (which the arc must cross), tracked from its arcSeeds
+// seed with the consistent table on `threads` threads, with the arc, its
+// persistence and the surface's topology in its stats: one flexible isosurface.
+Surface trackArc(const ContourTree& tree, const Volume& volume, std::size_t arc, double v, int threads = 1);
+
 // The surfaces of the arcs crossing v, tracked from arcSeeds with the consistent
 // table, on `threads` threads (a surface each), largest first, each with its arc in `arcs` (same order) and in its
 // stats (with the arc's persistence and the surface's topology, measureTopology). Seeds that are

@@ -233,6 +233,24 @@ std::vector<std::size_t> largestArcsAt(const ContourTree& tree, double v, std::s
     return arcs;
 }
 
+namespace {
+
+// A surface tracked from `arc`'s seed, with what the tree knows of it.
+void describeArcSurface(const ContourTree& tree, std::size_t arc, Surface& surface) {
+    surface.stats.arc = arc;
+    surface.stats.persistence = tree.persistence(arc);
+    measureTopology(surface);
+}
+
+}  // namespace
+
+Surface trackArc(const ContourTree& tree, const Volume& volume, std::size_t arc, double v, int threads) {
+    const ArcSeed seed = arcSeeds(tree, volume, v, {arc}).front();
+    Surface surface = trackSurface(volume, v, seed.edge, TableKind::Consistent, threads);
+    describeArcSurface(tree, arc, surface);
+    return surface;
+}
+
 std::vector<Surface> trackTreeSurfaces(const ContourTree& tree, const Volume& volume, double v, int threads,
                                        std::vector<std::size_t>* arcs, std::size_t largest) {
     std::vector<ArcSeed> seeds =
@@ -264,9 +282,7 @@ std::vector<Surface> trackTreeSurfaces(const ContourTree& tree, const Volume& vo
     std::vector<Surface> out;
     if (arcs) arcs->clear();
     for (auto& [surface, arc] : tracked) {
-        surface.stats.arc = arc;
-        surface.stats.persistence = tree.persistence(arc);
-        measureTopology(surface);
+        describeArcSurface(tree, arc, surface);
         out.push_back(std::move(surface));
         if (arcs) arcs->push_back(arc);
     }
