@@ -144,7 +144,10 @@ FrameTransform gridToFrame(const Volume& volume, WorldFrame frame) {
     } else {
         t.linear = frame == WorldFrame::Ras ? flipRasLps(volume.direction()) : volume.direction();
     }
-    if (isIdentity(t.linear)) return t;  // no arithmetic on the origin: identity stays exact
+    // LPS with an identity direction is the grid itself: no arithmetic on the origin, so it
+    // stays exact. Any other frame moves the origin even when its linear part is the
+    // identity (RAS of a diag(-1,-1,1) direction, voxel indices at unit spacing).
+    if (frame == WorldFrame::Lps && isIdentity(t.linear)) return t;
     const Vec3d turned = multiply(t.linear, o);
     const Vec3d base = frame == WorldFrame::Ras ? flipRasLps(o) : frame == WorldFrame::Voxel ? Vec3d{0, 0, 0} : o;
     t.offset = {base[0] - turned[0], base[1] - turned[1], base[2] - turned[2]};

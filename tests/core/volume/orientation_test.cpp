@@ -59,6 +59,10 @@ Affine floatRounded(Affine m) {
     return m;
 }
 
+// The most common NIfTI: axis-aligned in RAS with an origin off zero. Its LPS
+// direction is diag(-1,-1,1), so RAS is the identity and only the origin moves.
+Affine alignedRasSform() { return {{{2, 0, 0, -64}, {0, 2, 0, -64}, {0, 0, 3, -96}}}; }
+
 // A flip of x (the mirrored case), and an oblique one: turned 30 degrees
 // about an axis, anisotropic, with i mirrored (det -1).
 Affine flippedSform() { return floatRounded({{{-0.9, 0, 0, 40.5}, {0, 1.1, 0, -20.25}, {0, 0, 1.3, 7}}}); }
@@ -113,11 +117,12 @@ Mesh inFrame(const Volume& v, WorldFrame frame) {
 
 }  // namespace
 
-TEST_CASE("a NIfTI sform, flipped or oblique: exported vertices are the sform applied to voxel positions",
+TEST_CASE("a NIfTI sform, axis-aligned, flipped or oblique: exported vertices are the sform applied to voxel positions",
           "[core][orientation]") {
     TempDir dir;
-    for (const auto& [name, sform] :
-         {std::pair<std::string, Affine>{"flipped.nii", flippedSform()}, {"oblique.nii", obliqueSform()}}) {
+    for (const auto& [name, sform] : {std::pair<std::string, Affine>{"ras.nii", alignedRasSform()},
+                                      {"flipped.nii", flippedSform()},
+                                      {"oblique.nii", obliqueSform()}}) {
         INFO(name);
         const Volume v = loadWithSform(dir, sform, name);
         const Mesh voxel = inFrame(v, WorldFrame::Voxel);
