@@ -2,6 +2,9 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <array>
+#include <string>
+#include <vector>
 
 #include "isotrack/errors.h"
 
@@ -56,12 +59,6 @@ std::string listOfNames(const std::vector<std::string>& names) {
         out += names[i];
     }
     return out;
-}
-
-std::vector<std::string> methodNames(const std::vector<Method>& methods) {
-    std::vector<std::string> names;
-    for (const Method method : methods) names.push_back(methodName(method));
-    return names;
 }
 
 CLI::Option* addMethodOption(CLI::App& command, Method& method, const std::string& help,

@@ -23,7 +23,6 @@ namespace isotrack::cli {
 
 // "mc, track or all": names joined for help texts and messages.
 std::string listOfNames(const std::vector<std::string>& names);
-std::vector<std::string> methodNames(const std::vector<Method>& methods);
 
 // --method NAME, one of `allowed` (every method unless given).
 CLI::Option* addMethodOption(CLI::App& command, Method& method, const std::string& help,
