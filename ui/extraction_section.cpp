@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "ui/method_labels.h"
 #include "ui/sections.h"
 
 namespace isotrack::ui {
@@ -61,42 +62,27 @@ void extractionSection(const PanelState& state, std::vector<Action>& actions) {
 
     int table = static_cast<int>(extraction.table);
     ImGui::TextUnformatted("table");
-    ImGui::SameLine();
-    if (ImGui::RadioButton("consistent", &table, static_cast<int>(Table::Consistent)))
-        actions.push_back(SetTable{Table::Consistent});
-    ImGui::SameLine();
-    if (ImGui::RadioButton("classic", &table, static_cast<int>(Table::Classic)))
-        actions.push_back(SetTable{Table::Classic});
-    ImGui::SameLine();
-    if (ImGui::RadioButton("trilinear", &table, static_cast<int>(Table::Trilinear)))
-        actions.push_back(SetTable{Table::Trilinear});
+    for (const Table kind : kTableKinds) {
+        ImGui::SameLine();
+        if (ImGui::RadioButton(tableName(kind), &table, static_cast<int>(kind))) actions.push_back(SetTable{kind});
+    }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("the trilinear interpolant's topology (MC33)");
 
+    // The panel's order: exhaustive, every surface, track click, contour tree.
     int method = static_cast<int>(extraction.method);
-    if (ImGui::RadioButton("exhaustive", &method, static_cast<int>(Method::Exhaustive))) {
-        actions.push_back(SetMethod{Method::Exhaustive});
-    }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("marching cubes: every cell, one mesh");
-    ImGui::SameLine();
-    if (ImGui::RadioButton("every surface", &method, static_cast<int>(Method::All))) {
-        actions.push_back(SetMethod{Method::All});
-    }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("each connected surface on its own");
-    ImGui::SameLine();
-    if (ImGui::RadioButton("track click", &method, static_cast<int>(Method::Track))) {
-        actions.push_back(SetMethod{Method::Track});
-    }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("click in the view: the surface there grows from the click");
-    // The fourth choice goes on a line of its own when the panel is too narrow for it.
-    const float treeWidth =
-        ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize("contour tree").x;
-    ImGui::SameLine();
-    if (ImGui::GetContentRegionAvail().x < treeWidth) ImGui::NewLine();
-    if (ImGui::RadioButton("contour tree", &method, static_cast<int>(Method::Tree))) {
-        actions.push_back(SetMethod{Method::Tree});
-    }
-    if (ImGui::IsItemHovered()) {
-        ImGui::SetTooltip("every surface from its contour-tree arc's seed: no scan once the tree is built");
+    bool first = true;
+    for (const Method choice : {Method::Exhaustive, Method::All, Method::Track, Method::Tree}) {
+        const MethodLabels& labels = methodLabels(choice);
+        if (!first) {
+            // A choice goes on a line of its own when the panel is too narrow for it.
+            const float width =
+                ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(labels.choice).x;
+            ImGui::SameLine();
+            if (ImGui::GetContentRegionAvail().x < width) ImGui::NewLine();
+        }
+        first = false;
+        if (ImGui::RadioButton(labels.choice, &method, static_cast<int>(choice))) actions.push_back(SetMethod{choice});
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", labels.tooltip);
     }
     if (extraction.method == Method::Tree) persistenceSlider(state, actions);
     progress(extraction, state.stats.deterministic);

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -21,6 +22,7 @@
 #include "cli/commands.h"
 #include "cli/source.h"
 #include "cli/timed_extraction.h"
+#include "cli/vocabulary.h"
 #include "isotrack/continuation.h"
 #include "isotrack/errors.h"
 #include "isotrack/extract.h"
@@ -30,10 +32,16 @@
 namespace isotrack::cli {
 namespace {
 
+// One of core's methods, or none for stream.
+using BenchMethod = std::optional<Method>;
+constexpr const char* kStream = "stream";
+
+const char* benchMethodName(const BenchMethod& method) { return method ? methodName(*method) : kStream; }
+
 struct BenchOptions {
     SourceOptions source;
-    std::string table = "consistent";
-    std::vector<std::string> methods{"mc", "all", "track"};
+    TableKind table = TableKind::Consistent;
+    std::vector<BenchMethod> methods{Method::Exhaustive, Method::All, Method::Track};
     std::vector<int> threads{1, 2};
     std::vector<double> seed;
     int repeat = 5;
@@ -41,7 +49,7 @@ struct BenchOptions {
 };
 
 struct Config {
-    std::string method;
+    BenchMethod method;
     int threads = 1;
     std::vector<double> seconds;
     std::size_t triangles = 0, vertices = 0, surfaces = 0;
@@ -49,29 +57,32 @@ struct Config {
 };
 
 int runBench(const BenchOptions& options) {
-    const TableKind table = parseTableKind(options.table);
-    const bool tracks = std::find(options.methods.begin(), options.methods.end(), "track") != options.methods.end();
+    checkSourceOptions(options.source);
+    const TableKind table = options.table;
+    const bool tracks =
+        std::find(options.methods.begin(), options.methods.end(), BenchMethod(Method::Track)) != options.methods.end();
     if (tracks && options.seed.size() != 3) throw InputError("--methods track needs --seed X,Y,Z (world coordinates)");
     const Source source = loadSource(options.source);
     prepareTables(table);  // the tables are generated once, before any timing
 
     std::vector<Config> configs;
-    for (const std::string& method : options.methods) {
+    for (const BenchMethod& method : options.methods) {
         for (const int threads : options.threads) {
-            configs.push_back({method, method == "track" ? std::min(threads, kMaxTrackThreads) : threads, {}, 0, 0, 0});
+            const bool track = method == Method::Track;
+            configs.push_back({method, track ? std::min(threads, kMaxTrackThreads) : threads, {}, 0, 0, 0});
         }
     }
     const std::vector<double> gridSeed = seedInGrid(source.volume, options.seed, WorldFrame::Lps);  // a world point
     for (int pass = 0; pass < options.repeat; ++pass) {
         for (std::size_t i = 0; i < configs.size(); ++i) {
             Config& config = configs[pass % 2 ? configs.size() - 1 - i : i];
-            if (config.method == "stream") {
+            if (!config.method) {
                 config.seconds.push_back(secondsOf(
                     [&] { config.samplesAbove = countSamplesAbove(source.volume, source.iso, config.threads); }));
                 continue;
             }
             const TimedExtraction run = extractTimed(
-                source.volume, extractRequest(parseMethod(config.method), source.iso, table, config.threads, gridSeed));
+                source.volume, extractRequest(*config.method, source.iso, table, config.threads, gridSeed));
             config.seconds.push_back(run.seconds);
             config.triangles = 0, config.vertices = 0;
             config.surfaces = run.surfaces.size();
@@ -85,16 +96,17 @@ int runBench(const BenchOptions& options) {
     if (options.json) {
         nlohmann::json runs = nlohmann::json::array();
         for (const Config& c : configs) {
-            nlohmann::json run{{"method", c.method},
+            nlohmann::json run{{"method", benchMethodName(c.method)},
                                {"threads", c.threads},
                                {"seconds", median(c.seconds)},
                                {"seconds_all", c.seconds}};
-            if (c.method == "stream") {
+            if (!c.method) {
                 run["samples_above"] = c.samplesAbove;
             } else {
                 run["triangles"] = c.triangles;
                 run["vertices"] = c.vertices;
-                run["components"] = c.method == "mc" ? nlohmann::json(nullptr) : nlohmann::json(c.surfaces);
+                run["components"] =
+                    c.method == Method::Exhaustive ? nlohmann::json(nullptr) : nlohmann::json(c.surfaces);
             }
             runs.push_back(run);
         }
@@ -108,14 +120,14 @@ int runBench(const BenchOptions& options) {
     std::printf("%s at iso %g (%s table): medians of %d interleaved runs\n", source.name.c_str(), source.iso,
                 tableKindName(table), options.repeat);
     for (const Config& c : configs) {
-        std::printf("  %-6s %2d thread%s %10.2f ms  ", c.method.c_str(), c.threads, c.threads == 1 ? " " : "s",
+        std::printf("  %-6s %2d thread%s %10.2f ms  ", benchMethodName(c.method), c.threads, c.threads == 1 ? " " : "s",
                     median(c.seconds) * 1e3);
-        if (c.method == "stream") {
+        if (!c.method) {
             std::printf("every sample read once, %zu at or above the isovalue\n", c.samplesAbove);
             continue;
         }
         std::printf("%zu triangles", c.triangles);
-        if (c.method != "mc") std::printf(" in %zu surface%s", c.surfaces, c.surfaces == 1 ? "" : "s");
+        if (c.method != Method::Exhaustive) std::printf(" in %zu surface%s", c.surfaces, c.surfaces == 1 ? "" : "s");
         std::printf("\n");
     }
     return 0;
@@ -129,11 +141,14 @@ RunCommand addBenchCommand(CLI::App& app) {
         app.add_subcommand("bench", "Time several methods and thread counts in one process, interleaved (medians)");
     addSourceOptions(*command, options->source);
     addTableOption(*command, options->table);
-    command
-        ->add_option("--methods", options->methods,
-                     "Methods to time, e.g. mc,all,track (default: those three); stream reads every sample once")
-        ->delimiter(',')
-        ->check(CLI::IsMember({"mc", "track", "all", "stream"}));
+    addMethodListOption(
+        *command, "--methods", {Method::Exhaustive, Method::Track, Method::All}, {kStream},
+        [options](const std::vector<std::string>& names) {
+            options->methods.clear();
+            for (const std::string& name : names)
+                options->methods.push_back(name == kStream ? BenchMethod() : BenchMethod(parseMethod(name)));
+        },
+        "Methods to time, e.g. mc,all,track (default: those three); stream reads every sample once");
     command->add_option("--threads", options->threads, "Thread counts to time, e.g. 1,2 (default)")
         ->delimiter(',')
         ->check(CLI::Range(1, 256));

@@ -10,7 +10,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <thread>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -19,6 +19,7 @@
 #include "cli/commands.h"
 #include "cli/source.h"
 #include "cli/timed_extraction.h"
+#include "cli/vocabulary.h"
 #include "isotrack/continuation.h"
 #include "isotrack/contour_tree.h"
 #include "isotrack/extract.h"
@@ -26,24 +27,23 @@
 #include "isotrack/marching_cubes.h"
 #include "isotrack/orientation.h"
 #include "isotrack/tables.h"
+#include "isotrack/threads.h"
 #include "isotrack/tracking.h"
 
 namespace isotrack::cli {
 namespace {
 
-int defaultThreads() { return std::max(1, int(std::thread::hardware_concurrency())); }
-
 struct ExtractOptions {
     SourceOptions source;
-    std::string table = "consistent";
-    std::string method = "mc";
+    TableKind table = TableKind::Consistent;
+    Method method = Method::Exhaustive;
     std::vector<double> seed;
-    int threads = defaultThreads();
+    int threads = defaultThreadCount();
     int repeat = 1;
     std::string out;
-    std::string outDir;         // --method all: one file per surface
-    std::string outFormat;      // of the --out-dir files: ply, obj or stl
-    std::string frame = "lps";  // of the written meshes, the seed and the bounds
+    std::string outDir;                  // --method all: one file per surface
+    std::string outFormat;               // of the --out-dir files: ply, obj or stl
+    WorldFrame frame = WorldFrame::Lps;  // of the written meshes, the seed and the bounds
     bool json = false;
     double minPersistence = 0.0;      // --method tree: prune the tree's leaf branches below it
     std::size_t minSize = 0;          // --method tree: prune leaf branches sweeping fewer samples
@@ -79,21 +79,29 @@ nlohmann::json surfaceJson(const SurfaceStats& s) {
     return j;
 }
 
+// One --arc-iso item, I:V: the surface's rank and its isovalue.
+std::pair<std::size_t, double> parseArcIso(const std::string& item) {
+    const std::size_t colon = item.find(':');
+    try {
+        if (colon == std::string::npos) throw std::invalid_argument(item);
+        std::size_t used = 0;
+        const std::string indexText = item.substr(0, colon), isoText = item.substr(colon + 1);
+        const std::size_t index = std::stoul(indexText, &used);
+        if (used != indexText.size() || indexText.find('-') != std::string::npos) throw std::invalid_argument(item);
+        const double iso = std::stod(isoText, &used);
+        if (used != isoText.size() || !std::isfinite(iso)) throw std::invalid_argument(item);
+        return {index, iso};
+    } catch (const std::exception&) {
+        throw InputError("--arc-iso " + item + ": expected SURFACE:ISOVALUE, e.g. 0:350");
+    }
+}
+
 // --arc-iso I:V: surface I (its rank at --iso) at its own isovalue V, followed
 // along the contour tree (followArc); the other surfaces stay as they are.
 void applyArcIsovalues(const ExtractOptions& options, const Volume& volume, const ContourTree& tree,
                        std::vector<Surface>& surfaces, std::vector<double>& isovalues) {
     for (const std::string& item : options.arcIso) {
-        const std::size_t colon = item.find(':');
-        std::size_t index = 0;
-        double iso = 0.0;
-        try {
-            if (colon == std::string::npos) throw std::invalid_argument(item);
-            index = std::stoul(item.substr(0, colon));
-            iso = std::stod(item.substr(colon + 1));
-        } catch (const std::exception&) {
-            throw InputError("--arc-iso " + item + ": expected SURFACE:ISOVALUE, e.g. 0:350");
-        }
+        const auto [index, iso] = parseArcIso(item);
         if (index >= surfaces.size() || !surfaces[index].stats.arc) {
             throw InputError("--arc-iso " + item + ": there is no surface " + std::to_string(index) + " (" +
                              std::to_string(surfaces.size()) + " at --iso)");
@@ -160,8 +168,8 @@ void countMesh(Extraction& out) {
 // One run of the chosen method; only extraction is timed (for tree, the
 // tree is built once, before, and timed on its own).
 Extraction extractOnce(const ExtractOptions& options, const Source& source, TableKind table, const ContourTree* tree) {
-    const Method method = parseMethod(options.method);
-    const WorldFrame frame = parseWorldFrame(options.frame);
+    const Method method = options.method;
+    const WorldFrame frame = options.frame;
     const std::vector<double> seed = seedInGrid(source.volume, options.seed, frame);
     ExtractRequest request = extractRequest(method, source.iso, table, options.threads, seed);
     request.tree = tree;
@@ -235,8 +243,7 @@ Extraction extract(const ExtractOptions& options, const Source& source, TableKin
     std::size_t before = 0, peak = 0;
     std::optional<ContourTree> tree;
     double treeSeconds = 0.0;
-    if (parseMethod(options.method) == Method::Tree) {
-        if (table != TableKind::Consistent) throw InputError("--method tree works with the consistent table only");
+    if (options.method == Method::Tree) {
         treeSeconds = secondsOf([&] {
             tree = computeContourTree(source.volume, options.threads);
             if (options.minPersistence > 0 || options.minSize > 0)
@@ -260,23 +267,39 @@ Extraction extract(const ExtractOptions& options, const Source& source, TableKin
     return out;
 }
 
-int runExtract(const ExtractOptions& options) {
-    const TableKind table = parseTableKind(options.table);
-    if (!options.out.empty()) meshFormatOf(options.out);  // an unknown extension fails before the work
-    const bool perSurface = options.method == "all" || options.method == "tree";
-    if (!options.outDir.empty() && !perSurface)
-        throw InputError("--out-dir writes one file per surface and needs --method all or tree, not " + options.method);
+bool perSurface(Method method) { return method == Method::All || method == Method::Tree; }
+
+// Everything that depends on the arguments alone, checked before the volume is
+// read or generated: a mistake costs no time, however large the volume.
+void checkExtractOptions(const ExtractOptions& options) {
+    checkSourceOptions(options.source);
+    const std::string method = methodName(options.method);
+    checkMethodSeed(options.method, options.seed);
+    if (!options.out.empty()) meshFormatOf(options.out);  // an unknown extension
+    if (!options.outDir.empty() && !perSurface(options.method))
+        throw InputError("--out-dir writes one file per surface and needs --method all or tree, not " + method);
     const bool treeOptions =
         options.minPersistence > 0 || options.minSize > 0 || options.largestArcs > 0 || !options.arcIso.empty();
-    if (treeOptions && options.method != "tree")
+    if (treeOptions && options.method != Method::Tree)
         throw InputError("--min-persistence, --min-size, --largest-arcs and --arc-iso need --method tree, not " +
-                         options.method);
+                         method);
+    for (const std::string& item : options.arcIso) parseArcIso(item);
+    if (options.method == Method::Tree && options.table != TableKind::Consistent)
+        throw InputError(std::string("--method tree works with the consistent table only, not ") +
+                         tableKindName(options.table));
+}
+
+int runExtract(const ExtractOptions& options) {
+    checkExtractOptions(options);
+    const TableKind table = options.table;
+    const std::string method = methodName(options.method);
     const Source source = loadSource(options.source);
     const Dims& dims = source.volume.dims();
 
     const Extraction result = extract(options, source, table);
     const double seconds = median(result.seconds);
-    if (!options.out.empty()) writeMesh(options.out, result.mesh, perSurface ? &result.faceComponent : nullptr);
+    if (!options.out.empty())
+        writeMesh(options.out, result.mesh, perSurface(options.method) ? &result.faceComponent : nullptr);
 
     const std::size_t cellsTotal = std::size_t(std::max(dims[0] - 1, 0)) * std::size_t(std::max(dims[1] - 1, 0)) *
                                    std::size_t(std::max(dims[2] - 1, 0));
@@ -285,12 +308,12 @@ int runExtract(const ExtractOptions& options) {
     if (options.json) {
         nlohmann::json report{
             {"source", source.name},
-            {"method", options.method},
+            {"method", method},
             {"table", tableKindName(table)},
             {"isovalue", source.iso},
             {"dims", {dims[0], dims[1], dims[2]}},
             {"spacing", source.volume.spacing()},
-            {"frame", worldFrameName(parseWorldFrame(options.frame))},
+            {"frame", worldFrameName(options.frame)},
             {"scalar_type", scalarTypeName(source.volume.type())},
             {"triangles", result.triangles},
             {"vertices", result.vertices},
@@ -299,7 +322,8 @@ int runExtract(const ExtractOptions& options) {
             {"cells_total", cellsTotal},
             {"seconds", seconds},
             {"seconds_all", result.seconds},
-            {"threads", options.method == "track" ? std::min(options.threads, kMaxTrackThreads) : options.threads},
+            {"threads",
+             options.method == Method::Track ? std::min(options.threads, kMaxTrackThreads) : options.threads},
             {"mesh_bytes", result.meshBytes},
             {"soup_bytes", soupBytes},
             {"mesh_to_soup", soupBytes ? double(result.meshBytes) / double(soupBytes) : 0.0},
@@ -309,17 +333,17 @@ int runExtract(const ExtractOptions& options) {
              result.residentPeak > result.residentBefore ? result.residentPeak - result.residentBefore : 0},
             {"volume_bytes", source.volume.byteSize()},
         };
-        if (options.method == "tree") report["tree_seconds"] = result.treeSeconds;
+        if (options.method == Method::Tree) report["tree_seconds"] = result.treeSeconds;
         if (!options.out.empty()) report["out"] = options.out;
         if (!options.outDir.empty()) report["out_files"] = result.surfaceFiles;
-        if (options.method != "mc") report["surfaces"] = result.surfaces;
+        if (options.method != Method::Exhaustive) report["surfaces"] = result.surfaces;
         std::printf("%s\n", report.dump().c_str());
     } else {
         std::printf("%s: %zu triangles, %zu vertices", source.name.c_str(), result.triangles, result.vertices);
         if (result.components) std::printf(" in %zu surface%s", *result.components, *result.components == 1 ? "" : "s");
         std::printf(" at iso %g (%s table, method %s) in %.3f ms%s%s\n", source.iso, tableKindName(table),
-                    options.method.c_str(), seconds * 1e3, options.out.empty() ? "" : " -> ", options.out.c_str());
-        if (options.method == "tree") std::printf("contour tree built in %.3f ms\n", result.treeSeconds * 1e3);
+                    method.c_str(), seconds * 1e3, options.out.empty() ? "" : " -> ", options.out.c_str());
+        if (options.method == Method::Tree) std::printf("contour tree built in %.3f ms\n", result.treeSeconds * 1e3);
         if (!options.outDir.empty())
             std::printf("%zu surface file%s in %s\n", result.surfaceFiles.size(),
                         result.surfaceFiles.size() == 1 ? "" : "s", options.outDir.c_str());
@@ -334,11 +358,9 @@ RunCommand addExtractCommand(CLI::App& app) {
     CLI::App* command = app.add_subcommand("extract", "Extract an isosurface and report or save it");
     addSourceOptions(*command, options->source);
     addTableOption(*command, options->table);
-    command
-        ->add_option("--method", options->method,
-                     "mc: every cell, one mesh; track: the one surface through --seed; all: every surface separately; "
-                     "tree: every surface, each from its contour-tree arc's seed")
-        ->check(CLI::IsMember({"mc", "track", "all", "tree"}));
+    addMethodOption(*command, options->method,
+                    "mc (default): every cell, one mesh; track: the one surface through --seed (required); all: every "
+                    "surface separately; tree: every surface, each from its contour-tree arc's seed");
     command
         ->add_option("--min-persistence", options->minPersistence,
                      "With --method tree: leave out the surfaces of leaf branches less persistent than P")
@@ -354,10 +376,12 @@ RunCommand addExtractCommand(CLI::App& app) {
         ->delimiter(',');
     command
         ->add_option("--seed", options->seed,
-                     "Point X,Y,Z in --frame: tracking starts at the crossed edge nearest to it")
+                     "Point X,Y,Z in --frame, required by --method track (and used by it only): tracking starts at "
+                     "the crossed edge nearest to it")
         ->delimiter(',')
         ->expected(3);
-    command->add_option("--threads", options->threads, "Threads (default: all cores)")->check(CLI::Range(1, 256));
+    command->add_option("--threads", options->threads, "Threads (default: one per hardware thread)")
+        ->check(CLI::Range(1, 256));
     command->add_option("--repeat", options->repeat, "Run the extraction K times; seconds is the median")
         ->check(CLI::Range(1, 1000));
     command->add_option(
@@ -370,10 +394,8 @@ RunCommand addExtractCommand(CLI::App& app) {
                      "Format of the --out-dir files: ply, obj or stl (default: --out's extension, else ply)")
         ->check(CLI::IsMember({"ply", "obj", "stl"}))
         ->needs(outDir);
-    command
-        ->add_option("--frame", options->frame,
-                     "Frame of the written meshes, --seed and bounds: lps (world, default), ras, or voxel (indices)")
-        ->check(CLI::IsMember({"lps", "ras", "voxel"}, CLI::ignore_case));
+    addFrameOption(*command, options->frame,
+                   "Frame of the written meshes, --seed and bounds: lps (world, default), ras, or voxel (indices)");
     command->add_flag("--json", options->json, "Print one JSON object on stdout");
     return [options] { return runExtract(*options); };
 }

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <memory>
 #include <numeric>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "cli/source.h"
 #include "isotrack/dicom.h"
 #include "isotrack/io.h"
+#include "isotrack/isovalue.h"
 #include "isotrack/orientation.h"
 #include "isotrack/volume.h"
 
@@ -99,7 +101,7 @@ nlohmann::json infoJson(const InfoOptions& options, const Volume& volume, const 
         {"origin", volume.origin()},
         {"extent",
          {(d[0] - 1) * volume.spacing()[0], (d[1] - 1) * volume.spacing()[1], (d[2] - 1) * volume.spacing()[2]}},
-        {"frame", "lps"},
+        {"frame", worldFrameName(WorldFrame::Lps)},
         {"direction", volume.direction()},  // the index axes' unit vectors
         {"orientation", orientationCode(volume.direction())},
         {"world_bounds", worldBounds(volume)},
@@ -167,16 +169,33 @@ void printSeries(const std::vector<DicomSeries>& list) {
     }
 }
 
+// The isovalue extract, render, tree, bench and the viewer open the file at
+// without --iso (core's suggestIsovalue), and the step of the rule that chose it.
+void addSuggestedIsovalue(const std::optional<IsovalueSuggestion>& suggestion, nlohmann::json& j) {
+    j["suggested_isovalue"] = suggestion ? nlohmann::json(suggestion->value) : nlohmann::json(nullptr);
+    j["suggested_isovalue_rule"] =
+        suggestion ? nlohmann::json(isovalueRuleName(suggestion->rule)) : nlohmann::json(nullptr);
+}
+
+void printSuggestedIsovalue(const std::optional<IsovalueSuggestion>& suggestion) {
+    if (suggestion)
+        std::printf("  suggested isovalue: %.10g (%s)\n", suggestion->value, isovalueRuleName(suggestion->rule));
+}
+
 int runInfo(const InfoOptions& options) {
     const Volume volume = loadVolumeFile(options.path, options.raw);
     const Histogram h = histogram(volume, options.bins);
     const std::vector<DicomSeries> series = dicomSeries(options);
+    std::optional<IsovalueSuggestion> suggestion;
+    if (!h.empty()) suggestion = isovalueSuggestion(volume);
     if (options.json) {
         nlohmann::json j = infoJson(options, volume, h);
+        addSuggestedIsovalue(suggestion, j);
         if (!series.empty()) j["series"] = seriesJson(series);
         std::printf("%s\n", j.dump().c_str());
     } else {
         printInfo(options, volume, h);
+        printSuggestedIsovalue(suggestion);
         printSeries(series);
     }
     return 0;

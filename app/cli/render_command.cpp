@@ -2,6 +2,7 @@
 // or Mesa's surfaceless platform) or OSMesa; see docs/headless.md.
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -14,6 +15,7 @@
 #include "cli/commands.h"
 #include "cli/source.h"
 #include "cli/timed_extraction.h"
+#include "cli/vocabulary.h"
 #include "headless/headless_context.h"
 #include "isotrack/errors.h"
 #include "isotrack/extract.h"
@@ -28,8 +30,8 @@ constexpr int kMaxImageSide = 8192;
 
 struct RenderOptions {
     SourceOptions source;
-    std::string table = "consistent";
-    std::string method = "mc";
+    TableKind table = TableKind::Consistent;
+    Method method = Method::Exhaustive;
     std::string seed;
     std::string out;
     std::string size = "640x480";
@@ -89,38 +91,40 @@ Vec3d parsePoint(const std::string& text) {
     throw InputError("--seed \"" + text + "\": expected three finite numbers X,Y,Z (a world-space point)");
 }
 
-Vec3d volumeCentre(const Volume& volume) {
-    Vec3d centre{};
-    for (int axis = 0; axis < 3; ++axis) {
-        centre[axis] = volume.origin()[axis] + 0.5 * volume.spacing()[axis] * double(volume.dims()[axis] - 1);
-    }
-    return centre;
+// --seed as a world point; empty without one.
+std::vector<double> seedPoint(const RenderOptions& options) {
+    if (options.seed.empty()) return {};
+    const Vec3d point = parsePoint(options.seed);
+    return {point.begin(), point.end()};
 }
 
 // The meshes to draw, largest first for "all", on one thread (a tracked
 // surface's vertex order is then the same from run to run); seconds in *seconds.
-std::vector<Mesh> extractSurfaces(const RenderOptions& options, const Source& source, TableKind table,
-                                  double* seconds) {
-    const Method method = parseMethod(options.method);
-    std::vector<double> seed;
-    if (method == Method::Track) {
-        const Vec3d point = options.seed.empty() ? volumeCentre(source.volume) : parsePoint(options.seed);
-        seed.assign(point.begin(), point.end());
-        if (!options.seed.empty()) seed = seedInGrid(source.volume, seed, WorldFrame::Lps);  // a world point
-    }
-    TimedExtraction run = extractTimed(source.volume, extractRequest(method, source.iso, table, 1, seed));
+std::vector<Mesh> extractSurfaces(const RenderOptions& options, const Source& source, double* seconds) {
+    const std::vector<double> seed = seedInGrid(source.volume, seedPoint(options), WorldFrame::Lps);
+    TimedExtraction run =
+        extractTimed(source.volume, extractRequest(options.method, source.iso, options.table, 1, seed));
     *seconds = run.seconds;
     std::vector<Mesh> meshes;
     for (Surface& surface : run.surfaces) meshes.push_back(std::move(surface.mesh));
     return meshes;
 }
 
+bool endsWithPng(const std::string& path) {
+    if (path.size() < 4) return false;
+    std::string extension = path.substr(path.size() - 4);
+    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return extension == ".png";
+}
+
 int runRender(const RenderOptions& options) {
-    const TableKind table = parseTableKind(options.table);
+    // Everything that depends on the arguments alone, before the volume is read.
+    checkSourceOptions(options.source);
     render::SnapshotOptions snapshotOptions;
     parseSize(options.size, snapshotOptions.width, snapshotOptions.height);
     if (!options.camera.empty()) snapshotOptions.camera = render::parseCamera(options.camera);
-    if (!options.seed.empty() && options.method != "track") throw InputError("--seed: only used with --method track");
+    checkMethodSeed(options.method, seedPoint(options));
+    if (!endsWithPng(options.out)) throw InputError("--out " + options.out + ": render writes a .png file");
     snapshotOptions.wireframe = options.wireframe;
     snapshotOptions.boundingBox = !options.noBox;
     snapshotOptions.selected = options.select;
@@ -129,7 +133,7 @@ int runRender(const RenderOptions& options) {
 
     const Source source = loadSource(options.source);
     double extractSeconds = 0.0;
-    const std::vector<Mesh> meshes = extractSurfaces(options, source, table, &extractSeconds);
+    const std::vector<Mesh> meshes = extractSurfaces(options, source, &extractSeconds);
     const double extractMs = extractSeconds * 1e3;
     if (options.select && *options.select >= meshes.size()) {
         throw InputError(
@@ -163,7 +167,7 @@ int runRender(const RenderOptions& options) {
                               {"width", snapshot.image.width},
                               {"height", snapshot.image.height},
                               {"source", source.name},
-                              {"method", options.method},
+                              {"method", methodName(options.method)},
                               {"surfaces", meshes.size()},
                               {"triangles", triangles},
                               {"camera", render::formatCamera(snapshot.camera)},
@@ -188,9 +192,9 @@ int runRender(const RenderOptions& options) {
     std::printf(
         "%s: %dx%d, %s %s, %zu surface%s, %zu triangles, --camera %s; extract %.1f ms, render %.1f ms "
         "(context %.1f, draw %.1f)\n",
-        options.out.c_str(), snapshot.image.width, snapshot.image.height, source.name.c_str(), options.method.c_str(),
-        meshes.size(), meshes.size() == 1 ? "" : "s", triangles, render::formatCamera(snapshot.camera).c_str(),
-        extractMs, contextMs + drawMs, contextMs, drawMs);
+        options.out.c_str(), snapshot.image.width, snapshot.image.height, source.name.c_str(),
+        methodName(options.method), meshes.size(), meshes.size() == 1 ? "" : "s", triangles,
+        render::formatCamera(snapshot.camera).c_str(), extractMs, contextMs + drawMs, contextMs, drawMs);
     std::printf("drawn in %zu draw call%s", snapshot.counters.drawCalls, snapshot.counters.drawCalls == 1 ? "" : "s");
     if (options.frames > 0) {
         std::printf("; %d more frames, median %.2f ms (issuing the GL calls %.2f ms)", options.frames,
@@ -209,13 +213,13 @@ RunCommand addRenderCommand(CLI::App& app) {
     CLI::App* command =
         app.add_subcommand("render", "Draw the isosurfaces into a PNG, headless (EGL or OSMesa, no display needed)");
     addSourceOptions(*command, options->source);
-    command
-        ->add_option("--method", options->method,
-                     "mc: every cell as one surface; track: the surface through --seed; all: every surface, "
-                     "each in its own colour, largest first")
-        ->check(CLI::IsMember({"mc", "track", "all"}));
+    addMethodOption(*command, options->method,
+                    "mc (default): every cell as one surface; track: the surface through --seed (required); all: "
+                    "every surface, each in its own colour, largest first",
+                    {Method::Exhaustive, Method::Track, Method::All});
     command->add_option("--seed", options->seed,
-                        "X,Y,Z: world point near the surface to track (default: the volume's centre)");
+                        "X,Y,Z: world point near the surface to track, required by --method track (and used by it "
+                        "only)");
     addTableOption(*command, options->table);
     command->add_option("--out", options->out, "The PNG file to write")->required();
     command->add_option("--size", options->size, "WIDTHxHEIGHT in pixels, each 1..8192 (default 640x480)");

@@ -33,11 +33,6 @@ ScalarType rawScalarType(const std::string& name) {
     return type->second;
 }
 
-void addTableOption(CLI::App& command, std::string& table) {
-    command.add_option("--table", table, "Triangle table: consistent (default), classic or trilinear")
-        ->check(CLI::IsMember({"consistent", "classic", "trilinear"}));
-}
-
 void addRawOptions(CLI::App& command, RawOptions& raw, CLI::Option* volume) {
     std::vector<std::string> typeNames;
     for (const auto& entry : kRawTypes) typeNames.push_back(entry.first);
@@ -75,7 +70,9 @@ void addSourceOptions(CLI::App& command, SourceOptions& options) {
     auto* field = command.add_option("--field", options.fieldSpec, "Built-in field NAME[:N] (" + names + ")");
     volume->excludes(field);
     field->excludes(volume);
-    command.add_option("--iso", options.iso, "Isovalue (default: the field's own, or from a file's histogram)");
+    command.add_option("--iso", options.iso,
+                       "Isovalue (default: the field's own, or a file's suggested isovalue, as `isotrack info` "
+                       "prints it)");
     addRawOptions(command, options.raw, volume);
 }
 
@@ -99,10 +96,16 @@ Volume loadVolumeFile(const std::string& path, const RawOptions& raw) {
     return loadRaw(path, rawLayout(raw));
 }
 
-Source loadSource(const SourceOptions& options) {
+void checkSourceOptions(const SourceOptions& options) {
     if (options.volumePath.empty() == options.fieldSpec.empty()) {
         throw InputError("give exactly one of --volume FILE or --field NAME[:N]");
     }
+    if (!options.fieldSpec.empty()) parseFieldSpec(options.fieldSpec);
+    if (options.iso && !std::isfinite(*options.iso)) throw InputError("--iso: must be a finite number");
+}
+
+Source loadSource(const SourceOptions& options) {
+    checkSourceOptions(options);
     VolumeSource spec;
     if (!options.fieldSpec.empty()) {
         spec.text = options.fieldSpec;
@@ -123,7 +126,6 @@ Source loadSource(const SourceOptions& options) {
     } else {
         throw InputError(options.volumePath + ": no finite samples, give --iso");
     }
-    if (!std::isfinite(source.iso)) throw InputError("--iso: must be a finite number");
     return source;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // The volume a command works on: a file (--volume) or a built-in field (--field),
-// and the isovalue (--iso, defaulting per field, or to the middle of a file's range).
+// and the isovalue (--iso, defaulting to the field's own, or to a file's suggested
+// isovalue: core's suggestIsovalue, the valley above the histogram's tallest peak).
 // A headerless file is read as raw samples when its layout is given with --dims.
 #include <optional>
 #include <string>
@@ -39,9 +40,6 @@ void addSourceOptions(CLI::App& command, SourceOptions& options);
 // Adds the raw layout options; they need `volume` (the --volume option).
 void addRawOptions(CLI::App& command, RawOptions& raw, CLI::Option* volume);
 
-// Adds --table consistent|classic (the triangle table) to `command`.
-void addTableOption(CLI::App& command, std::string& table);
-
 // --type's name (scalarTypeName's) as a type; InputError for another.
 ScalarType rawScalarType(const std::string& name);
 
@@ -54,7 +52,11 @@ struct Source {
     double iso = 0.0;
 };
 
-// Loads the file or builds the field. Throws isotrack's typed errors.
+// What can be checked before anything is read: one of --volume and --field,
+// a well-formed field spec, a finite --iso. Throws InputError.
+void checkSourceOptions(const SourceOptions& options);
+
+// Loads the file or builds the field, after checkSourceOptions. Throws isotrack's typed errors.
 Source loadSource(const SourceOptions& options);
 
 // A --seed point given in `frame` (the LPS world unless --frame says otherwise)

@@ -1,15 +1,23 @@
 #include "cli/timed_extraction.h"
 
 #include <algorithm>
+#include <string>
 
 #include "isotrack/errors.h"
 
 namespace isotrack::cli {
 
+void checkMethodSeed(Method method, const std::vector<double>& seed) {
+    if (method == Method::Track && seed.size() != 3)
+        throw InputError("--method track needs --seed X,Y,Z, the point whose surface is tracked");
+    if (method != Method::Track && !seed.empty())
+        throw InputError(std::string("--seed is used by --method track only, not ") + methodName(method));
+}
+
 ExtractRequest extractRequest(Method method, double iso, TableKind table, int threads,
                               const std::vector<double>& seed) {
     if (method == Method::Track && seed.size() != 3)
-        throw InputError("--method track needs --seed X,Y,Z (world coordinates)");
+        throw InputError("--method track needs --seed X,Y,Z, the point whose surface is tracked");
     ExtractRequest request;
     request.method = method;
     request.iso = iso;

@@ -21,6 +21,11 @@ double secondsOf(Fn&& fn) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// --method track needs --seed X,Y,Z, and nothing else uses one: InputError for
+// a track without a seed or a seed without track (it would be ignored). An
+// arguments-only check, made before any volume is read.
+void checkMethodSeed(Method method, const std::vector<double>& seed);
+
 // The request for `method` at `iso`; for track, `seed` (a world point, given as
 // --seed) must hold 3 values, and finding the crossed edge nearest it is timed too.
 ExtractRequest extractRequest(Method method, double iso, TableKind table, int threads, const std::vector<double>& seed);

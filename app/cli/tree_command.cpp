@@ -7,7 +7,6 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "cli/commands.h"
@@ -17,6 +16,7 @@
 #include "isotrack/contour_tree.h"
 #include "isotrack/errors.h"
 #include "isotrack/safe_write.h"
+#include "isotrack/threads.h"
 #include "isotrack/tree_layout.h"
 #include "render/palette.h"
 
@@ -30,7 +30,7 @@ struct TreeOptions {
     double minPersistence = 0.0;
     std::size_t minSize = 0;
     std::size_t maxBranches = 1000;
-    int threads = std::max(1, int(std::thread::hardware_concurrency()));
+    int threads = defaultThreadCount();
 };
 
 nlohmann::json treeJson(const ContourTree& tree, double at) {
@@ -74,6 +74,8 @@ int runTree(const TreeOptions& options) {
     const bool json = options.out.size() >= 5 && options.out.compare(options.out.size() - 5, 5, ".json") == 0;
     if (!options.out.empty() && !svg && !json)
         throw InputError("--out " + options.out + ": the tree is written as .json or .svg");
+    if (options.at && !std::isfinite(*options.at)) throw InputError("--at: must be a finite number");
+    checkSourceOptions(options.source);
     const Source source = loadSource(options.source);
     const double at = options.at.value_or(source.iso);
     ContourTree tree;

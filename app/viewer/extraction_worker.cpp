@@ -13,6 +13,7 @@
 #include "isotrack/errors.h"
 #include "isotrack/extract.h"
 #include "isotrack/source.h"
+#include "ui/method_labels.h"
 
 namespace isotrack::viewer {
 namespace {
@@ -28,16 +29,6 @@ double msSince(Clock::time_point start) {
 std::vector<float> histogramOf(const Volume& volume, const std::array<double, 2>& range) {
     const std::vector<std::uint64_t> counts = sampleHistogram(volume, range, kHistogramBins);
     return std::vector<float>(counts.begin(), counts.end());
-}
-
-const char* methodPhase(ui::Method method) {
-    switch (method) {
-        case ui::Method::Exhaustive: return "marching cubes";
-        case ui::Method::Track: return "tracking";
-        case ui::Method::All: return "every surface";
-        case ui::Method::Tree: return "surfaces from the contour tree";
-    }
-    return "extracting";
 }
 
 // Thrown inside a pass when the flag is raised; caught by work().
@@ -218,7 +209,7 @@ std::shared_ptr<const LoadedVolume> ExtractionWorker::volumeFor(const VolumeSour
 void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVolume& loaded, ExtractionResult& result) {
     const std::string key = loaded.source.text + "|" + ui::methodName(request.method);
     const auto known = lastMs_.find(key);
-    setPhase(methodPhase(request.method), known != lastMs_.end() ? known->second : 0.0);
+    setPhase(ui::methodLabels(request.method).work, known != lastMs_.end() ? known->second : 0.0);
     const Volume& volume = loaded.volume;
     const auto start = Clock::now();
     if (request.onlyFlexible) {
@@ -238,7 +229,7 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
             exhaustive.tree = &treeOf(volume, request.minPersistence);
             result.tree = lastTree_;
             result.treeLayout = treeLayout_;
-            setPhase(methodPhase(request.method), known != lastMs_.end() ? known->second : 0.0);
+            setPhase(ui::methodLabels(request.method).work, known != lastMs_.end() ? known->second : 0.0);
         }
         result.surfaces = isotrack::extract(volume, exhaustive);
     }

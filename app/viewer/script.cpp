@@ -1,5 +1,6 @@
 #include "viewer/script.h"
 
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -9,7 +10,9 @@
 #include <sstream>
 
 #include "isotrack/errors.h"
+#include "isotrack/extract.h"
 #include "isotrack/fields.h"
+#include "isotrack/tables.h"
 
 namespace isotrack::viewer {
 namespace {
@@ -25,13 +28,21 @@ struct Syntax {
     std::set<std::string> keywords;
 };
 
+// The keywords of `table` and `method`: core's names.
+template <class Enum, std::size_t N>
+std::set<std::string> namesOf(const std::array<Enum, N>& values, const char* (*nameOf)(Enum)) {
+    std::set<std::string> names;
+    for (const Enum value : values) names.insert(nameOf(value));
+    return names;
+}
+
 const std::map<std::string, Syntax>& commands() {
     static const std::map<std::string, Syntax> table = {
         {"load", {"P", 0, {}}},
         {"field", {"W", 0, {}}},
         {"iso", {"N", 0, {}}},
-        {"table", {"K", 0, {"consistent", "classic", "trilinear"}}},
-        {"method", {"K", 0, {"mc", "track", "all", "tree"}}},
+        {"table", {"K", 0, namesOf(kTableKinds, tableKindName)}},
+        {"method", {"K", 0, namesOf(kMethods, methodName)}},
         {"click", {"NNK", 1, {"ctrl"}}},
         {"track", {"NNN", 0, {}}},
         {"frames", {"I", 0, {}}},

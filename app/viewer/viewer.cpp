@@ -9,6 +9,7 @@
 #include "gl/timer_query.h"
 #include "isotrack/errors.h"
 #include "isotrack/io.h"
+#include "isotrack/threads.h"
 #include "render/window_frame.h"
 
 namespace isotrack::viewer {
@@ -21,11 +22,7 @@ constexpr double kIdleWaitSeconds = 0.25;
 // so that the frame loop (and llvmpipe, and the X server) leave it the CPU.
 constexpr std::chrono::milliseconds kWaitingFramePeriod{16};
 
-int extractionThreads(int requested) {
-    if (requested > 0) return requested;
-    const int cores = static_cast<int>(std::thread::hardware_concurrency());
-    return std::max(1, cores - 1);  // leave a core to draw with
-}
+int extractionThreads(int requested) { return requested > 0 ? requested : defaultInteractiveThreadCount(); }
 
 }  // namespace
 
@@ -40,8 +37,8 @@ Viewer::Viewer(const ViewerOptions& options, std::optional<Script> script)
     } else {
         extraction_.setSource(VolumeSource::field(options.fieldSpec.empty() ? kDefaultField : options.fieldSpec));
     }
-    extraction_.setTable(parseTableKind(options.table));
-    extraction_.setMethod(parseMethod(options.method));
+    extraction_.setTable(options.table);
+    extraction_.setMethod(options.method);
     if (options.iso) extraction_.setIso(*options.iso);
     if (options.deterministic) cellsPerFrame_ = kDeterministicCellsPerFrame;
     if (!options.profile.empty()) profiler_.startRecording(options.profile);
@@ -221,8 +218,6 @@ void Viewer::frame() {
 int runViewer(const ViewerOptions& options) {
     std::optional<Script> script;
     if (!options.script.empty()) script = parseScript(options.script);
-    parseTableKind(options.table);
-    parseMethod(options.method);
     if (!options.volumePath.empty()) {
         std::FILE* file = std::fopen(options.volumePath.c_str(), "rb");
         if (file == nullptr) throw InputError("--volume " + options.volumePath + ": cannot open the file");

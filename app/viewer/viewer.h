@@ -17,7 +17,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "isotrack/extract.h"
 #include "isotrack/io.h"
+#include "isotrack/orientation.h"
 #include "isotrack/tables.h"
 #include "render/camera.h"
 #include "render/renderer.h"
@@ -40,16 +42,16 @@ struct ViewerOptions {
     std::optional<RawLayout> raw;  // --dims and friends: read volumePath as raw samples
     std::string fieldSpec;         // default when neither is given: kDefaultField
     std::optional<double> iso;
-    std::string table = "consistent";
-    std::string method = "all";
-    std::string frame = "lps";  // of exported meshes, as `isotrack extract --frame`
+    TableKind table = TableKind::Consistent;
+    Method method = Method::All;
+    WorldFrame frame = WorldFrame::Lps;  // of exported meshes, as `isotrack extract --frame`
     std::string script;
     bool json = false;
     std::string profile;
     bool deterministic = false;
     bool noVsync = false;  // vsync is on in interactive sessions unless this; scripts never wait for it
     int width = 1280, height = 800;
-    int threads = 0;  // extraction threads; 0: one fewer than the cores (at least 1)
+    int threads = 0;  // extraction threads; 0: defaultInteractiveThreadCount()
 };
 
 inline constexpr const char* kDefaultField = "blobs:128";

@@ -155,7 +155,7 @@ void Viewer::exportSurface(std::uint32_t id, const std::string& path) {
     }
     const MeshFormat format = meshFormatOf(path);
     Mesh mesh = surface->mesh();
-    if (scene_.volume()) transformMesh(mesh, gridToFrame(scene_.volume()->volume, parseWorldFrame(options_.frame)));
+    if (scene_.volume()) transformMesh(mesh, gridToFrame(scene_.volume()->volume, options_.frame));
     writeMesh(path, mesh);
     status("surface " + std::to_string(id) + ": wrote " + std::to_string(surface->mesh().triangleCount()) +
            " triangles to " + path + " (" + meshFormatExtension(format) + ")");

@@ -2,9 +2,12 @@
 
 #include <CLI/CLI.hpp>
 #include <charconv>
+#include <cmath>
 
 #include "cli/source.h"
+#include "cli/vocabulary.h"
 #include "isotrack/errors.h"
+#include "isotrack/fields.h"
 #include "viewer/viewer.h"
 
 namespace isotrack::viewer {
@@ -37,18 +40,14 @@ ViewerCommandLine addViewerOptions(CLI::App& app) {
     volume->excludes(field);
     cli::addRawOptions(*group, *commandLine.raw, volume);
     group->add_option("--iso", o.iso,
-                      "Isovalue (default: the field's own, or the valley above a file's tallest histogram peak)");
-    group->add_option("--table", o.table, "Triangle table: consistent (default), classic or trilinear")
-        ->check(CLI::IsMember({"consistent", "classic", "trilinear"}));
-    group
-        ->add_option("--method", o.method,
-                     "mc: exhaustive; track: surfaces you click; all: every surface (default); "
-                     "tree: every surface from the contour tree")
-        ->check(CLI::IsMember({"mc", "track", "all", "tree"}));
-    group
-        ->add_option("--frame", o.frame,
-                     "Frame of exported meshes: lps (default, world), ras or voxel; the view stays in the grid")
-        ->check(CLI::IsMember({"lps", "ras", "voxel"}, CLI::ignore_case));
+                      "Isovalue (default: the field's own, or a file's suggested isovalue, as `isotrack info` "
+                      "prints it)");
+    cli::addTableOption(*group, o.table);
+    cli::addMethodOption(*group, o.method,
+                         "mc: exhaustive; track: surfaces you click; all: every surface (default); "
+                         "tree: every surface from the contour tree");
+    cli::addFrameOption(*group, o.frame,
+                        "Frame of exported meshes: lps (default, world), ras or voxel; the view stays in the grid");
     group->add_option("--script", o.script, "Run the commands in FILE, one per line, in the window");
     group->add_flag("--json", o.json, "On exit, print a JSON summary (surfaces, CPU and GPU bytes, frames)");
     group->add_option("--profile", o.profile, "Write a Chrome trace of every frame to FILE.json (opens in Perfetto)");
@@ -57,13 +56,15 @@ ViewerCommandLine addViewerOptions(CLI::App& app) {
                     "reproducible screenshots");
     group->add_flag("--no-vsync", o.noVsync, "Do not wait for the display's refresh between frames");
     group->add_option("--size", *commandLine.size, "Window size WIDTHxHEIGHT (default 1280x800)");
-    group->add_option("--threads", o.threads, "Extraction threads (default: one fewer than the cores)")
+    group->add_option("--threads", o.threads, "Extraction threads (default: one fewer than the hardware threads)")
         ->check(CLI::Range(1, 256));
     return commandLine;
 }
 
 int runViewerCommand(const ViewerCommandLine& commandLine) {
     ViewerOptions options = *commandLine.options;
+    if (options.iso && !std::isfinite(*options.iso)) throw InputError("--iso: must be a finite number");
+    if (!options.fieldSpec.empty()) parseFieldSpec(options.fieldSpec);
     const std::string& size = *commandLine.size;
     if (!size.empty()) {
         const std::size_t x = size.find('x');

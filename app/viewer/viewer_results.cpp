@@ -21,21 +21,12 @@
 #include <map>
 
 #include "render/palette.h"
+#include "ui/method_labels.h"
 #include "viewer/arc_match.h"
 #include "viewer/viewer.h"
 
 namespace isotrack::viewer {
 namespace {
-
-const char* requestName(ui::Method method) {
-    switch (method) {
-        case ui::Method::Exhaustive: return "marching cubes";
-        case ui::Method::Track: return "re-track seeds";
-        case ui::Method::All: return "every surface";
-        case ui::Method::Tree: return "contour tree";
-    }
-    return "extract";
-}
 
 using Structures = std::vector<std::unique_ptr<SurfaceStructure>>;
 
@@ -55,7 +46,7 @@ void Viewer::takeResult() {
 }
 
 void Viewer::applyResult(ExtractionResult result) {
-    profiler_.addWorkerSpan(requestName(result.method), result.started, result.finished);
+    profiler_.addWorkerSpan(ui::methodLabels(result.method).work, result.started, result.finished);
     if (!result.error.empty()) {
         extractionError_ = result.error;
         if (script_) throw script_->extractionError(result.error);

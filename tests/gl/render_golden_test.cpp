@@ -41,7 +41,7 @@ TEST_CASE("golden: one tracked blob, the rest absent", "[gl][golden][tracking]")
     test::useHeadlessGl();
     const Volume volume = field("blobs:64");
     const double iso = fieldDefaultIso("blobs");
-    // Seeded as `isotrack render --method track` seeds without --seed: nearest the centre.
+    // Seeded nearest the centre, as `isotrack render --method track --seed 31.5,31.5,31.5` seeds.
     const Surface surface = trackSurface(volume, iso, nearestCrossedEdge(volume, iso, {31.5, 31.5, 31.5}));
     REQUIRE(surface.stats.closed);
     // Close enough for the blob to be large, far enough that its neighbours would

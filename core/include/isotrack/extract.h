@@ -1,6 +1,7 @@
 #pragma once
 // One entry point for isotrack's three extractions, and the names they go by on
 // the command line and in reports.
+#include <array>
 #include <atomic>
 #include <string>
 #include <vector>
@@ -18,8 +19,11 @@ namespace isotrack {
 // from its contour-tree arc's seed (trackTreeSurfaces), with no scan of the
 // volume once the tree is built; consistent table only.
 enum class Method { Exhaustive, Track, All, Tree };
+// Every method, in the order front ends list them.
+inline constexpr std::array<Method, 4> kMethods{Method::Exhaustive, Method::Track, Method::All, Method::Tree};
 
-// "mc", "track", "all" or "tree"; throws InputError naming the text otherwise.
+// "mc", "track", "all" or "tree"; throws InputError naming the text and the
+// valid names otherwise.
 Method parseMethod(const std::string& name);
 // "mc", "track", "all" or "tree".
 const char* methodName(Method method);

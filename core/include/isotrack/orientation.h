@@ -20,6 +20,8 @@
 namespace isotrack {
 
 enum class WorldFrame : std::uint8_t { Lps, Ras, Voxel };
+// Every frame, in the order front ends list them.
+inline constexpr std::array<WorldFrame, 3> kWorldFrames{WorldFrame::Lps, WorldFrame::Ras, WorldFrame::Voxel};
 
 const char* worldFrameName(WorldFrame frame);  // "lps", "ras", "voxel"
 // Throws InputError for anything but lps, ras or voxel (any case).

@@ -25,8 +25,12 @@ namespace isotrack {
 // samples (isotrack/trilinear.h); it has no TriangleTable and no continuation
 // table, and extracts with marchingCubes only.
 enum class TableKind : std::uint8_t { Consistent, Classic, Trilinear };
+// Every table, in the order front ends list them.
+inline constexpr std::array<TableKind, 3> kTableKinds{TableKind::Consistent, TableKind::Classic, TableKind::Trilinear};
+// "consistent", "classic" or "trilinear".
 const char* tableKindName(TableKind kind);
-// "consistent", "classic" or "trilinear"; throws InputError otherwise.
+// "consistent", "classic" or "trilinear"; throws InputError naming the text and
+// the valid names otherwise.
 TableKind parseTableKind(const std::string& name);
 
 constexpr int kMaxCaseTriangles = 12;

@@ -48,7 +48,7 @@ Method parseMethod(const std::string& name) {
     if (name == "track") return Method::Track;
     if (name == "all") return Method::All;
     if (name == "tree") return Method::Tree;
-    throw InputError("unknown method \"" + name + "\" (mc, track, all or tree)");
+    throw InputError("unknown method \"" + name + "\" (expected mc, track, all or tree)");
 }
 
 const char* methodName(Method method) {

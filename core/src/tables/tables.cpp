@@ -168,7 +168,7 @@ TableKind parseTableKind(const std::string& name) {
     if (name == "consistent") return TableKind::Consistent;
     if (name == "classic") return TableKind::Classic;
     if (name == "trilinear") return TableKind::Trilinear;
-    throw InputError("--table: unknown table \"" + name + "\" (expected consistent, classic or trilinear)");
+    throw InputError("unknown table \"" + name + "\" (expected consistent, classic or trilinear)");
 }
 
 int TriangleTable::totalTriangles() const {

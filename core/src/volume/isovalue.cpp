@@ -55,10 +55,19 @@ double otsuThreshold(const std::vector<std::uint64_t>& counts, double lo, double
     return lo + (hi - lo) * double(bestSplit) / double(n);
 }
 
-double suggestIsovalue(const std::vector<std::uint64_t>& counts, double lo, double hi) {
+const char* isovalueRuleName(IsovalueRule rule) {
+    switch (rule) {
+        case IsovalueRule::HistogramValley: return "histogram valley";
+        case IsovalueRule::Otsu: return "Otsu threshold";
+        case IsovalueRule::Constant: break;
+    }
+    return "constant volume";
+}
+
+IsovalueSuggestion isovalueSuggestion(const std::vector<std::uint64_t>& counts, double lo, double hi) {
     const std::size_t n = counts.size();
-    if (!(hi > lo) || n == 0) return 0.5 * (lo + hi);
-    if (n < 8) return otsuThreshold(counts, lo, hi);
+    if (!(hi > lo) || n == 0) return {0.5 * (lo + hi), IsovalueRule::Constant};
+    if (n < 8) return {otsuThreshold(counts, lo, hi), IsovalueRule::Otsu};
     std::vector<std::uint64_t> interior = counts;
     interior.front() = 0;
     interior.back() = 0;
@@ -71,14 +80,20 @@ double suggestIsovalue(const std::vector<std::uint64_t>& counts, double lo, doub
     std::size_t valley = peak;
     while (valley + 2 < n && smooth[valley + 1] <= smooth[valley]) ++valley;
     const bool found = valley + 2 < n && valley > peak && smooth[valley] < 0.5 * smooth[peak];
-    if (!found) return otsuThreshold(counts, lo, hi);
-    return binCentre(valley, n, lo, hi);
+    if (!found) return {otsuThreshold(counts, lo, hi), IsovalueRule::Otsu};
+    return {binCentre(valley, n, lo, hi), IsovalueRule::HistogramValley};
 }
 
-double suggestIsovalue(const Volume& volume) {
+IsovalueSuggestion isovalueSuggestion(const Volume& volume) {
     const std::array<double, 2> range = volume.range();
-    if (!(range[1] > range[0])) return range[0];
-    return suggestIsovalue(sampleHistogram(volume, range, kBins), range[0], range[1]);
+    if (!(range[1] > range[0])) return {range[0], IsovalueRule::Constant};
+    return isovalueSuggestion(sampleHistogram(volume, range, kBins), range[0], range[1]);
+}
+
+double suggestIsovalue(const Volume& volume) { return isovalueSuggestion(volume).value; }
+
+double suggestIsovalue(const std::vector<std::uint64_t>& counts, double lo, double hi) {
+    return isovalueSuggestion(counts, lo, hi).value;
 }
 
 }  // namespace isotrack

@@ -1,6 +1,8 @@
 #include <catch2/catch.hpp>
 
 #include <atomic>
+#include <set>
+#include <string>
 
 #include "core/mesh_checks.h"
 #include "isotrack/errors.h"
@@ -12,15 +14,32 @@
 using namespace isotrack;
 
 TEST_CASE("methods by name", "[core][extract]") {
-    for (const Method method : {Method::Exhaustive, Method::Track, Method::All, Method::Tree}) {
+    std::set<std::string> names;
+    for (const Method method : kMethods) {
         CHECK(parseMethod(methodName(method)) == method);
+        names.insert(methodName(method));
     }
+    CHECK(names.size() == kMethods.size());  // no two share a name
     CHECK(std::string(methodName(Method::Tree)) == "tree");
     CHECK(std::string(methodName(Method::Exhaustive)) == "mc");
     CHECK(std::string(methodName(Method::Track)) == "track");
     CHECK(std::string(methodName(Method::All)) == "all");
     CHECK_THROWS_AS(parseMethod("flying-edges"), InputError);
     CHECK_THROWS_WITH(parseMethod("MC"), Catch::Contains("\"MC\""));
+    CHECK_THROWS_AS(parseMethod(""), InputError);
+}
+
+TEST_CASE("an unknown method's message is one line naming it and every method", "[core][extract]") {
+    try {
+        parseMethod("flying-edges");
+        FAIL("flying-edges was accepted");
+    } catch (const InputError& error) {
+        const std::string message = error.what();
+        CHECK(message.find('\n') == std::string::npos);
+        CHECK(message.find("\"flying-edges\"") != std::string::npos);
+        for (const Method method : kMethods) CHECK(message.find(methodName(method)) != std::string::npos);
+        CHECK(message.find("--") == std::string::npos);  // no command-line option: Python and scripts show it too
+    }
 }
 
 TEST_CASE("extract gives what each method's own function gives", "[core][extract]") {

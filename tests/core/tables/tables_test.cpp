@@ -10,6 +10,7 @@
 
 #include "isotrack/continuation.h"
 #include "isotrack/cube.h"
+#include "isotrack/errors.h"
 #include "isotrack/tables.h"
 
 using namespace isotrack;
@@ -321,5 +322,27 @@ TEST_CASE("a face crossed at two edges has both in one piece, whatever the rest 
             }
         }
         CHECK(faces > 256);
+    }
+}
+
+TEST_CASE("tables by name", "[core][tables]") {
+    std::set<std::string> names;
+    for (const TableKind kind : kTableKinds) {
+        CHECK(parseTableKind(tableKindName(kind)) == kind);
+        names.insert(tableKindName(kind));
+    }
+    CHECK(names.size() == kTableKinds.size());
+    CHECK(std::string(tableKindName(TableKind::Consistent)) == "consistent");
+    CHECK(std::string(tableKindName(TableKind::Classic)) == "classic");
+    CHECK(std::string(tableKindName(TableKind::Trilinear)) == "trilinear");
+    try {
+        parseTableKind("Consistent");  // names are exact, as the command line and scripts take them
+        FAIL("Consistent was accepted");
+    } catch (const InputError& error) {
+        const std::string message = error.what();
+        CHECK(message.find('\n') == std::string::npos);
+        CHECK(message.find("\"Consistent\"") != std::string::npos);
+        for (const TableKind kind : kTableKinds) CHECK(message.find(tableKindName(kind)) != std::string::npos);
+        CHECK(message.find("--") == std::string::npos);
     }
 }

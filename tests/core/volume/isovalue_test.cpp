@@ -2,6 +2,8 @@
 #include <catch2/catch.hpp>
 
 #include <filesystem>
+#include <set>
+#include <string>
 
 #include "isotrack/io.h"
 #include "isotrack/isovalue.h"
@@ -21,6 +23,9 @@ TEST_CASE("the valley above the tallest interior peak", "[isovalue]") {
     const double iso = suggestIsovalue(counts, 0.0, 128.0);
     CHECK(iso > 42.0);
     CHECK(iso < 50.0);
+    const IsovalueSuggestion suggestion = isovalueSuggestion(counts, 0.0, 128.0);
+    CHECK(suggestion.value == iso);
+    CHECK(suggestion.rule == IsovalueRule::HistogramValley);
 }
 
 TEST_CASE("two-valued data falls back to Otsu's threshold between the values", "[isovalue]") {
@@ -32,9 +37,18 @@ TEST_CASE("two-valued data falls back to Otsu's threshold between the values", "
     CHECK(iso > 0.0);
     CHECK(iso < 200.0);
     CHECK(marchingCubes(mask, iso).triangleCount() > 0);
+    CHECK(isovalueSuggestion(mask).rule == IsovalueRule::Otsu);
     // A constant volume gives its value.
     Volume flat({8, 8, 8}, ScalarType::Float32);
     CHECK(suggestIsovalue(flat) == 0.0);
+    CHECK(isovalueSuggestion(flat).rule == IsovalueRule::Constant);
+}
+
+TEST_CASE("each step of the rule has a name of its own", "[isovalue]") {
+    const std::set<std::string> names{isovalueRuleName(IsovalueRule::HistogramValley),
+                                      isovalueRuleName(IsovalueRule::Otsu), isovalueRuleName(IsovalueRule::Constant)};
+    CHECK(names.size() == 3);
+    CHECK(std::string(isovalueRuleName(IsovalueRule::HistogramValley)) == "histogram valley");
 }
 
 TEST_CASE("the CT opens between soft tissue and bone, on the whole skull", "[isovalue][ct]") {
@@ -45,6 +59,7 @@ TEST_CASE("the CT opens between soft tissue and bone, on the whole skull", "[iso
     }
     const Volume ct = loadVolume(path);
     const double iso = suggestIsovalue(ct);
+    CHECK(isovalueSuggestion(ct).rule == IsovalueRule::HistogramValley);
     CHECK(iso > 250.0);  // above soft tissue (about 0..100 HU)
     CHECK(iso < 600.0);  // and well below the range's middle (981), where the skull is full of holes
     const std::vector<Surface> surfaces = extractAllSurfaces(ct, iso);

@@ -2,7 +2,9 @@
 // LPS, RAS and voxel frames (positions, normals, winding).
 #include <catch2/catch.hpp>
 
+#include <cctype>
 #include <cmath>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -298,4 +300,26 @@ TEST_CASE("orientation codes and world bounds", "[core][orientation]") {
     CHECK(box[1] == Vec3d{10, 4, 4});
     CHECK_THROWS_AS(parseWorldFrame("xyz"), InputError);
     CHECK(parseWorldFrame("RAS") == WorldFrame::Ras);
+}
+
+TEST_CASE("frames by name, in any case", "[core][orientation]") {
+    std::set<std::string> names;
+    for (const WorldFrame frame : kWorldFrames) {
+        const std::string name = worldFrameName(frame);
+        CHECK(parseWorldFrame(name) == frame);
+        std::string upper = name;
+        for (char& c : upper) c = char(std::toupper(static_cast<unsigned char>(c)));
+        CHECK(parseWorldFrame(upper) == frame);
+        names.insert(name);
+    }
+    CHECK(names == std::set<std::string>{"lps", "ras", "voxel"});
+    try {
+        parseWorldFrame("xyz");
+        FAIL("xyz was accepted");
+    } catch (const InputError& error) {
+        const std::string message = error.what();
+        CHECK(message.find('\n') == std::string::npos);
+        CHECK(message.find("\"xyz\"") != std::string::npos);
+        for (const WorldFrame frame : kWorldFrames) CHECK(message.find(worldFrameName(frame)) != std::string::npos);
+    }
 }
