@@ -144,7 +144,9 @@ FrameTransform gridToFrame(const Volume& volume, WorldFrame frame) {
     } else {
         t.linear = frame == WorldFrame::Ras ? flipRasLps(volume.direction()) : volume.direction();
     }
-    if (isIdentity(t.linear)) return t;  // no arithmetic on the origin: identity stays exact
+    // No arithmetic on the origin where none is needed (LPS, identity direction): it stays exact.
+    // RAS still flips the origin, and voxel indices still subtract it.
+    if (isIdentity(t.linear) && frame == WorldFrame::Lps) return t;
     const Vec3d turned = multiply(t.linear, o);
     const Vec3d base = frame == WorldFrame::Ras ? flipRasLps(o) : frame == WorldFrame::Voxel ? Vec3d{0, 0, 0} : o;
     t.offset = {base[0] - turned[0], base[1] - turned[1], base[2] - turned[2]};
