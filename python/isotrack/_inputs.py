@@ -47,7 +47,8 @@ def samples_of(volume, name="volume"):
     except Exception as error:  # noqa: BLE001: numpy raises many kinds for odd objects
         raise TypeError(f"{name}: expected a 3D array, got {shown(volume)} ({type(error).__name__})") from None
     if array.ndim != 3:
-        raise ValueError(f"{name}: expected a 3D array indexed (z, y, x), got shape {array.shape}")
+        got = f"shape {array.shape}" if array.ndim or isinstance(volume, np.ndarray) else shown(volume)
+        raise ValueError(f"{name}: expected a 3D array indexed (z, y, x), got {got}")
     if array.size == 0:
         raise ValueError(f"{name}: every dimension must be at least 1, got shape {array.shape}")
     kind, size = array.dtype.kind, array.dtype.itemsize
