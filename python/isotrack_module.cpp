@@ -97,14 +97,16 @@ double levelPy(const py::array& array, std::optional<double> level, bool withinR
     return *level;
 }
 
-py::list surfaceList(std::vector<Surface> surfaces, const Geometry& geometry, const Volume& volume) {
-    const std::optional<FrameTransform> transform =
-        geometry.frame ? std::optional<FrameTransform>(gridToFrame(volume, *geometry.frame)) : std::nullopt;
+// Surfaces into a Volume's frame (a raw array's stay in grid coordinates).
+void toFrame(std::vector<Surface>& surfaces, const Geometry& geometry, const Volume& volume) {
+    if (!geometry.frame) return;
+    const FrameTransform transform = gridToFrame(volume, *geometry.frame);
+    for (Surface& surface : surfaces) surfaceToFrame(surface, transform);
+}
+
+py::list surfaceList(std::vector<Surface> surfaces, bool zyx) {
     py::list out;
-    for (Surface& surface : surfaces) {
-        if (transform) surfaceToFrame(surface, *transform);
-        out.append(py::cast(PySurface{std::move(surface), geometry.zyx()}));
-    }
+    for (Surface& surface : surfaces) out.append(py::cast(PySurface{std::move(surface), zyx}));
     return out;
 }
 
@@ -122,8 +124,9 @@ py::object marchingCubesPy(const py::array& array, double level, const Geometry&
             surfaces = extractAllSurfaces(volume, level, table, threadCount);
             if (ascent)
                 for (Surface& surface : surfaces) reverseWinding(surface.mesh);
+            toFrame(surfaces, geometry, volume);
         }
-        return surfaceList(std::move(surfaces), geometry, volume);
+        return surfaceList(std::move(surfaces), geometry.zyx());
     }
     const Dims& dims = volume.dims();
     const auto cells = py::ssize_t(dims[0] - 1) * (dims[1] - 1) * (dims[2] - 1);
@@ -190,8 +193,9 @@ py::object trackPy(const py::array& array, double level, const Geometry& geometr
         const GridEdge edge = seedEdgeOf(volume, geometry, level, seed, seedEdge);
         surfaces[0] = trackSurface(volume, level, edge, table, threadCount);
         if (ascent) reverseWinding(surfaces[0].mesh);
+        toFrame(surfaces, geometry, volume);
     }
-    return surfaceList(std::move(surfaces), geometry, volume)[py::int_(0)];
+    return surfaceList(std::move(surfaces), geometry.zyx())[py::int_(0)];
 }
 
 // (samples, spacing, origin, direction columns), isotrack's (x, y, z) and LPS.

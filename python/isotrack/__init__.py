@@ -28,6 +28,8 @@ from ._isotrack import Surface
 from ._isotrack import __version__
 from . import _isotrack
 
+Surface.__module__ = "isotrack"
+
 __all__ = ["Volume", "Surface", "marching_cubes", "track", "surfaces", "load", "write_ply", "write_obj", "write_stl"]
 
 _FRAMES = ("lps", "ras", "voxel")
