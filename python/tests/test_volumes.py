@@ -151,3 +151,44 @@ def test_volume_options(niftis):
     raw = isotrack.marching_cubes(volume.samples[::2, ::2, ::2], LEVEL)[0][:, ::-1].astype(np.float64) * 2
     np.testing.assert_allclose(coarse, (np.c_[raw, np.ones(len(raw))] @ volume.affine.T)[:, :3], atol=1e-4)
     assert "oblique.nii" in repr(volume) and "frame lps" in repr(volume)
+
+
+def test_oblique_dicom_affine_matches_pydicom(cli, tmp_path):
+    """An oblique DICOM series, written with pydicom: the LPS affine from its own attributes."""
+    pydicom = pytest.importorskip("pydicom")
+    import sys
+
+    from conftest import SOURCE_DIR
+
+    sys.path.insert(0, str(SOURCE_DIR / "scripts"))
+    try:
+        import ct_to_dicom
+    finally:
+        sys.path.pop(0)
+    turn = rotation([2, -1, 1], 25)
+    row, column, normal = turn[:, 0], turn[:, 1], turn[:, 2]
+    spacing, origin = (0.75, 0.875, 1.25), np.array([-30.5, 12.25, 40.0])  # exact in binary: short DS values
+    k, j, i = np.meshgrid(*(np.arange(n) for n in (10, 12, 14)), indexing="ij")
+    samples = (100 * (((i - 6.5) / 5) ** 2 + ((j - 5.5) / 4) ** 2 + ((k - 4.5) / 3) ** 2)).astype(np.int16)
+    study = pydicom.uid.generate_uid()
+    for index, ds in enumerate(ct_to_dicom.series(samples, [repr(s) for s in spacing], study, 1, "oblique")):
+        ds.ImageOrientationPatient = [f"{v:.8f}" for v in np.r_[row, column]]
+        ds.ImagePositionPatient = [f"{v:.6f}" for v in origin + index * spacing[2] * normal]
+        pydicom.dcmwrite(str(tmp_path / f"slice_{index:03d}.dcm"), ds, write_like_original=False)
+    # The affine from the files' own attributes, as DICOM defines it (LPS).
+    first, second = (pydicom.dcmread(str(tmp_path / f"slice_{n:03d}.dcm")) for n in (0, 1))
+    cosines = np.array(first.ImageOrientationPatient, np.float64)
+    expected = np.eye(4)
+    expected[:3, 0] = cosines[:3] * float(first.PixelSpacing[1])
+    expected[:3, 1] = cosines[3:] * float(first.PixelSpacing[0])
+    expected[:3, 2] = np.array(second.ImagePositionPatient, np.float64) - np.array(first.ImagePositionPatient, np.float64)
+    expected[:3, 3] = np.array(first.ImagePositionPatient, np.float64)
+    volume = isotrack.load(tmp_path)
+    np.testing.assert_allclose(volume.affine, expected, atol=1e-5)
+    np.testing.assert_array_equal(volume.samples, samples)
+    np.testing.assert_allclose(isotrack.load(tmp_path, frame="ras").affine, np.diag([-1, -1, 1, 1]) @ expected, atol=1e-5)
+    cli("extract", "--volume", tmp_path, "--iso", 100.5, "--threads", 1, "--out", tmp_path / "cli.ply")
+    verts, faces, _, _ = isotrack.marching_cubes(volume, 100.5, threads=1)
+    positions, cli_faces = read_ply(tmp_path / "cli.ply")
+    np.testing.assert_allclose(verts, positions, atol=1e-4)
+    np.testing.assert_array_equal(faces, cli_faces)
