@@ -89,7 +89,8 @@ def main():
 
     rows = []
     if pathlib.Path(args.ct).exists():
-        ct, spacing, _ = isotrack.load(args.ct)
+        loaded = isotrack.load(args.ct)
+        ct, spacing = loaded.samples, loaded.spacing[::-1]  # a raw array, spacing in (z, y, x)
         # The skull: world (x, y, z) = (122, 122, 160), given in (z, y, x).
         rows += bench_volume(f"CT {'x'.join(map(str, ct.shape[::-1]))} {ct.dtype}, iso 400", ct, 400.0, spacing,
                              (160.0, 122.0, 122.0), args)

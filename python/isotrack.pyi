@@ -1,29 +1,61 @@
-"""Isosurfaces of 3D numpy arrays: isotrack's marching cubes and surface tracking.
+"""Isosurfaces of 3D volumes: isotrack's marching cubes and surface tracking.
 
-Arrays are indexed (z, y, x); coordinates are (z, y, x) tuples. See help(isotrack).
+Raw arrays are indexed (z, y, x) and their coordinates are (z, y, x); a Volume
+(isotrack.load) gives world (x, y, z) in its frame. See help(isotrack).
 """
-from typing import List, Literal, Optional, Sequence, Tuple, Union, overload
+import os
+from typing import Any, List, Literal, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
 
 __version__: str
 
-Volume = npt.NDArray[
-    Union[np.uint8, np.int8, np.uint16, np.int16, np.uint32, np.int32, np.float32, np.float64]
-]
 Triple = Tuple[float, float, float]
+Frame = Literal["lps", "ras", "voxel"]
 Table = Literal["consistent", "classic", "trilinear"]
+GradientDirection = Literal["descent", "ascent"]
+# Any real or bool dtype, any strides, or anything np.asarray takes.
+ArrayInput = Union[npt.ArrayLike, Any]
+
+class Volume:
+    """Samples and where they lie, as isotrack.load reads them."""
+
+    samples: npt.NDArray[Any]
+    """(nz, ny, nx), indexed (z, y, x), the file's sample type; a view (no copy)."""
+    frame: Frame
+    affine: npt.NDArray[np.float64]
+    """4x4: index (i, j, k, 1), i along x, to world (x, y, z, 1) in the frame."""
+    spacing: Triple
+    """(x, y, z) distances between samples, world units."""
+    origin: Triple
+    """(x, y, z) world position of samples[0, 0, 0] in the frame."""
+    direction: npt.NDArray[np.float64]
+    """3x3, columns the unit world vectors of i, j, k in the frame."""
+    path: str
+    @property
+    def dims(self) -> Tuple[int, int, int]:
+        """(nx, ny, nz)."""
+    @property
+    def shape(self) -> Tuple[int, int, int]: ...
+    @property
+    def dtype(self) -> np.dtype[Any]: ...
+    def in_frame(self, frame: Frame) -> "Volume": ...
+
+VolumeInput = Union[Volume, ArrayInput]
 
 class Surface:
-    """One isosurface: an indexed triangle mesh (numpy views, no copy) and its measures."""
+    """One isosurface: an indexed triangle mesh (numpy views, no copy) and its measures.
+
+    Coordinates are (z, y, x) for a raw array's surface, world (x, y, z) in the frame for a Volume's.
+    """
 
     @property
     def vertices(self) -> npt.NDArray[np.float32]:
-        """(V, 3) vertex positions in (z, y, x), world units."""
+        """(V, 3) vertex positions."""
     @property
     def normals(self) -> npt.NDArray[np.float32]:
-        """(V, 3) unit normals in (z, y, x), pointing towards lower values."""
+        """(V, 3) unit normals, pointing towards lower values."""
     @property
     def faces(self) -> npt.NDArray[np.uint32]:
         """(F, 3) vertex indices, one row per triangle."""
@@ -42,7 +74,7 @@ class Surface:
     def touches_border(self) -> bool: ...
     @property
     def bounds(self) -> Tuple[Triple, Triple]:
-        """((zmin, ymin, xmin), (zmax, ymax, xmax)) in world units."""
+        """(lowest, highest) corner, in the vertices' coordinates."""
     @property
     def cells_visited(self) -> int: ...
     @property
@@ -57,47 +89,55 @@ MeshTuple = Tuple[
 
 @overload
 def marching_cubes(
-    volume: Volume,
+    volume: VolumeInput,
     level: Optional[float] = None,
     *,
-    spacing: Sequence[float] = (1.0, 1.0, 1.0),
+    spacing: Optional[Sequence[float]] = None,
+    gradient_direction: GradientDirection = "descent",
+    step_size: int = 1,
+    allow_degenerate: bool = True,
     method: Literal["mc", "lewiner", "lorensen"] = "mc",
+    mask: Optional[npt.ArrayLike] = None,
     table: Table = "consistent",
     threads: int = 0,
-    origin: Sequence[float] = (0.0, 0.0, 0.0),
+    origin: Optional[Sequence[float]] = None,
 ) -> MeshTuple: ...
 @overload
 def marching_cubes(
-    volume: Volume,
+    volume: VolumeInput,
     level: Optional[float] = None,
     *,
-    spacing: Sequence[float] = (1.0, 1.0, 1.0),
+    spacing: Optional[Sequence[float]] = None,
+    gradient_direction: GradientDirection = "descent",
+    step_size: int = 1,
+    allow_degenerate: Literal[True] = True,
     method: Literal["all"],
+    mask: None = None,
     table: Table = "consistent",
     threads: int = 0,
-    origin: Sequence[float] = (0.0, 0.0, 0.0),
+    origin: Optional[Sequence[float]] = None,
 ) -> List[Surface]: ...
 def track(
-    volume: Volume,
-    level: float,
+    volume: VolumeInput,
+    level: Optional[float] = None,
     *,
     seed: Optional[Sequence[float]] = None,
     seed_edge: Optional[Sequence[int]] = None,
-    spacing: Sequence[float] = (1.0, 1.0, 1.0),
+    spacing: Optional[Sequence[float]] = None,
     table: Table = "consistent",
     threads: int = 0,
-    origin: Sequence[float] = (0.0, 0.0, 0.0),
+    origin: Optional[Sequence[float]] = None,
 ) -> Surface: ...
 def surfaces(
-    volume: Volume,
-    level: float,
+    volume: VolumeInput,
+    level: Optional[float] = None,
     *,
-    spacing: Sequence[float] = (1.0, 1.0, 1.0),
+    spacing: Optional[Sequence[float]] = None,
     table: Table = "consistent",
     threads: int = 0,
-    origin: Sequence[float] = (0.0, 0.0, 0.0),
+    origin: Optional[Sequence[float]] = None,
 ) -> List[Surface]: ...
-def load(path: str) -> Tuple[np.ndarray, Triple, Triple]: ...
-def write_ply(surface: Surface, path: str) -> None: ...
-def write_obj(surface: Surface, path: str) -> None: ...
-def write_stl(surface: Surface, path: str) -> None: ...
+def load(path: Union[str, os.PathLike[str]], frame: Frame = "lps") -> Volume: ...
+def write_ply(surface: Surface, path: Union[str, os.PathLike[str]]) -> None: ...
+def write_obj(surface: Surface, path: Union[str, os.PathLike[str]]) -> None: ...
+def write_stl(surface: Surface, path: Union[str, os.PathLike[str]]) -> None: ...

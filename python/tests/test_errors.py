@@ -6,20 +6,19 @@ import isotrack
 from conftest import ellipsoid
 
 
-@pytest.mark.parametrize("dtype", [np.int64, np.uint64, np.float16, np.bool_, np.complex64])
+@pytest.mark.parametrize("dtype", [np.complex64, np.str_, object, "datetime64[s]"])
 def test_unsupported_dtype(dtype):
     with pytest.raises(ValueError, match="unsupported dtype"):
         isotrack.marching_cubes(np.zeros((4, 4, 4), dtype), 0.5)
 
 
-@pytest.mark.parametrize(
-    "volume",
-    [np.zeros((8, 8, 8), np.float32)[:, :, ::2], np.asfortranarray(np.zeros((4, 5, 6), np.float32))],
-    ids=["strided", "fortran"],
-)
-def test_not_c_contiguous(volume):
-    with pytest.raises(ValueError, match="C-contiguous"):
+def test_int64_beyond_float64_precision():
+    volume = np.zeros((4, 4, 4), np.int64)
+    volume[1, 1, 1] = 2**53 + 1
+    with pytest.raises(ValueError, match=r"no exact float64 \(beyond 2\*\*53\)"):
         isotrack.marching_cubes(volume, 0.5)
+    volume[1, 1, 1] = 2**53  # exact in float64
+    assert len(isotrack.marching_cubes(volume, 0.5)[1]) > 0
 
 
 def test_not_three_dimensional():
@@ -27,9 +26,10 @@ def test_not_three_dimensional():
         isotrack.marching_cubes(np.zeros((4, 4), np.float32), 0.5)
 
 
-def test_foreign_byte_order():
-    with pytest.raises(ValueError, match="byte order"):
-        isotrack.marching_cubes(np.zeros((4, 4, 4), np.float32).astype(">f4" if np.little_endian else "<f4"), 0.5)
+def test_foreign_byte_order_is_read_as_its_values():
+    volume = ellipsoid()
+    swapped = volume.astype(volume.dtype.newbyteorder("S"))
+    np.testing.assert_array_equal(isotrack.marching_cubes(swapped, 1.0)[1], isotrack.marching_cubes(volume, 1.0)[1])
 
 
 @pytest.mark.parametrize("level", [float("nan"), float("inf")])
@@ -50,9 +50,9 @@ def test_bad_spacing(spacing):
 
 
 def test_bad_options():
-    with pytest.raises(ValueError, match="unknown method"):
+    with pytest.raises(ValueError, match="method: expected one of mc, lewiner, lorensen, all"):
         isotrack.marching_cubes(ellipsoid(), 1.0, method="flying")
-    with pytest.raises(ValueError, match="unknown table"):
+    with pytest.raises(ValueError, match="table: expected one of consistent, classic, trilinear"):
         isotrack.surfaces(ellipsoid(), 1.0, table="mine")
     with pytest.raises(ValueError, match="threads"):
         isotrack.surfaces(ellipsoid(), 1.0, threads=-1)

@@ -1,5 +1,6 @@
 """Extraction over numpy arrays: axis order, measures, sample types, threads, files."""
 import gc
+import json
 import math
 import weakref
 
@@ -140,17 +141,25 @@ def test_marching_cubes_arrays_share_one_owner():
     np.testing.assert_array_equal(faces, expected[1])
 
 
-def test_empty_result():
-    verts, faces, normals, values = isotrack.marching_cubes(np.zeros((4, 4, 4), np.float32), 1.0)
-    assert verts.shape == (0, 3) and faces.shape == (0, 3) and normals.shape == (0, 3) and values.shape == (0,)
+def test_level_outside_the_data_and_no_surface():
+    # As scikit-image: a level outside the data is a ValueError, a level with no surface a RuntimeError.
+    with pytest.raises(ValueError, match=r"^Surface level must be within volume data range\."):
+        isotrack.marching_cubes(np.zeros((4, 4, 4), np.float32), 1.0)
+    with pytest.raises(RuntimeError, match=r"^No surface found at the given iso value\.$"):
+        isotrack.marching_cubes(np.zeros((4, 4, 4), np.float32), 0.0)
     assert isotrack.surfaces(np.zeros((4, 4, 4), np.uint8), 1) == []
+    assert isotrack.marching_cubes(np.zeros((4, 4, 4), np.uint8), 0, method="all") == []
 
 
-def test_level_none_is_the_middle_of_the_range():
-    volume = ellipsoid()
-    default = isotrack.marching_cubes(volume, None, threads=1)
-    middle = isotrack.marching_cubes(volume, (volume.min() + volume.max()) / 2.0, threads=1)
-    np.testing.assert_array_equal(default[1], middle[1])
+def test_level_none_is_the_command_lines_default(cli, tmp_path):
+    cli("field", "blobs:32", "--out", tmp_path / "blobs.nrrd")
+    report = json.loads(cli("extract", "--json", "--volume", tmp_path / "blobs.nrrd"))
+    samples = isotrack.load(str(tmp_path / "blobs.nrrd")).samples
+    default = isotrack.marching_cubes(samples, None, threads=1)
+    chosen = isotrack.marching_cubes(samples, report["isovalue"], threads=1)
+    assert len(default[1]) == report["triangles"]
+    np.testing.assert_array_equal(default[0], chosen[0])
+    assert isotrack.surfaces(samples)[0].triangle_count == isotrack.surfaces(samples, report["isovalue"])[0].triangle_count
 
 
 def test_write_files(tmp_path):
@@ -168,11 +177,13 @@ def test_write_files(tmp_path):
 
 def test_load_keeps_samples_spacing_and_origin(cli, tmp_path):
     cli("field", "sphere:24", "--out", tmp_path / "sphere.nrrd")
-    samples, spacing, origin = isotrack.load(str(tmp_path / "sphere.nrrd"))
-    assert samples.shape == (24, 24, 24) and samples.flags.c_contiguous
-    assert len(spacing) == 3 and len(origin) == 3
-    info = isotrack.surfaces(samples, float(np.median(samples)), spacing=spacing, origin=origin)
+    volume = isotrack.load(tmp_path / "sphere.nrrd")
+    samples = volume.samples
+    assert samples.shape == (24, 24, 24) and samples.flags.c_contiguous and volume.dims == (24, 24, 24)
+    assert len(volume.spacing) == 3 and len(volume.origin) == 3 and volume.frame == "lps"
+    info = isotrack.surfaces(samples, float(np.median(samples)), spacing=volume.spacing[::-1], origin=volume.origin[::-1])
     assert info and info[0].triangle_count > 100
+    assert isotrack.surfaces(volume, float(np.median(samples)))[0].triangle_count == info[0].triangle_count
 
 
 def test_load_ct_geometry_when_present():
@@ -181,6 +192,6 @@ def test_load_ct_geometry_when_present():
     path = SOURCE_DIR / "assets" / "ct" / "cranium.nrrd"
     if not path.exists():
         pytest.skip("no CT sample (scripts/get_ct.sh makes it)")
-    samples, spacing, origin = isotrack.load(str(path))
-    assert samples.shape == (108, 256, 256) and samples.dtype == np.int16
-    assert spacing == pytest.approx((1.5, 0.957, 0.957), abs=1e-3)
+    volume = isotrack.load(str(path))
+    assert volume.shape == (108, 256, 256) and volume.dtype == np.int16
+    assert volume.spacing == pytest.approx((0.957, 0.957, 1.5), abs=1e-3)
