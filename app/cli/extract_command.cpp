@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 #include "isotrack/errors.h"
+#include "isotrack/mapped_file.h"
 
 #include "cli/commands.h"
 #include "cli/source.h"
@@ -332,6 +333,11 @@ int runExtract(const ExtractOptions& options) {
             {"peak_above_start_bytes",
              result.residentPeak > result.residentBefore ? result.residentPeak - result.residentBefore : 0},
             {"volume_bytes", source.volume.byteSize()},
+            // A mapped file: its bytes still in memory after the extraction (for track,
+            // every page it touched; streaming passes let passed slices go).
+            {"volume_mapped", source.volume.mappedFile() != nullptr},
+            {"volume_resident_bytes",
+             source.volume.mappedFile() ? source.volume.mappedFile()->residentBytes() : source.volume.byteSize()},
         };
         if (options.method == Method::Tree) report["tree_seconds"] = result.treeSeconds;
         if (!options.out.empty()) report["out"] = options.out;

@@ -115,7 +115,8 @@ Source loadSource(const SourceOptions& options) {
         if (!options.raw.dims.empty()) spec.raw = rawLayout(options.raw);
         spec.series = options.raw.series;
     }
-    LoadedSource loaded = isotrack::loadSource(spec);
+    // With --iso given, nothing reads the samples yet: a mapped file is read only where extraction goes.
+    LoadedSource loaded = isotrack::loadSource(spec, options.iso ? DefaultIso::Skip : DefaultIso::Suggest);
     Source source;
     source.volume = std::move(loaded.volume);
     source.name = std::move(loaded.name);

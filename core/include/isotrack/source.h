@@ -36,8 +36,13 @@ struct LoadedSource {
     std::optional<double> defaultIso;
 };
 
+// Whether loadSource works out a file's default isovalue: Suggest reads every
+// sample (the histogram); Skip leaves defaultIso empty, so that a mapped file's
+// samples are read only where an extraction goes (isotrack/mapped_file.h).
+enum class DefaultIso { Suggest, Skip };
+
 // Builds the field or reads the file. Throws InputError and FormatError as
 // parseFieldSpec, makeField, loadVolume, loadRaw and loadDicom do.
-LoadedSource loadSource(const VolumeSource& source);
+LoadedSource loadSource(const VolumeSource& source, DefaultIso defaultIso = DefaultIso::Suggest);
 
 }  // namespace isotrack

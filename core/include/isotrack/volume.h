@@ -12,19 +12,24 @@
 #include <cassert>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <type_traits>
 #include <vector>
 
 namespace isotrack {
 
+class MappedFile;
+
 enum class ScalarType : std::uint8_t { UInt8, Int8, UInt16, Int16, UInt32, Int32, Float32, Float64 };
 
 const char* scalarTypeName(ScalarType type);
 std::size_t scalarTypeSize(ScalarType type);
 
-// Largest sample buffer a Volume may hold; loaders check against it before allocating.
-inline constexpr std::uint64_t kMaxVolumeBytes = std::uint64_t(16) << 30;
+// Largest sample count times size a Volume may describe (a sanity bound against
+// overflow, far above any file). Samples held in memory are bounded by the memory
+// available instead (isotrack/mapped_file.h), mapped ones by their file.
+inline constexpr std::uint64_t kMaxVolumeBytes = std::uint64_t(1) << 44;  // 16 TiB
 // Grid coordinates are packed in 20 bits per axis (see PackedGridEdge).
 inline constexpr int kMaxDimension = 1 << 20;
 
@@ -38,7 +43,8 @@ class Volume {
 public:
     Volume() = default;
     // Allocates dims[0]*dims[1]*dims[2] zeroed samples. Throws InputError when a
-    // dimension is not positive or the sample count would overflow.
+    // dimension is not positive, the sample count would overflow or the samples
+    // would not fit in the memory available.
     Volume(Dims dims, ScalarType type, Vec3d spacing = {1, 1, 1}, Vec3d origin = {0, 0, 0});
     // A Volume over samples it does not own (a numpy array, a mapped file), laid
     // out as above: nothing is copied, so the caller keeps them alive and
@@ -47,7 +53,19 @@ public:
     // accessors are not to be called.
     static Volume view(Dims dims, ScalarType type, const void* samples, Vec3d spacing = {1, 1, 1},
                        Vec3d origin = {0, 0, 0});
+    // A view over a mapped file's samples (isotrack/mapped_file.h), which it and
+    // its copies keep mapped.
+    static Volume mapped(Dims dims, ScalarType type, std::shared_ptr<const MappedFile> file, Vec3d spacing = {1, 1, 1},
+                         Vec3d origin = {0, 0, 0});
     bool isView() const { return view_ != nullptr; }
+    // The file a mapped volume reads, else null.
+    const MappedFile* mappedFile() const { return mapped_.get(); }
+    // A streaming pass is done with slices [zBegin, zEnd): a mapped volume lets
+    // their pages go (they are read again if touched); others keep them.
+    void releaseSlices(int zBegin, int zEnd) const;
+    // FormatError naming the file when a mapped volume's file was truncated or
+    // removed while it was read (its samples then read as zeros); else nothing.
+    void throwIfDamaged() const;
 
     const Dims& dims() const { return dims_; }
     ScalarType type() const { return type_; }
@@ -96,6 +114,7 @@ private:
     std::vector<std::byte> bytes_;
     const std::byte* view_ = nullptr;  // the samples of a view, bytes_ then empty
     std::size_t viewBytes_ = 0;
+    std::shared_ptr<const MappedFile> mapped_;  // a mapped view's file
 };
 
 // Calls fn(const T* samples) with the volume's samples in their native type.

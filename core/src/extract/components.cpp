@@ -516,7 +516,9 @@ std::vector<Surface> sortedBySize(Split& s) {
 }  // namespace
 
 std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableKind table, int threads) {
-    return detail::extractAllSurfaces(volume, iso, table, threads, nullptr);
+    std::vector<Surface> surfaces = detail::extractAllSurfaces(volume, iso, table, threads, nullptr);
+    volume.throwIfDamaged();  // a mapped file that shrank meanwhile read as zeros
+    return surfaces;
 }
 
 std::vector<Surface> detail::extractAllSurfaces(const Volume& volume, double iso, TableKind table, int threads,

@@ -211,7 +211,9 @@ ContourTree computeContourTreeImpl(const Volume& volume, int threads) {
 namespace isotrack {
 
 ContourTree computeContourTree(const Volume& volume, int threads) {
-    return detail::computeContourTreeImpl(volume, threads);
+    ContourTree tree = detail::computeContourTreeImpl(volume, threads);
+    volume.throwIfDamaged();  // a mapped file that shrank meanwhile read as zeros
+    return tree;
 }
 
 }  // namespace isotrack

@@ -79,6 +79,7 @@ std::vector<Surface> extract(const Volume& volume, const ExtractRequest& request
             break;
         case Method::Tree: surfaces = treeSurfaces(volume, request); break;
     }
+    volume.throwIfDamaged();  // a mapped file that shrank meanwhile read as zeros
     return surfaces;
 }
 

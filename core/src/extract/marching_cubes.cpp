@@ -43,6 +43,7 @@
 #include "labelled_march.h"
 #include "support/huge_pages.h"
 #include "support/parallel.h"
+#include "support/slice_release.h"
 #include "surface_labels.h"
 #include "surface_measure.h"
 #include "trilinear_march.h"
@@ -139,9 +140,11 @@ template <class T>
 class ChunkMarcher {
 public:
     // With labels.parent, the writing pass labels surfaces in it (surface_labels.h).
-    ChunkMarcher(const detail::SampleGrid<T>& grid, const std::array<CaseContinuation, 256>& table,
-                 const EdgeSlots& slots, const detail::SurfaceLabels& labels, Mesh& mesh)
-        : grid_(grid),
+    ChunkMarcher(const Volume& volume, const detail::SampleGrid<T>& grid,
+                 const std::array<CaseContinuation, 256>& table, const EdgeSlots& slots,
+                 const detail::SurfaceLabels& labels, Mesh& mesh)
+        : volume_(volume),
+          grid_(grid),
           table_(table),
           slots_(slots),
           labels_(labels),
@@ -175,6 +178,7 @@ public:
         chunk_->kept.assign(slices, 0);
         chunk_->spans.resize(slices * std::size_t(ny_));
         chunk_->flagBits.resize(slices * std::size_t(ny_) * rowBytes_);
+        detail::SliceRelease release(volume_, chunk_->zBegin);
         classifySlice(chunk_->zBegin, 0);
         const std::size_t first = planarCrossings(0);
         keepSlice(chunk_->zBegin, 0, first);
@@ -182,12 +186,14 @@ public:
         for (int z = chunk_->zBegin; z < chunk_->zEnd; ++z) {
             const int bottom = (z - chunk_->zBegin) & 1, top = bottom ^ 1;
             classifySlice(z + 1, top);
+            release.passed(z + 1);  // counting reads only the flags of slices classified
             const std::size_t crossings = planarCrossings(top);
             keepSlice(z + 1, top, crossings);
             if (z + 1 < chunk_->zEnd || chunk_->last) vertices += crossings;
             vertices += verticalCrossings(bottom, top);
             for (int y = 0; y + 1 < ny_; ++y) triangles += rowTriangles(y, bottom, top);
         }
+        release.finish(chunk_->zEnd + 1);
         chunk_->vertexCount = vertices;
         chunk_->triangleCount = triangles;
     }
@@ -203,9 +209,11 @@ public:
                 planar.assign(2 * sliceSize_, kNoVertex);  // vertex id caches, for writing only
             vertical_.assign(sliceSize_, kNoVertex);
         }
+        detail::SliceRelease release(volume_, chunk_->zBegin);
         restoreSlice(chunk_->zBegin, 0);
         threshold_[0] = static_cast<std::uint32_t>(chunk_->vertexBase);
         for (int z = chunk_->zBegin; z < chunk_->zEnd; ++z) {
+            release.passed(z - 1);  // gradients reach one slice below the slab
             const int bottom = (z - chunk_->zBegin) & 1, top = bottom ^ 1;
             restoreSlice(z + 1, top);
             threshold_[top] = static_cast<std::uint32_t>(chunk_->vertexBase + chunk_->vertexCursor);
@@ -218,6 +226,7 @@ public:
             }
             if (z == chunk_->zBegin) chunk_->firstSliceIds = planar_[bottom];
         }
+        release.finish(chunk_->zEnd + 2);
         if (chunk_->vertexCursor != chunk_->vertexCount || chunk_->indexCursor != 3 * chunk_->triangleCount) {
             throw std::logic_error("marching cubes: a chunk wrote other counts than it counted");
         }
@@ -227,6 +236,8 @@ public:
     }
 
 private:
+    const Volume& volume_;
+
     void classifySlice(int z, int slot) {
         std::uint8_t* flags = flags_[slot].data();
         grid_.classify(grid_.index(0, 0, z), sliceSize_, flags);
@@ -536,7 +547,7 @@ std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int 
         // A marcher per thread, its slices of flags and ids reused from chunk to chunk.
         detail::parallelForWithState(
             chunkCount, threads,
-            [&] { return ChunkMarcher<T>(grid, continuation, slots, detail::SurfaceLabels{}, mesh); },
+            [&] { return ChunkMarcher<T>(volume, grid, continuation, slots, detail::SurfaceLabels{}, mesh); },
             [&](ChunkMarcher<T>& marcher, int c) { marcher.count(chunks[std::size_t(c)]); });
         allocate(chunks, mesh);
         detail::SurfaceLabels labels;
@@ -558,7 +569,7 @@ std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int 
             }
         };
         detail::parallelForWithState(
-            chunkCount, threads, [&] { return ChunkMarcher<T>(grid, continuation, slots, labels, mesh); },
+            chunkCount, threads, [&] { return ChunkMarcher<T>(volume, grid, continuation, slots, labels, mesh); },
             [&](ChunkMarcher<T>& marcher, int index) {
                 const std::size_t c = std::size_t(index);
                 marcher.run(chunks[c]);
@@ -572,9 +583,12 @@ std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int 
 }  // namespace
 
 Mesh marchingCubes(const Volume& volume, double iso, TableKind table, int threads) {
-    if (table == TableKind::Trilinear) return detail::marchTrilinear(volume, iso, threads);
     Mesh mesh;
-    march(volume, iso, table, threads, mesh, nullptr, nullptr);
+    if (table == TableKind::Trilinear)
+        mesh = detail::marchTrilinear(volume, iso, threads);
+    else
+        march(volume, iso, table, threads, mesh, nullptr, nullptr);
+    volume.throwIfDamaged();  // a mapped file that shrank meanwhile read as zeros
     return mesh;
 }
 

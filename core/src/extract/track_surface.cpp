@@ -34,9 +34,7 @@ Surface walkWhole(const TrackWorker& worker, TrackState& state, TableKind table,
     return surface;
 }
 
-}  // namespace
-
-Surface trackSurface(const Volume& volume, double iso, const GridEdge& seed, TableKind table, int threads) {
+Surface track(const Volume& volume, double iso, const GridEdge& seed, TableKind table, int threads) {
     if (table == TableKind::Trilinear) return detail::trackTrilinear(volume, iso, seed);
     const auto start = Clock::now();
     threads = std::min(threads, kMaxTrackThreads);
@@ -46,6 +44,14 @@ Surface trackSurface(const Volume& volume, double iso, const GridEdge& seed, Tab
     TrackState state(volume.dims());
     queueSeed(volume, seed, *worker, state.blocks, state.walker);
     return walkWhole(*worker, state, table, start);
+}
+
+}  // namespace
+
+Surface trackSurface(const Volume& volume, double iso, const GridEdge& seed, TableKind table, int threads) {
+    Surface surface = track(volume, iso, seed, table, threads);
+    volume.throwIfDamaged();  // a mapped file that shrank meanwhile read as zeros
+    return surface;
 }
 
 std::vector<Surface> trackAllSurfaces(const Volume& volume, double iso, TableKind table) {

@@ -12,6 +12,7 @@
 // crash inside GDCM becomes a LibraryFailure naming the file it was reading.
 #include "isotrack/dicom.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <type_traits>
@@ -19,6 +20,7 @@
 #include "dicom_internal.h"
 #include "io_common.h"
 #include "isotrack/errors.h"
+#include "isotrack/mapped_file.h"
 #include "support/isolated.h"
 
 namespace isotrack {
@@ -140,7 +142,7 @@ Volume loadDicom(const std::string& path, const std::string& series) {
         volume.setDirection(head.direction);
         in.read(volume.bytes(), volume.byteSize());
     };
-    detail::runIsolated(isolatedRun(path, kMaxVolumeBytes + 4096), work, read);
+    detail::runIsolated(isolatedRun(path, std::min(kMaxVolumeBytes, availableMemoryBytes()) + 4096), work, read);
     return volume;
 }
 

@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "isotrack/errors.h"
+#include "isotrack/mapped_file.h"
 
 namespace isotrack::detail {
 
@@ -203,6 +204,18 @@ std::string dataWhere(const VolumeHeader& header, const SampleData& data) {
     return header.path + ": data file \"" + printable(data.path, 200) + "\"";
 }
 
+void requireMemoryFor(const VolumeHeader& header, std::uint64_t bytes, const std::string& how) {
+    const std::uint64_t available = availableMemoryBytes();
+    if (bytes <= available) return;
+    const auto gib = [](std::uint64_t b) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.1f GiB", double(b) / double(std::uint64_t(1) << 30));
+        return std::string(text);
+    };
+    throw FormatError(header.path + ": " + dimsText(header.dims) + " " + scalarTypeName(header.type) + " samples, " +
+                      how + ", need " + gib(bytes) + " of memory, more than the " + gib(available) + " available");
+}
+
 Volume readSamples(const VolumeHeader& header, const SampleData& data) {
     const std::uint64_t needed = sampleBytes(header);
     const std::string where = dataWhere(header, data);
@@ -223,16 +236,27 @@ Volume readSamples(const VolumeHeader& header, const SampleData& data) {
         if (afterSkip < needed) refuse(holder + " has only " + std::to_string(afterSkip) + " (truncated?)");
         if (afterSkip > needed && !data.trailingBytesAllowed)
             refuse(holder + " has " + std::to_string(afterSkip) + " (the sizes disagree)");
+        if (data.bigEndian == hostIsBigEndian()) {
+            // In the host's order: mapped where it lies, never copied (isotrack/mapped_file.h).
+            file.reset();
+            Volume volume =
+                Volume::mapped(header.dims, header.type,
+                               std::make_shared<const MappedFile>(data.path, data.offset + data.skip, needed, where),
+                               header.spacing, header.origin);
+            volume.setDirection(header.direction);
+            return volume;
+        }
+        requireMemoryFor(header, needed, "byte-swapped");
         Volume volume(header.dims, header.type, header.spacing, header.origin);
         volume.setDirection(header.direction);
         seekTo(f, data.offset + data.skip, where);
         readExact(f, volume.bytes(), needed, where);
-        if (data.bigEndian != hostIsBigEndian())
-            swapBytes(volume.bytes(), volume.sampleCount(), scalarTypeSize(header.type));
+        swapBytes(volume.bytes(), volume.sampleCount(), scalarTypeSize(header.type));
         return volume;
     }
 
     const char* codec = compressionName(data.compression);
+    requireMemoryFor(header, needed, std::string(codec) + "-compressed");
     if (needed > available * kMaxDeflateRatio + 1024 || data.skip > available * kMaxDeflateRatio + 1024)
         refuse(std::to_string(available) + " " + codec + " bytes in " + holder + " cannot hold that many");
 

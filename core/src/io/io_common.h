@@ -86,8 +86,14 @@ struct SampleData {
 // Names the data file in messages: "hdr.mhd: data file \"x.raw\"" when detached.
 std::string dataWhere(const VolumeHeader& header, const SampleData& data);
 
-// Validates every size, then allocates once, reads and converts to host order.
+// Validates every size, then maps uncompressed samples in the host's byte order
+// where they lie (a view that keeps the file mapped, isotrack/mapped_file.h), or,
+// for compressed or byte-swapped ones, checks that they fit in the memory
+// available, allocates once, reads and converts to host order.
 Volume readSamples(const VolumeHeader& header, const SampleData& data);
+// FormatError "PATH: DIMS TYPE samples, HOW, need X GiB of memory, more than the
+// Y GiB available" when `bytes` exceed the memory available.
+void requireMemoryFor(const VolumeHeader& header, std::uint64_t bytes, const std::string& how);
 
 // What every volume loader (NRRD, NIfTI, MetaImage, VTK legacy, raw) shares:
 // the file it reads and the header it fills, one-line errors that name the

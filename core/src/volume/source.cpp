@@ -9,7 +9,7 @@
 
 namespace isotrack {
 
-LoadedSource loadSource(const VolumeSource& source) {
+LoadedSource loadSource(const VolumeSource& source, DefaultIso defaultIso) {
     LoadedSource loaded;
     if (source.kind == VolumeSource::Kind::Field) {
         const FieldSpec spec = parseFieldSpec(source.text);
@@ -26,6 +26,7 @@ LoadedSource loadSource(const VolumeSource& source) {
         loaded.volume = loadVolume(source.text);
     }
     loaded.name = source.text;
+    if (defaultIso == DefaultIso::Skip) return loaded;
     const auto range = loaded.volume.range();
     if (std::isfinite(range[0])) loaded.defaultIso = suggestIsovalue(loaded.volume);
     return loaded;

@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 
 #include "isotrack/errors.h"
+#include "isotrack/mapped_file.h"
 #include "support/huge_pages.h"
+#include "support/slice_release.h"
 
 namespace isotrack {
 
@@ -41,7 +44,7 @@ std::size_t scalarTypeSize(ScalarType type) {
 namespace {
 
 // The byte size of dims samples of `type`; throws InputError when a dimension is
-// out of range or the size would exceed kMaxVolumeBytes.
+// out of range or the size would exceed kMaxVolumeBytes (overflow).
 std::size_t checkedByteSize(const Dims& dims, ScalarType type) {
     const std::string dimsText =
         std::to_string(dims[0]) + " x " + std::to_string(dims[1]) + " x " + std::to_string(dims[2]);
@@ -53,9 +56,25 @@ std::size_t checkedByteSize(const Dims& dims, ScalarType type) {
     const std::uint64_t maxSamples = kMaxVolumeBytes / scalarTypeSize(type);
     const auto nx = std::uint64_t(dims[0]), ny = std::uint64_t(dims[1]), nz = std::uint64_t(dims[2]);
     if (nx > maxSamples || ny > maxSamples / nx || nz > maxSamples / (nx * ny))
-        throw InputError("volume: " + dimsText + " " + scalarTypeName(type) + " samples exceed the " +
-                         std::to_string(kMaxVolumeBytes >> 30) + " GiB limit");
+        throw InputError("volume: " + dimsText + " " + scalarTypeName(type) + " samples are too many to address");
     return std::size_t(nx * ny * nz) * scalarTypeSize(type);
+}
+
+std::string gibText(std::uint64_t bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f GiB", double(bytes) / double(std::uint64_t(1) << 30));
+    return text;
+}
+
+// checkedByteSize, and InputError when that many bytes exceed the memory available.
+std::size_t allocatableByteSize(const Dims& dims, ScalarType type) {
+    const std::size_t bytes = checkedByteSize(dims, type);
+    const std::uint64_t available = availableMemoryBytes();
+    if (bytes > available)
+        throw InputError("volume: " + std::to_string(dims[0]) + " x " + std::to_string(dims[1]) + " x " +
+                         std::to_string(dims[2]) + " " + scalarTypeName(type) + " samples need " + gibText(bytes) +
+                         " of memory, more than the " + gibText(available) + " available");
+    return bytes;
 }
 
 }  // namespace
@@ -63,7 +82,7 @@ std::size_t checkedByteSize(const Dims& dims, ScalarType type) {
 Volume::Volume(Dims dims, ScalarType type, Vec3d spacing, Vec3d origin)
     : dims_(dims), type_(type), spacing_(spacing), origin_(origin) {
     // Zeroed samples, on huge pages where the kernel offers them (huge_pages.h).
-    detail::resizeOnHugePages(bytes_, checkedByteSize(dims, type));
+    detail::resizeOnHugePages(bytes_, allocatableByteSize(dims, type));
 }
 
 Volume Volume::view(Dims dims, ScalarType type, const void* samples, Vec3d spacing, Vec3d origin) {
@@ -75,6 +94,23 @@ Volume Volume::view(Dims dims, ScalarType type, const void* samples, Vec3d spaci
     volume.origin_ = origin;
     volume.view_ = static_cast<const std::byte*>(samples);
     return volume;
+}
+
+Volume Volume::mapped(Dims dims, ScalarType type, std::shared_ptr<const MappedFile> file, Vec3d spacing, Vec3d origin) {
+    Volume volume = view(dims, type, file->data(), spacing, origin);
+    if (file->size() < volume.viewBytes_) throw InputError(file->where() + ": the mapping is shorter than its samples");
+    volume.mapped_ = std::move(file);
+    return volume;
+}
+
+void Volume::releaseSlices(int zBegin, int zEnd) const {
+    if (!mapped_ || zBegin >= zEnd) return;
+    const std::size_t slice = std::size_t(dims_[0]) * std::size_t(dims_[1]) * scalarTypeSize(type_);
+    mapped_->release(std::size_t(std::max(zBegin, 0)) * slice, std::size_t(std::min(zEnd, dims_[2])) * slice);
+}
+
+void Volume::throwIfDamaged() const {
+    if (mapped_) mapped_->throwIfDamaged();
 }
 
 namespace {
@@ -113,20 +149,40 @@ void Volume::setValue(int x, int y, int z, double v) {
     }
 }
 
+namespace {
+
+// fn(samples, begin, end) over the samples slice by slice, letting a mapped
+// volume's passed slices go (support/slice_release.h).
+template <class Fn>
+void streamSlices(const Volume& volume, Fn&& fn) {
+    if (volume.byteSize() == 0) return;
+    const std::size_t slice = std::size_t(volume.dims()[0]) * std::size_t(volume.dims()[1]);
+    detail::SliceRelease release(volume, 0);
+    visitSamples(volume, [&](const auto* samples) {
+        for (int z = 0; z < volume.dims()[2]; ++z) {
+            fn(samples, std::size_t(z) * slice, std::size_t(z + 1) * slice);
+            release.passed(z + 1);
+        }
+    });
+    release.finish(volume.dims()[2]);
+}
+
+}  // namespace
+
 std::array<double, 2> Volume::range() const {
-    const std::size_t n = byteSize() == 0 ? 0 : sampleCount();
-    return visitSamples(*this, [n](const auto* samples) {
-        double lo = std::numeric_limits<double>::infinity();
-        double hi = -lo;
-        for (std::size_t i = 0; i < n; ++i) {
+    double lo = std::numeric_limits<double>::infinity();
+    double hi = -lo;
+    streamSlices(*this, [&](const auto* samples, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
             const double v = double(samples[i]);
             if (!std::isfinite(v)) continue;
             lo = std::min(lo, v);
             hi = std::max(hi, v);
         }
-        if (lo > hi) return std::array<double, 2>{std::nan(""), std::nan("")};
-        return std::array<double, 2>{lo, hi};
     });
+    throwIfDamaged();
+    if (lo > hi) return std::array<double, 2>{std::nan(""), std::nan("")};
+    return std::array<double, 2>{lo, hi};
 }
 
 std::vector<std::uint64_t> sampleHistogram(const Volume& volume, const std::array<double, 2>& range, std::size_t bins) {
@@ -134,13 +190,14 @@ std::vector<std::uint64_t> sampleHistogram(const Volume& volume, const std::arra
     if (bins == 0) return counts;
     const double span = range[1] - range[0];
     const double scale = span > 0.0 ? double(bins) / span : 0.0;
-    visitSamples(volume, [&](const auto* samples) {
-        for (std::size_t i = 0, n = volume.sampleCount(); i < n; ++i) {
+    streamSlices(volume, [&](const auto* samples, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
             const double v = static_cast<double>(samples[i]);
             if (!std::isfinite(v)) continue;
             ++counts[static_cast<std::size_t>(std::clamp((v - range[0]) * scale, 0.0, double(bins - 1)))];
         }
     });
+    volume.throwIfDamaged();
     return counts;
 }
 
