@@ -22,16 +22,18 @@
 #include <optional>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <utility>
 #include <vector>
 
 #include "isotrack/errors.h"
+#include "isotrack/extract.h"
 #include "isotrack/io.h"
 #include "isotrack/isovalue.h"
+#include "isotrack/mapped_file.h"
 #include "isotrack/marching_cubes.h"
 #include "isotrack/orientation.h"
 #include "isotrack/tables.h"
+#include "isotrack/threads.h"
 #include "isotrack/tracking.h"
 #include "isotrack/volume.h"
 #include "mesh_output.h"
@@ -41,18 +43,21 @@ namespace {
 
 using Rows = std::array<std::array<double, 4>, 4>;
 
-TableKind tableOf(const std::string& name) {
-    if (name == "consistent") return TableKind::Consistent;
-    if (name == "classic") return TableKind::Classic;
-    if (name == "trilinear") return TableKind::Trilinear;
-    throw InputError("table: unknown table \"" + name + "\" (expected consistent, classic or trilinear)");
-}
+TableKind tableOf(const std::string& name) { return parseTableKind(name); }
 
-// threads = 0: every core.
+// threads = 0: core's default, one per hardware thread (isotrack/threads.h).
 int threadsOf(int threads) {
     if (threads < 0) throw InputError("threads: must be 0 (every core) or more, got " + std::to_string(threads));
-    if (threads == 0) return std::max(1, int(std::thread::hardware_concurrency()));
+    if (threads == 0) return defaultThreadCount();
     return threads;
+}
+
+// Core's names, for the Python layer's argument checks.
+template <class List, class NameOf>
+py::tuple namesOf(const List& list, NameOf nameOf) {
+    py::tuple names(list.size());
+    for (std::size_t i = 0; i < list.size(); ++i) names[i] = py::str(nameOf(list[i]));
+    return names;
 }
 
 py::dtype dtypeOf(ScalarType type) {
@@ -110,6 +115,12 @@ py::list surfaceList(std::vector<Surface> surfaces, bool zyx) {
     return out;
 }
 
+// A Volume's samples mapped from a file that was truncated or removed meanwhile
+// read as zeros: an error naming the file (isotrack/mapped_file.h).
+void throwIfMappedDamaged(const py::array& array) {
+    if (const MappedFile* file = MappedFile::containing(array.data())) file->throwIfDamaged();
+}
+
 // One mesh (as scikit-image returns it) or, with `split`, every surface.
 py::object marchingCubesPy(const py::array& array, double level, const Geometry& geometry, const std::string& tableName,
                            int threads, const std::optional<py::array>& cellMask, bool allowDegenerate, bool ascent,
@@ -126,6 +137,7 @@ py::object marchingCubesPy(const py::array& array, double level, const Geometry&
                 for (Surface& surface : surfaces) reverseWinding(surface.mesh);
             toFrame(surfaces, geometry, volume);
         }
+        throwIfMappedDamaged(array);
         return surfaceList(std::move(surfaces), geometry.zyx());
     }
     const Dims& dims = volume.dims();
@@ -145,6 +157,7 @@ py::object marchingCubesPy(const py::array& array, double level, const Geometry&
         if (ascent) reverseWinding(out.mesh);
         if (geometry.frame) transformMesh(out.mesh, gridToFrame(volume, *geometry.frame));
     }
+    throwIfMappedDamaged(array);
     py::capsule owner = ownerOf(std::move(out));
     const MeshOutput& kept = *static_cast<const MeshOutput*>(owner.get_pointer());
     const bool zyx = geometry.zyx();
@@ -195,6 +208,7 @@ py::object trackPy(const py::array& array, double level, const Geometry& geometr
         if (ascent) reverseWinding(surfaces[0].mesh);
         toFrame(surfaces, geometry, volume);
     }
+    throwIfMappedDamaged(array);
     return surfaceList(std::move(surfaces), geometry.zyx())[py::int_(0)];
 }
 
@@ -326,6 +340,9 @@ PYBIND11_MODULE(_isotrack, m) {
     using namespace isotrack::python;
     m.doc() = "The compiled half of the isotrack package: private; use the functions of isotrack.";
     m.attr("__version__") = ISOTRACK_VERSION;
+    m.attr("TABLES") = namesOf(kTableKinds, tableKindName);
+    m.attr("FRAMES") = namesOf(kWorldFrames, worldFrameName);
+    m.attr("METHODS") = namesOf(kMethods, methodName);
 
     py::register_exception_translator([](std::exception_ptr error) {
         try {

@@ -30,13 +30,20 @@ struct InfoOptions {
     RawOptions raw;
     int bins = 16;
     bool json = false;
+    bool values = false;  // read the samples of a mapped volume of any size
 };
+
+// A mapped volume up to this size has its values read (range, histogram, the
+// suggested isovalue); a bigger one only with --values, so that info on a volume
+// larger than memory reads its header alone.
+constexpr std::uint64_t kMappedValueBytes = std::uint64_t(1) << 30;
 
 // Counts of finite samples in equal bins over [min, max]; NaN and infinities counted apart.
 struct Histogram {
     double min = 0.0, max = 0.0;
     std::vector<std::uint64_t> counts;
     std::uint64_t nonFinite = 0;
+    bool read = true;  // false: the samples were not read (a big mapped volume)
     bool empty() const { return counts.empty(); }
     double binWidth() const { return counts.empty() ? 0.0 : (max - min) / double(counts.size()); }
 };
@@ -106,7 +113,9 @@ nlohmann::json infoJson(const InfoOptions& options, const Volume& volume, const 
         {"orientation", orientationCode(volume.direction())},
         {"world_bounds", worldBounds(volume)},
         {"memory_bytes", volume.byteSize()},
-        {"non_finite", h.nonFinite},
+        {"mapped", volume.mappedFile() != nullptr},
+        {"values_read", h.read},
+        {"non_finite", h.read ? nlohmann::json(h.nonFinite) : nlohmann::json(nullptr)},
     };
     if (h.empty()) {
         j["range"] = nullptr;
@@ -138,15 +147,20 @@ void printInfo(const InfoOptions& options, const Volume& volume, const Histogram
     const auto box = worldBounds(volume);
     std::printf("  world box %.10g %.10g %.10g .. %.10g %.10g %.10g\n", box[0][0], box[0][1], box[0][2], box[1][0],
                 box[1][1], box[1][2]);
-    if (h.empty())
+    if (!h.read)
+        std::printf("  values    not read: %s mapped (--values reads every sample)\n",
+                    formatBytes(volume.byteSize()).c_str());
+    else if (h.empty())
         std::printf("  range     none: no finite samples\n");
     else
         std::printf("  range     %g .. %g\n", h.min, h.max);
     if (h.nonFinite) std::printf("  nan/inf   %llu samples\n", static_cast<unsigned long long>(h.nonFinite));
+    const char* where = volume.mappedFile() ? "mapped from the file, read where used" : "in memory";
     if (volume.byteSize() < 1024)
-        std::printf("  memory    %zu bytes\n", volume.byteSize());
+        std::printf("  samples   %zu bytes, %s\n", volume.byteSize(), where);
     else
-        std::printf("  memory    %s (%zu bytes)\n", formatBytes(volume.byteSize()).c_str(), volume.byteSize());
+        std::printf("  samples   %s (%zu bytes), %s\n", formatBytes(volume.byteSize()).c_str(), volume.byteSize(),
+                    where);
     if (h.empty()) return;
 
     std::printf("  histogram %zu bins of width %g\n", h.counts.size(), h.binWidth());
@@ -184,7 +198,12 @@ void printSuggestedIsovalue(const std::optional<IsovalueSuggestion>& suggestion)
 
 int runInfo(const InfoOptions& options) {
     const Volume volume = loadVolumeFile(options.path, options.raw);
-    const Histogram h = histogram(volume, options.bins);
+    const bool readValues = options.values || !volume.mappedFile() || volume.byteSize() <= kMappedValueBytes;
+    Histogram h;
+    if (readValues)
+        h = histogram(volume, options.bins);
+    else
+        h.read = false;
     const std::vector<DicomSeries> series = dicomSeries(options);
     std::optional<IsovalueSuggestion> suggestion;
     if (!h.empty()) suggestion = isovalueSuggestion(volume);
@@ -214,6 +233,8 @@ RunCommand addInfoCommand(CLI::App& app) {
     addRawOptions(*command, options->raw, volume);
     command->add_option("--bins", options->bins, "Histogram bins (default 16)")->check(CLI::Range(1, 256));
     command->add_flag("--json", options->json, "Print one JSON object on stdout");
+    command->add_flag("--values", options->values,
+                      "Read every sample of a mapped volume over 1 GiB too (range, histogram, suggested isovalue)");
     return [options] { return runInfo(*options); };
 }
 

@@ -30,11 +30,13 @@ from . import _isotrack
 
 Surface.__module__ = "isotrack"
 
-__all__ = ["Volume", "Surface", "marching_cubes", "track", "surfaces", "load", "write_ply", "write_obj", "write_stl"]
+__all__ = ["Volume", "Surface", "marching_cubes", "track", "surfaces", "load", "open", "write_ply", "write_obj", "write_stl"]
 
-_FRAMES = ("lps", "ras", "voxel")
-_METHODS = ("mc", "lewiner", "lorensen", "all")
-_TABLES = ("consistent", "classic", "trilinear")
+_FRAMES = _isotrack.FRAMES  # core's names (isotrack/orientation.h, tables.h, extract.h)
+_TABLES = _isotrack.TABLES
+# marching_cubes gives one mesh ("mc", also under scikit-image's names) or every surface ("all").
+_MC, _ALL = (name for name in _isotrack.METHODS if name in ("mc", "all"))
+_METHODS = (_MC, "lewiner", "lorensen", _ALL)
 _GRADIENTS = ("descent", "ascent")
 _IDENTITY = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
 
@@ -194,7 +196,7 @@ def marching_cubes(
     ascent = _inputs.choice(gradient_direction, "gradient_direction", _GRADIENTS) == "ascent"
     step = _inputs.step_of(step_size)
     allow_degenerate = bool(allow_degenerate)
-    if method == "all" and (mask is not None or not allow_degenerate):
+    if method == _ALL and (mask is not None or not allow_degenerate):
         raise ValueError("mask and allow_degenerate=False apply to one mesh: not with method='all'")
     table, threads = _inputs.choice(table, "table", _TABLES), _inputs.integer(threads, "threads", 0)
     samples, geometry = _samples_and_geometry(volume, spacing, origin, step)
@@ -203,9 +205,9 @@ def marching_cubes(
     if step > 1:
         samples = np.ascontiguousarray(samples[::step, ::step, ::step])
     result = _isotrack.marching_cubes(
-        samples, iso, geometry, table, threads, cells, allow_degenerate, ascent, method == "all"
+        samples, iso, geometry, table, threads, cells, allow_degenerate, ascent, method == _ALL
     )
-    if method != "all" and len(result[1]) == 0:
+    if method != _ALL and len(result[1]) == 0:
         raise RuntimeError("No surface found at the given iso value.")
     return result
 
@@ -275,6 +277,8 @@ def load(path, frame="lps"):
 
     Formats by extension: .nrrd .nhdr, .nii .nii.gz, .mhd .mha, .vtk, and DICOM
     (a folder, a DICOMDIR or a multi-frame file), as the command line reads them.
+    Uncompressed samples in the machine's byte order (raw NRRD, .nii, MetaImage
+    with a raw data file) are mapped, not read: see open().
 
     Args:
         path: the file or folder.
@@ -298,6 +302,20 @@ def load(path, frame="lps"):
         name = os.fsdecode(name)
     samples, spacing, origin, direction = _isotrack.load(name)
     return Volume(samples, (spacing, origin, direction), frame, name)
+
+
+def open(path, frame="lps"):  # isotrack.open; this module never calls the builtin
+    """A volume whose samples stay in their file: nothing is read until used.
+
+    The samples of uncompressed files in the machine's byte order (raw NRRD,
+    attached or detached .nhdr, .nii, MetaImage with a raw data file) are a
+    read-only array over a memory map of the file, so a volume bigger than
+    memory opens at once, and track() reads only the pages its surface crosses.
+    Compressed or byte-swapped files are decoded into memory, and refused when
+    they would not fit. A file truncated or removed while in use makes the next
+    extraction raise OSError naming it. Otherwise the same as load().
+    """
+    return load(path, frame)
 
 
 def _writer(write, what):

@@ -44,6 +44,10 @@ public:
     // FormatError "WHERE: the file was truncated or removed while it was read".
     void throwIfDamaged() const;
 
+    // The live mapping whose bytes hold `address`, else null: for front ends that
+    // hand the samples on as raw memory (a numpy array) and check them afterwards.
+    static const MappedFile* containing(const void* address);
+
 private:
     std::byte* base_ = nullptr;  // page-aligned start of the mapping
     std::uint64_t mappedLength_ = 0;

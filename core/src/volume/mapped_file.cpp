@@ -32,6 +32,7 @@ namespace {
 struct GuardSlot {
     std::atomic<std::uintptr_t> begin{0}, end{0};  // end == 0: free
     std::atomic<bool> damaged{false};
+    const MappedFile* file = nullptr;  // under guardMutex only, never read by the handler
 };
 
 constexpr int kGuardSlots = 1024;
@@ -68,7 +69,7 @@ void onSigbus(int signal, siginfo_t* info, void* context) {
     raise(SIGBUS);
 }
 
-int registerGuard(std::uintptr_t begin, std::uintptr_t end, const std::string& where) {
+int registerGuard(const MappedFile* file, std::uintptr_t begin, std::uintptr_t end, const std::string& where) {
     const std::lock_guard<std::mutex> lock(guardMutex);
     if (!handlerInstalled) {
         struct sigaction action {};
@@ -83,6 +84,7 @@ int registerGuard(std::uintptr_t begin, std::uintptr_t end, const std::string& w
         GuardSlot& slot = guardSlots[std::size_t(i)];
         if (slot.end.load(std::memory_order_relaxed) != 0) continue;
         slot.damaged.store(false, std::memory_order_relaxed);
+        slot.file = file;
         slot.begin.store(begin, std::memory_order_relaxed);
         slot.end.store(end, std::memory_order_release);
         return i;
@@ -123,7 +125,7 @@ MappedFile::MappedFile(const std::string& path, std::uint64_t offset, std::uint6
     base_ = static_cast<std::byte*>(base);
     data_ = base_ + (offset - pageOffset);
     try {
-        guardSlot_ = registerGuard(reinterpret_cast<std::uintptr_t>(base_),
+        guardSlot_ = registerGuard(this, reinterpret_cast<std::uintptr_t>(base_),
                                    reinterpret_cast<std::uintptr_t>(base_) + mappedLength_, where_);
     } catch (...) {
         ::munmap(base_, mappedLength_);
@@ -170,6 +172,16 @@ bool MappedFile::damaged() const {
 
 void MappedFile::throwIfDamaged() const {
     if (damaged()) throw FormatError(where_ + ": the file was truncated or removed while it was read");
+}
+
+const MappedFile* MappedFile::containing(const void* address) {
+    const auto at = reinterpret_cast<std::uintptr_t>(address);
+    const std::lock_guard<std::mutex> lock(guardMutex);
+    for (const GuardSlot& slot : guardSlots) {
+        const std::uintptr_t end = slot.end.load(std::memory_order_acquire);
+        if (end != 0 && at >= slot.begin.load(std::memory_order_relaxed) && at < end) return slot.file;
+    }
+    return nullptr;
 }
 
 std::uint64_t availableMemoryBytes() {
