@@ -2,10 +2,12 @@
 // The volume a command works on: a file (--volume) or a built-in field (--field),
 // and the isovalue (--iso, defaulting per field, or to the middle of a file's range).
 // A headerless file is read as raw samples when its layout is given with --dims.
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "isotrack/dicom.h"
 #include "isotrack/orientation.h"
 #include "isotrack/volume.h"
 
@@ -23,7 +25,7 @@ struct RawOptions {
     std::string type;
     std::vector<double> spacing;
     std::string endian = "little";
-    std::string series;  // DICOM: --series UID|N, empty for the largest
+    std::string series;  // DICOM: --series UID|N, empty for the largest that forms a volume
 };
 
 struct SourceOptions {
@@ -52,9 +54,12 @@ struct Source {
     Volume volume;
     std::string name;  // the file path or the field spec
     double iso = 0.0;
+    std::optional<DicomContents> dicom;  // DICOM: the series, the one read and the files skipped
+    std::size_t dicomSeries = 0;
 };
 
-// Loads the file or builds the field. Throws isotrack's typed errors.
+// Loads the file or builds the field; warns on stderr of each DICOM file
+// skipped. Throws isotrack's typed errors.
 Source loadSource(const SourceOptions& options);
 
 // A --seed point given in `frame` (the LPS world unless --frame says otherwise)
