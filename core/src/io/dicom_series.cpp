@@ -272,15 +272,17 @@ DicomContents contentsOf(const std::string& path, const Gathered& gathered) {
 }
 
 std::string noVolumeMessage(const std::string& path, const DicomContents& contents) {
-    std::string skipped;
-    if (!contents.skipped.empty())
-        skipped = std::to_string(contents.skipped.size()) + " file" + (contents.skipped.size() == 1 ? "" : "s") +
-                  " skipped, the first " + contents.skipped.front().file + ": " + contents.skipped.front().why;
+    const std::size_t n = contents.skipped.size();
+    const std::string skipped = std::to_string(n) + (n == 1 ? " file" : " files") + " skipped";
+    // Every file skipped: the first one's reason is likely every one's.
     if (contents.series.empty())
-        return path + ": no DICOM images found" + (skipped.empty() ? "" : " (" + skipped + ")");
+        return path + ": no DICOM images found" +
+               (n == 0 ? ""
+                       : " (" + skipped + ", the first " + contents.skipped.front().file + ": " +
+                             contents.skipped.front().why + ")");
     // One series: its own message says which file and what.
     if (contents.series.size() == 1 && !contents.series.front().detail.empty())
-        return path + ": no series forms a volume: " + contents.series.front().detail;
+        return path + ": no series forms a volume: " + contents.series.front().detail + (n == 0 ? "" : "; " + skipped);
     std::string list;
     for (std::size_t k = 0; k < contents.series.size(); ++k) {
         const DicomSeries& s = contents.series[k];
@@ -289,7 +291,7 @@ std::string noVolumeMessage(const std::string& path, const DicomContents& conten
                 std::to_string(s.dims[2]) + (s.dims[2] == 1 ? " slice of " : " slices of ") +
                 std::to_string(s.dims[0]) + " x " + std::to_string(s.dims[1]) + ", " + dicomProblemText(s.problem);
     }
-    return path + ": no series forms a volume (" + list + ")" + (skipped.empty() ? "" : "; " + skipped);
+    return path + ": no series forms a volume (" + list + ")" + (n == 0 ? "" : "; " + skipped);
 }
 
 }  // namespace isotrack::detail::dicom
