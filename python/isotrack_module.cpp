@@ -419,7 +419,10 @@ table. Arguments as for marching_cubes; returns a list of Surface.)";
 
 constexpr const char* kLoadDoc = R"(Reads a volume with isotrack's loaders.
 
-Formats by extension: .nrrd .nhdr, .nii .nii.gz, .mhd .mha, .vtk.
+Formats by extension: .nrrd .nhdr, .nii .nii.gz, .mhd .mha, .vtk; and DICOM:
+a .dcm file, or a folder or DICOMDIR, whose largest series that forms a volume
+is read (files that are not readable DICOM images are skipped; `isotrack info`
+lists the series and the files skipped).
 
 Returns:
     (samples, spacing, origin): samples a 3D array indexed (z, y, x) in the
