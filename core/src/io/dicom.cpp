@@ -157,9 +157,7 @@ void runScan(const std::string& path, std::uint64_t maxReplyBytes,
             return;
         } catch (const LibraryFailure& e) {
             if (scanned || !many || e.file().empty() || e.file() == path || crashed.size() >= kMaxCrashingFiles) throw;
-            const std::string message = e.what(), prefix = e.file() + ": ";
-            crashed.push_back(
-                {e.file(), message.compare(0, prefix.size(), prefix) == 0 ? message.substr(prefix.size()) : message});
+            crashed.push_back({e.file(), reasonOf(e.what(), e.file())});
         }
     }
 }

@@ -309,9 +309,7 @@ Gathered readSeries(const std::string& path, const std::vector<DicomSkipped>& ex
             Image image = readImageHeader(file);
             out.series[image.seriesUid].push_back(std::move(image));
         } catch (const FormatError& e) {
-            const std::string message = e.what(), prefix = file + ": ";
-            out.skipped.push_back(
-                {file, message.compare(0, prefix.size(), prefix) == 0 ? message.substr(prefix.size()) : message});
+            out.skipped.push_back({file, reasonOf(e.what(), file)});
         }
     }
     return out;

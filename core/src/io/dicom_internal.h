@@ -84,6 +84,8 @@ std::vector<const std::vector<Image>*> ordered(const SeriesMap& series);
 std::size_t pick(const std::string& path, const std::vector<const std::vector<Image>*>& list, const std::string& which);
 // Each series of `gathered`, in ordered()'s order, checked as a volume; and the default.
 DicomContents contentsOf(const std::string& path, const Gathered& gathered);
+// A message about `file` without its leading "FILE: ", as DicomSkipped::why.
+std::string reasonOf(const std::string& message, const std::string& file);
 // The one-line message of DicomNoVolume.
 std::string noVolumeMessage(const std::string& path, const DicomContents& contents);
 // Row, column and normal directions from ImageOrientationPatient.

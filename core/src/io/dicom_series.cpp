@@ -271,6 +271,11 @@ DicomContents contentsOf(const std::string& path, const Gathered& gathered) {
     return out;
 }
 
+std::string reasonOf(const std::string& message, const std::string& file) {
+    const std::string prefix = file + ": ";
+    return message.compare(0, prefix.size(), prefix) == 0 ? message.substr(prefix.size()) : message;
+}
+
 std::string noVolumeMessage(const std::string& path, const DicomContents& contents) {
     const std::size_t n = contents.skipped.size();
     const std::string skipped = std::to_string(n) + (n == 1 ? " file" : " files") + " skipped";
