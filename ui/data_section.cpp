@@ -60,8 +60,9 @@ void fieldChooser(const DataState& data, PanelScratch& scratch, std::vector<Acti
 
 void fileChooser(PanelScratch& scratch, std::vector<Action>& actions) {
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 48.0f);
-    const bool entered = ImGui::InputTextWithHint("##file", "volume file (.nrrd .nii .mha .vtk)", scratch.path.data(),
-                                                  scratch.path.size(), ImGuiInputTextFlags_EnterReturnsTrue);
+    const bool entered =
+        ImGui::InputTextWithHint("##file", "volume file or DICOM folder (.nrrd .nii .mha .vtk .dcm)",
+                                 scratch.path.data(), scratch.path.size(), ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();
     if ((ImGui::Button("Load") || entered) && scratch.path[0] != '\0') {
         actions.push_back(LoadFile{scratch.path.data()});

@@ -18,6 +18,7 @@
 #include "isotrack/mapped_file.h"
 
 #include "cli/commands.h"
+#include "cli/dicom_report.h"
 #include "cli/source.h"
 #include "cli/timed_extraction.h"
 #include "cli/vocabulary.h"
@@ -343,6 +344,11 @@ int runExtract(const ExtractOptions& options) {
         if (!options.out.empty()) report["out"] = options.out;
         if (!options.outDir.empty()) report["out_files"] = result.surfaceFiles;
         if (options.method != Method::Exhaustive) report["surfaces"] = result.surfaces;
+        if (source.dicom) {
+            const DicomSeries& read = source.dicom->series.at(source.dicomSeries);
+            report["dicom_series"] = {{"number", source.dicomSeries + 1}, {"uid", read.uid}};
+            addSkippedJson(report, *source.dicom);
+        }
         std::printf("%s\n", report.dump().c_str());
     } else {
         std::printf("%s: %zu triangles, %zu vertices", source.name.c_str(), result.triangles, result.vertices);

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
+#include "cli/dicom_report.h"
 #include "cli/source.h"
 #include "isotrack/dicom.h"
 #include "isotrack/io.h"
@@ -79,21 +80,8 @@ std::string formatName(const std::string& path, const RawOptions& raw) {
     return format ? volumeFormatName(*format) : "unknown";
 }
 
-// The series of a DICOM folder, DICOMDIR or file; empty for other formats.
-std::vector<DicomSeries> dicomSeries(const InfoOptions& options) {
-    if (!options.raw.dims.empty() || volumeFormatOf(options.path) != VolumeFormat::Dicom) return {};
-    return listDicomSeries(options.path);
-}
-
-nlohmann::json seriesJson(const std::vector<DicomSeries>& list) {
-    nlohmann::json out = nlohmann::json::array();
-    for (const DicomSeries& s : list)
-        out.push_back({{"uid", s.uid},
-                       {"description", s.description},
-                       {"modality", s.modality},
-                       {"images", s.images},
-                       {"dims", {s.dims[0], s.dims[1], s.dims[2]}}});
-    return out;
+bool isDicom(const InfoOptions& options) {
+    return options.raw.dims.empty() && volumeFormatOf(options.path) == VolumeFormat::Dicom;
 }
 
 nlohmann::json infoJson(const InfoOptions& options, const Volume& volume, const Histogram& h) {
@@ -174,15 +162,6 @@ void printInfo(const InfoOptions& options, const Volume& volume, const Histogram
     }
 }
 
-void printSeries(const std::vector<DicomSeries>& list) {
-    for (std::size_t i = 0; i < list.size(); ++i) {
-        const DicomSeries& s = list[i];
-        std::printf("  %-9s %zu: %s %s\"%s\" %d x %d x %d, %zu file%s\n", i == 0 ? "series" : "", i + 1, s.uid.c_str(),
-                    s.modality.empty() ? "" : (s.modality + " ").c_str(), s.description.c_str(), s.dims[0], s.dims[1],
-                    s.dims[2], s.images, s.images == 1 ? "" : "s");
-    }
-}
-
 // The isovalue extract, render, tree, bench and the viewer open the file at
 // without --iso (core's suggestIsovalue), and the step of the rule that chose it.
 void addSuggestedIsovalue(const std::optional<IsovalueSuggestion>& suggestion, nlohmann::json& j) {
@@ -197,25 +176,41 @@ void printSuggestedIsovalue(const std::optional<IsovalueSuggestion>& suggestion)
 }
 
 int runInfo(const InfoOptions& options) {
-    const Volume volume = loadVolumeFile(options.path, options.raw);
+    Volume volume;
+    std::optional<DicomVolume> dicom;
+    if (isDicom(options)) {
+        try {
+            dicom = readDicom(options.path, options.raw.series);
+        } catch (const DicomNoVolume& e) {
+            warnSkipped(e.contents());
+            printNoVolume(options.path, e.contents());
+            return 1;
+        }
+        warnSkipped(dicom->contents);
+        volume = std::move(dicom->volume);
+    } else {
+        volume = loadVolumeFile(options.path, options.raw);
+    }
     const bool readValues = options.values || !volume.mappedFile() || volume.byteSize() <= kMappedValueBytes;
     Histogram h;
     if (readValues)
         h = histogram(volume, options.bins);
     else
         h.read = false;
-    const std::vector<DicomSeries> series = dicomSeries(options);
     std::optional<IsovalueSuggestion> suggestion;
     if (!h.empty()) suggestion = isovalueSuggestion(volume);
     if (options.json) {
         nlohmann::json j = infoJson(options, volume, h);
         addSuggestedIsovalue(suggestion, j);
-        if (!series.empty()) j["series"] = seriesJson(series);
+        if (dicom) {
+            j["series"] = seriesJson(dicom->contents, dicom->series);
+            addSkippedJson(j, dicom->contents);
+        }
         std::printf("%s\n", j.dump().c_str());
     } else {
         printInfo(options, volume, h);
         printSuggestedIsovalue(suggestion);
-        printSeries(series);
+        if (dicom) printSeries(dicom->contents, dicom->series);
     }
     return 0;
 }

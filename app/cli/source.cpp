@@ -5,6 +5,7 @@
 #include <map>
 #include <utility>
 
+#include "cli/dicom_report.h"
 #include "isotrack/dicom.h"
 #include "isotrack/errors.h"
 #include "isotrack/fields.h"
@@ -51,7 +52,7 @@ void addRawOptions(CLI::App& command, RawOptions& raw, CLI::Option* volume) {
     command
         .add_option("--series", raw.series,
                     "DICOM folder or DICOMDIR: the series to read, by SeriesInstanceUID or number in `info` (default: "
-                    "the largest)")
+                    "the largest that forms a volume)")
         ->needs(volume)
         ->excludes(dims);
     dims->needs(volume);
@@ -115,11 +116,20 @@ Source loadSource(const SourceOptions& options) {
         if (!options.raw.dims.empty()) spec.raw = rawLayout(options.raw);
         spec.series = options.raw.series;
     }
-    // With --iso given, nothing reads the samples yet: a mapped file is read only where extraction goes.
-    LoadedSource loaded = isotrack::loadSource(spec, options.iso ? DefaultIso::Skip : DefaultIso::Suggest);
+    LoadedSource loaded;
+    try {
+        // With --iso given, nothing reads the samples yet: a mapped file is read only where extraction goes.
+        loaded = isotrack::loadSource(spec, options.iso ? DefaultIso::Skip : DefaultIso::Suggest);
+    } catch (const DicomNoVolume& e) {
+        warnSkipped(e.contents());
+        throw;
+    }
+    if (loaded.dicom) warnSkipped(*loaded.dicom);
     Source source;
     source.volume = std::move(loaded.volume);
     source.name = std::move(loaded.name);
+    source.dicom = std::move(loaded.dicom);
+    source.dicomSeries = loaded.dicomSeries;
     if (options.iso) {
         source.iso = *options.iso;
     } else if (loaded.defaultIso) {

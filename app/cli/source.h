@@ -3,10 +3,12 @@
 // and the isovalue (--iso, defaulting to the field's own, or to a file's suggested
 // isovalue: core's suggestIsovalue, the valley above the histogram's tallest peak).
 // A headerless file is read as raw samples when its layout is given with --dims.
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "isotrack/dicom.h"
 #include "isotrack/orientation.h"
 #include "isotrack/volume.h"
 
@@ -24,7 +26,7 @@ struct RawOptions {
     std::string type;
     std::vector<double> spacing;
     std::string endian = "little";
-    std::string series;  // DICOM: --series UID|N, empty for the largest
+    std::string series;  // DICOM: --series UID|N, empty for the largest that forms a volume
 };
 
 struct SourceOptions {
@@ -50,13 +52,16 @@ struct Source {
     Volume volume;
     std::string name;  // the file path or the field spec
     double iso = 0.0;
+    std::optional<DicomContents> dicom;  // DICOM: the series, the one read and the files skipped
+    std::size_t dicomSeries = 0;
 };
 
 // What can be checked before anything is read: one of --volume and --field,
 // a well-formed field spec, a finite --iso. Throws InputError.
 void checkSourceOptions(const SourceOptions& options);
 
-// Loads the file or builds the field, after checkSourceOptions. Throws isotrack's typed errors.
+// Loads the file or builds the field, after checkSourceOptions; warns on stderr of
+// each DICOM file skipped. Throws isotrack's typed errors.
 Source loadSource(const SourceOptions& options);
 
 // A --seed point given in `frame` (the LPS world unless --frame says otherwise)

@@ -59,6 +59,7 @@ std::shared_ptr<LoadedVolume> loadForView(const VolumeSource& source) {
     loaded->defaultIso = *read.defaultIso;
     loaded->range = loaded->volume.range();
     loaded->histogram = histogramOf(loaded->volume, loaded->range);
+    if (read.dicom) loaded->skipped = read.dicom->skipped;
     return loaded;
 }
 

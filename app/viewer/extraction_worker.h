@@ -51,8 +51,9 @@ struct LoadedVolume {
     VolumeSource source;
     Volume volume;
     std::array<double, 2> range{0.0, 0.0};
-    std::vector<float> histogram;  // sample counts in kHistogramBins bins across `range`
-    double defaultIso = 0.0;       // a field's own, or suggestIsovalue for a file
+    std::vector<float> histogram;       // sample counts in kHistogramBins bins across `range`
+    double defaultIso = 0.0;            // a field's own, or suggestIsovalue for a file
+    std::vector<DicomSkipped> skipped;  // a DICOM folder or DICOMDIR: the files left out, and why
 };
 
 inline constexpr std::size_t kHistogramBins = 128;

@@ -171,8 +171,9 @@ void checkCommand(const Script& script, const ScriptCommand& command) {
     if (command.name == "load") {
         const std::string resolved = scriptInputPath(script, command.text);
         std::error_code error;
-        if (!fs::is_regular_file(resolved, error)) {
-            throw script.error(command, "load: no such file " + command.text);
+        // A file, or a folder of DICOM files.
+        if (!fs::is_regular_file(resolved, error) && !fs::is_directory(resolved, error)) {
+            throw script.error(command, "load: no such file or folder " + command.text);
         }
     } else if (command.name == "click") {
         for (int i = 0; i < 2; ++i) {

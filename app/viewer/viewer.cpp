@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <thread>
 
 #include "gl/timer_query.h"
@@ -33,7 +34,9 @@ Viewer::Viewer(const ViewerOptions& options, std::optional<Script> script)
       profiler_(gl::timerQueriesAvailable()),
       extraction_(extractionThreads(options.threads)) {
     if (!options.volumePath.empty()) {
-        extraction_.setSource(VolumeSource::file(options.volumePath, options.raw));
+        VolumeSource source = VolumeSource::file(options.volumePath, options.raw);
+        source.series = options.series;
+        extraction_.setSource(source);
     } else {
         extraction_.setSource(VolumeSource::field(options.fieldSpec.empty() ? kDefaultField : options.fieldSpec));
     }
@@ -219,14 +222,15 @@ int runViewer(const ViewerOptions& options) {
     std::optional<Script> script;
     if (!options.script.empty()) script = parseScript(options.script);
     if (!options.volumePath.empty()) {
-        std::FILE* file = std::fopen(options.volumePath.c_str(), "rb");
-        if (file == nullptr) throw InputError("--volume " + options.volumePath + ": cannot open the file");
-        std::fclose(file);
+        std::error_code error;
+        const bool folder = std::filesystem::is_directory(options.volumePath, error);
+        std::FILE* file = folder ? nullptr : std::fopen(options.volumePath.c_str(), "rb");
+        if (!folder && file == nullptr) throw InputError("--volume " + options.volumePath + ": cannot open the file");
+        if (file) std::fclose(file);
         if (!options.raw && !volumeFormatOf(options.volumePath)) {
-            throw InputError(
-                "--volume " + options.volumePath +
-                ": unknown volume format (the viewer reads .nrrd .nhdr .nii .nii.gz .mhd .mha .vtk, or raw "
-                "samples with --dims and --type)");
+            throw InputError("--volume " + options.volumePath +
+                             ": unknown volume format (the viewer reads .nrrd .nhdr .nii .nii.gz .mhd .mha .vtk, "
+                             "DICOM: .dcm, a folder or DICOMDIR; or raw samples with --dims and --type)");
         }
     }
     Viewer viewer(options, std::move(script));

@@ -40,6 +40,7 @@ namespace isotrack::viewer {
 struct ViewerOptions {
     std::string volumePath;
     std::optional<RawLayout> raw;  // --dims and friends: read volumePath as raw samples
+    std::string series;            // --series: the DICOM series to read, empty for the default
     std::string fieldSpec;         // default when neither is given: kDefaultField
     std::optional<double> iso;
     TableKind table = TableKind::Consistent;
@@ -134,6 +135,7 @@ private:
     render::FrameOptions frameOptions() const;
     render::FrameView frameView() const;
     void status(const std::string& message);
+    void reportSkipped(const LoadedVolume& volume);
 
     ViewerOptions options_;
     Window window_;

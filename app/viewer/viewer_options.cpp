@@ -73,6 +73,7 @@ int runViewerCommand(const ViewerCommandLine& commandLine) {
         options.height = parseSide(size.substr(x + 1), size);
     }
     const cli::RawOptions& raw = *commandLine.raw;
+    options.series = raw.series;
     if (!raw.dims.empty()) {
         RawLayout layout;
         for (std::size_t a = 0; a < 3; ++a) layout.dims[a] = raw.dims.at(a);

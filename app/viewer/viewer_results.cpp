@@ -18,6 +18,7 @@
 // largest first, in fresh colours. So the list does not reshuffle under the
 // cursor while the isovalue moves.
 #include <algorithm>
+#include <cstdio>
 #include <map>
 
 #include "render/palette.h"
@@ -55,6 +56,7 @@ void Viewer::applyResult(ExtractionResult result) {
     }
     extractionError_.clear();
     const bool newVolume = scene_.setVolume(result.volume);
+    if (newVolume) reportSkipped(*result.volume);
     if (newVolume) {  // a new box, and the default view of it; nothing carries over
         renderer_->setBounds(scene_.volumeBounds());
         const render::FrameOptions options = frameOptions();
@@ -94,6 +96,17 @@ void Viewer::applyResult(ExtractionResult result) {
     placeUntracked(result, old, claimed, next, previousIso);
     for (auto& surface : next) scene_.add(std::move(surface));
     if (scene_.selected && !scene_.find(*scene_.selected)) scene_.selected.reset();
+}
+
+// A DICOM folder's files that were left out: a line each on stderr, and a
+// count in the status line.
+void Viewer::reportSkipped(const LoadedVolume& volume) {
+    if (volume.skipped.empty()) return;
+    for (const DicomSkipped& s : volume.skipped)
+        std::fprintf(stderr, "isotrack: %s: skipped: %s\n", s.file.c_str(), s.why.c_str());
+    const std::size_t n = volume.skipped.size();
+    status_ = displayName(volume.source) + ": " + std::to_string(n) + (n == 1 ? " file" : " files") +
+              " skipped (not readable DICOM images; listed on stderr)";
 }
 
 // Tracked surfaces get their seed's surface, or become Gone or Merged; they stay where they are in `old`.

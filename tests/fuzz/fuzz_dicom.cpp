@@ -1,5 +1,8 @@
 // libFuzzer target: the DICOM loader (through GDCM), on the input as a single
-// .dcm file, and as the one file of a folder; both must agree.
+// .dcm file, and as the one file of a folder; both must agree. In the folder
+// the file's series is named (--series 1), since by default a folder's single
+// slice is not a volume; the default must give the same volume, or none for a
+// single slice.
 //
 // GDCM runs in a child process; when it crashes there, the loader throws a
 // LibraryFailure (a FormatError): the product's handled path, not a finding.
@@ -59,18 +62,23 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     using isotrack::fuzz::workDir;
     using isotrack::fuzz::writeInput;
     bool libraryFailed = false;
-    auto load = [&](const std::string& p) {
+    auto load = [&](const std::string& p, const std::string& series) {
         try {
-            return isotrack::loadDicom(p);
+            return isotrack::loadDicom(p, series);
         } catch (const isotrack::LibraryFailure&) {
             libraryFailed = true;
             throw;
         }
     };
-    const auto file = tryLoad(load, writeInput(data, size, "input.dcm"));
+    const auto loadDefault = [&](const std::string& p) { return load(p, ""); };
+    const auto loadFirst = [&](const std::string& p) { return load(p, "1"); };
+    const auto file = tryLoad(loadDefault, writeInput(data, size, "input.dcm"));
     std::filesystem::create_directories(workDir() / "series");
     writeInput(data, size, "series/slice.dcm");
-    const auto folder = tryLoad(load, (workDir() / "series").string());
+    const auto folder = tryLoad(loadFirst, (workDir() / "series").string());
+    const auto chosen = tryLoad(loadDefault, (workDir() / "series").string());
+    if (chosen && !(folder && same(*chosen, *folder))) std::abort();
+    if (!chosen && folder && folder->dims()[2] != 1) std::abort();
     if (libraryFailed) keepLibraryFailure(data, size);
     if (file.has_value() != folder.has_value() || (file && !same(*file, *folder))) std::abort();
     return 0;

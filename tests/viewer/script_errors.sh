@@ -36,7 +36,7 @@ expect_error unknown "unknown.isotrack:2: unknown command \"frobnicate\"" "$isot
 script bad_number "# a comment" "field sphere:16" "iso zero"
 expect_error bad_number "bad_number.isotrack:3: iso: \"zero\" is not a number" "$isotrack" --script bad_number.isotrack
 script missing_file "load no/such/volume.nrrd"
-expect_error missing_file "missing_file.isotrack:1: load: no such file no/such/volume.nrrd" "$isotrack" --script missing_file.isotrack
+expect_error missing_file "missing_file.isotrack:1: load: no such file or folder no/such/volume.nrrd" "$isotrack" --script missing_file.isotrack
 script bad_click "field sphere:16" "click 1.5 0.5"
 expect_error bad_click "bad_click.isotrack:2: click: 1.5 is outside 0..1" "$isotrack" --script bad_click.isotrack
 script bad_field "field teapot:16"

@@ -1,6 +1,7 @@
 // The script runner against a fake host: what each command asks of the viewer,
 // on which frame, what it waits for, and errors that name the script's line.
 #include <catch2/catch.hpp>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -138,6 +139,14 @@ TEST_CASE("load and field wait until the worker is done and the scene shows the 
     CHECK(isoValues(s.host.actions) == std::vector<double>{1.0});
     CHECK(s.runner.finished());
     CHECK_FALSE(Session("iso 1\nfield sphere:16\n").runner.loadsFirst());
+}
+
+TEST_CASE("load DIR asks the host for the folder as a file source", "[viewer][script]") {
+    const std::string folder = std::filesystem::temp_directory_path().string();  // any folder passes the parser
+    Session s("load " + folder + "\n");
+    CHECK(s.runner.loadsFirst());
+    s.frame();
+    CHECK(s.host.calls == std::vector<std::string>{"file " + folder});
 }
 
 TEST_CASE("frames N takes N frames, this one the first", "[viewer][script]") {

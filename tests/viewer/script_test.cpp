@@ -86,7 +86,7 @@ TEST_CASE("script errors name the file and the line", "[viewer][script]") {
     CHECK(errorOf("click 0.5") == "s.isotrack:1: click: expected 2 to 3 arguments, got 1");
     CHECK(errorOf("click 0.5 1.2") == "s.isotrack:1: click: 1.2 is outside 0..1 (a fraction of the 3D view)");
     CHECK(errorOf("quit now") == "s.isotrack:1: quit: expected 0 arguments, got 1");
-    CHECK(errorOf("load missing/volume.nrrd") == "s.isotrack:1: load: no such file missing/volume.nrrd");
+    CHECK(errorOf("load missing/volume.nrrd") == "s.isotrack:1: load: no such file or folder missing/volume.nrrd");
     CHECK_THAT(errorOf("field teapot"), Catch::StartsWith("s.isotrack:1: field: "));
     CHECK(errorOf("iso nan") == "s.isotrack:1: iso: \"nan\" is not a number");
 }
@@ -102,5 +102,18 @@ TEST_CASE("input paths are looked up next to the script first", "[viewer][script
     CHECK(fs::equivalent(scriptInputPath(script, script.commands[0].text), dir / "volume.nrrd"));
     CHECK(scriptInputPath(script, "/abs/path.nrrd") == "/abs/path.nrrd");
     CHECK_THROWS_WITH(parseScript((dir / "none.isotrack").string()), Catch::Contains("cannot read the script"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("load takes a folder (a DICOM series) as well as a file", "[viewer][script]") {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "isotrack_script_folder_test";
+    fs::create_directories(dir / "series");
+    std::ofstream(dir / "s.isotrack") << "load series\n";
+    const Script script = parseScript((dir / "s.isotrack").string());
+    REQUIRE(script.commands.size() == 1);
+    CHECK(fs::equivalent(scriptInputPath(script, script.commands[0].text), dir / "series"));
+    CHECK(errorOf("load " + (dir / "gone").string()) ==
+          "s.isotrack:1: load: no such file or folder " + (dir / "gone").string());
     fs::remove_all(dir);
 }

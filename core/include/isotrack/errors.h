@@ -3,6 +3,7 @@
 // the field and the offending value, so the command line can print them as-is.
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace isotrack {
 
@@ -16,7 +17,11 @@ public:
 // process isotrack runs it in: the file is damaged or not supported.
 class LibraryFailure : public FormatError {
 public:
-    using FormatError::FormatError;
+    LibraryFailure(const std::string& message, std::string file) : FormatError(message), file_(std::move(file)) {}
+    const std::string& file() const { return file_; }  // the file the library was reading
+
+private:
+    std::string file_;
 };
 
 // A request the core cannot satisfy (unknown field name, bad size, no surface at a seed...).

@@ -1,10 +1,12 @@
 #pragma once
 // Where a volume comes from: a built-in field or a file, with the isovalue to
 // use when none is given.
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <utility>
 
+#include "isotrack/dicom.h"
 #include "isotrack/io.h"
 #include "isotrack/volume.h"
 
@@ -34,6 +36,10 @@ struct LoadedSource {
     // Field: the field's own isovalue. File: suggestIsovalue's (isotrack/isovalue.h,
     // the valley above the histogram's tallest peak), none when it has no finite sample.
     std::optional<double> defaultIso;
+    // A DICOM file, folder or DICOMDIR: its series, the one read (dicomSeries)
+    // and the files skipped, for the front end to report.
+    std::optional<DicomContents> dicom;
+    std::size_t dicomSeries = 0;
 };
 
 // Whether loadSource works out a file's default isovalue: Suggest reads every
@@ -42,7 +48,8 @@ struct LoadedSource {
 enum class DefaultIso { Suggest, Skip };
 
 // Builds the field or reads the file. Throws InputError and FormatError as
-// parseFieldSpec, makeField, loadVolume, loadRaw and loadDicom do.
+// parseFieldSpec, makeField, loadVolume, loadRaw and readDicom do (DicomNoVolume
+// for a DICOM folder where no series forms a volume).
 LoadedSource loadSource(const VolumeSource& source, DefaultIso defaultIso = DefaultIso::Suggest);
 
 }  // namespace isotrack

@@ -143,13 +143,9 @@ void checkVrs(const std::string& path, const DicomStructure& structure) {
     }
 }
 
-// The header of one file, up to its pixel data; nullopt for a file that is not
-// DICOM, or holds no image, when `required` is false.
-std::optional<Image> readImageHeader(const std::string& path, bool required) {
-    const auto refuse = [&](const std::string& problem) -> std::optional<Image> {
-        if (required) throw FormatError(path + ": " + problem);
-        return std::nullopt;
-    };
+// The header of one file, up to its pixel data; a FormatError naming the file
+// for one that is not DICOM, holds no image, or cannot be read.
+Image readImageHeader(const std::string& path) {
     Image image;
     image.path = path;
     // GDCM only ever sees files whose every length has been checked.
@@ -157,19 +153,16 @@ std::optional<Image> readImageHeader(const std::string& path, bool required) {
         image.structure = checkDicomStructure(path);
     } catch (const FormatError& e) {
         if (hasDicomMagic(path)) throw;
-        if (!required) return std::nullopt;
         throw FormatError(path +
                           ": not a DICOM file (no \"DICM\" after a 128-byte preamble, nor a dataset without one)");
     }
     checkVrs(path, image.structure);
     auto texts = headerTexts(path);
-    const bool read = texts.has_value();
-    // A file with the DICM preamble that GDCM cannot read is an error even in a
-    // folder: skipping it could silently drop the first or last slice.
-    if (!read && image.structure.hasMagic) throw FormatError(path + ": its DICOM header cannot be read");
-    if (!read) return refuse("not a DICOM file, or its header is damaged or truncated");
+    if (!texts && image.structure.hasMagic) throw FormatError(path + ": its DICOM header cannot be read");
+    if (!texts) throw FormatError(path + ": not a DICOM file, or its header is damaged or truncated");
     const HeaderFields f(std::move(*texts), path);
-    if (!f.has(0x0028, 0x0010) || !f.has(0x0028, 0x0011)) return refuse("holds no image (no Rows or Columns)");
+    if (!f.has(0x0028, 0x0010) || !f.has(0x0028, 0x0011))
+        throw FormatError(path + ": holds no image (no Rows or Columns)");
 
     image.seriesUid = f.text(0x0020, 0x000e);
     image.description = f.text(0x0008, 0x103e);
@@ -278,12 +271,11 @@ void prepareGdcm() {
 
 bool isDicomdir(const std::string& path) { return lowerCase(fs::path(path).filename().string()) == "dicomdir"; }
 
-SeriesMap readSeries(const std::string& path) {
+Gathered readSeries(const std::string& path, const std::vector<DicomSkipped>& exclude) {
     std::error_code ec;
     std::vector<std::string> files;
-    bool required = true;  // a file named directly must be an image
+    Gathered out;
     if (fs::is_directory(path, ec)) {
-        required = false;
         fs::recursive_directory_iterator it(path, fs::directory_options::skip_permission_denied, ec), end;
         if (ec) throw FormatError(path + ": cannot read the folder: " + ec.message());
         for (; it != end; it.increment(ec)) {
@@ -299,16 +291,28 @@ SeriesMap readSeries(const std::string& path) {
         files = dicomdirFiles(path);
     } else {
         openForReading(path);
-        files.push_back(path);
+        Image image = readImageHeader(path);  // a file named directly must be an image
+        out.series[image.seriesUid].push_back(std::move(image));
+        out.singleFile = true;
+        return out;
     }
-    std::map<std::string, std::vector<Image>> series;
+    std::map<std::string, std::string> excluded;
+    for (const DicomSkipped& s : exclude) excluded[s.file] = s.why;
     for (const std::string& file : files) {
-        if (required) openForReading(file);
-        auto image = readImageHeader(file, required);
-        if (image) series[image->seriesUid].push_back(std::move(*image));
+        if (const auto it = excluded.find(file); it != excluded.end()) {
+            out.skipped.push_back({file, it->second});
+            continue;
+        }
+        // A file left out is reported, never dropped silently: it may have
+        // been a slice of the series the user wants.
+        try {
+            Image image = readImageHeader(file);
+            out.series[image.seriesUid].push_back(std::move(image));
+        } catch (const FormatError& e) {
+            out.skipped.push_back({file, reasonOf(e.what(), file)});
+        }
     }
-    if (series.empty()) throw FormatError(path + ": no DICOM images found");
-    return series;
+    return out;
 }
 
 namespace {

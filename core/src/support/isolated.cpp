@@ -263,8 +263,9 @@ void runIsolated(const IsolatedRun& run, const std::function<void(ReplyWriter&)>
     const std::string subject = notes->subject[0] ? std::string(notes->subject) : run.subject;
     const std::string how = howItEnded(status, reader.cut());
     if (notes->libraryDepth > 0)
-        throw LibraryFailure(subject + ": " + run.library + " failed on it (" + how +
-                             "); the file is damaged or not supported");
+        throw LibraryFailure(
+            subject + ": " + run.library + " failed on it (" + how + "); the file is damaged or not supported",
+            subject);
     throw IsolatedCrash(subject + ": isotrack's reader failed in its child process (" + how + ")");
 }
 

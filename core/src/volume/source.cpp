@@ -20,8 +20,11 @@ LoadedSource loadSource(const VolumeSource& source, DefaultIso defaultIso) {
     }
     if (source.raw) {
         loaded.volume = loadRaw(source.text, *source.raw);
-    } else if (!source.series.empty()) {
-        loaded.volume = loadDicom(source.text, source.series);
+    } else if (!source.series.empty() || volumeFormatOf(source.text) == VolumeFormat::Dicom) {
+        DicomVolume read = readDicom(source.text, source.series);
+        loaded.volume = std::move(read.volume);
+        loaded.dicom = std::move(read.contents);
+        loaded.dicomSeries = read.series;
     } else {
         loaded.volume = loadVolume(source.text);
     }

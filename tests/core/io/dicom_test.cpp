@@ -108,12 +108,16 @@ TEST_CASE("DICOM: several series in a folder, the largest by default, or by UID 
     std::filesystem::create_directories(dir.file("mixed/sub"));
     writeFile(dir.file("mixed/sub/a.dcm"), DicomSlice(8, 8, 0, "1.2.3.small").bytes());
     writeFile(dir.file("mixed/sub/b.dcm"), DicomSlice(8, 8, 5, "1.2.3.small").bytes());
-    writeFile(dir.file("mixed/notes.txt"), "not DICOM, and ignored in a folder");
-    const auto list = listDicomSeries(dir.file("mixed"));
+    writeFile(dir.file("mixed/notes.txt"), "not DICOM, and skipped in a folder");
+    const DicomContents contents = scanDicom(dir.file("mixed"));
+    const auto& list = contents.series;
     REQUIRE(list.size() == 2);
     CHECK(list[0].uid == "1.2.3.big");
     CHECK(list[0].images == 3);
     CHECK(list[1].dims == Dims{8, 8, 2});
+    REQUIRE(contents.skipped.size() == 1);
+    CHECK(contents.skipped[0].file == dir.file("mixed/notes.txt"));
+    CHECK_THAT(contents.skipped[0].why, Catch::StartsWith("not a DICOM file"));
     CHECK(loadVolume(dir.file("mixed")).dims() == Dims{6, 5, 3});
     CHECK(loadDicom(dir.file("mixed"), "2").dims() == Dims{8, 8, 2});
     CHECK(loadDicom(dir.file("mixed"), "1.2.3.small").spacing()[2] == 5.0);
@@ -163,12 +167,12 @@ TEST_CASE("the CT as a DICOM series loads as the NRRD does, whatever the file or
         CHECK(v.origin() == nrrd.origin());
         CHECK(v.direction() == nrrd.direction());
     }
-    CHECK(listDicomSeries(dir.file("shuffled")).size() == 2);
-    CHECK(listDicomSeries(dir.file("dicomdir/DICOMDIR")).size() == 2);
+    CHECK(scanDicom(dir.file("shuffled")).series.size() == 2);
+    CHECK(scanDicom(dir.file("dicomdir/DICOMDIR")).series.size() == 2);
     CHECK(loadDicom(dir.file("shuffled"), "2").dims() == Dims{64, 64, 4});
 }
 
-TEST_CASE("DICOM: a file GDCM aborts on is a one-line error naming it, alone or in a folder",
+TEST_CASE("DICOM: a file GDCM aborts on is a one-line error naming it, or skipped in a folder",
           "[core][dicom][hostile]") {
     // No preamble, one file meta element in implicit VR and nothing after it:
     // GDCM's file meta reader asserts (FileMetaInformation.cxx:467).
@@ -177,19 +181,22 @@ TEST_CASE("DICOM: a file GDCM aborts on is a one-line error naming it, alone or 
         isotrack::testing::readFile(source + "/tests/fuzz/corpus/dicom/implicit_meta_group.dcm");
     TempDir dir;
     writeFile(dir.file("meta.dcm"), crashing);
-    const std::string expected = dir.file("meta.dcm") +
-                                 ": the DICOM library failed on it (it crashed: Aborted); the file is damaged or not "
-                                 "supported";
+    const std::string crashed =
+        "the DICOM library failed on it (it crashed: Aborted); the file is damaged or not "
+        "supported";
+    const std::string expected = dir.file("meta.dcm") + ": " + crashed;
     CHECK_THROWS_MATCHES(loadVolume(dir.file("meta.dcm")), LibraryFailure, Catch::Message(expected));
-    CHECK_THROWS_MATCHES(listDicomSeries(dir.file("meta.dcm")), LibraryFailure, Catch::Message(expected));
-    // Among good slices, the error names the file GDCM was reading.
+    CHECK_THROWS_MATCHES(scanDicom(dir.file("meta.dcm")), LibraryFailure, Catch::Message(expected));
+    // Among good slices, each such file is skipped (the headers are read again
+    // without it), and the series loads.
     writeSeries(dir, "series", {0, 2, 4});
     writeFile(dir.file("series/meta.dcm"), crashing);
-    CHECK_THROWS_MATCHES(loadVolume(dir.file("series")), LibraryFailure,
-                         Catch::Message(dir.file("series/meta.dcm") +
-                                        ": the DICOM library failed on it (it crashed: Aborted); the file is damaged "
-                                        "or not supported"));
-    // And the loader works on after it.
-    std::filesystem::remove(dir.file("series/meta.dcm"));
-    CHECK(loadVolume(dir.file("series")).dims() == Dims{6, 5, 3});
+    std::filesystem::create_directories(dir.file("series/sub"));
+    writeFile(dir.file("series/sub/again.dcm"), crashing);
+    const DicomVolume read = readDicom(dir.file("series"));
+    CHECK(read.volume.dims() == Dims{6, 5, 3});
+    REQUIRE(read.contents.skipped.size() == 2);
+    CHECK(read.contents.skipped[0].file == dir.file("series/meta.dcm"));
+    CHECK(read.contents.skipped[0].why == crashed);
+    CHECK(read.contents.skipped[1].file == dir.file("series/sub/again.dcm"));
 }
