@@ -9,12 +9,11 @@
 // simply read again.
 //
 // Faults: a page of a file that shrank or vanished after it was mapped cannot be
-// read, and the kernel answers the access with SIGBUS. isotrack's handler maps a
-// page of zeros in its place, marks the file as damaged and lets the access go
-// on; throwIfDamaged() then turns that into a FormatError naming the file, so a
-// truncated file is a one-line error, never a crash. Extractions check it when
-// they finish (Volume::throwIfDamaged); the zeros read meanwhile are discarded
-// with the result.
+// read, and the kernel answers the access with SIGBUS. isotrack's handler maps
+// zeros in place of that page and the rest of the mapping, marks the file as
+// damaged and lets the access go on (streaming passes stop at their next batch); throwIfDamaged() then turns that into
+// a FormatError naming the file, so a truncated file is a one-line error, never a crash. Extractions check it when they
+// finish (Volume::throwIfDamaged); the zeros read meanwhile are discarded with the result.
 #include <cstddef>
 #include <cstdint>
 #include <string>

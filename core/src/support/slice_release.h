@@ -20,9 +20,12 @@ public:
             std::size_t(volume.dims()[0]) * std::size_t(volume.dims()[1]) * scalarTypeSize(volume.type());
         batch_ = int(std::max<std::size_t>(1, kBatchBytes / std::max<std::size_t>(slice, 1)));
     }
-    // The pass needs no slice below z any more.
+    // The pass needs no slice below z any more. Throws FormatError when the file
+    // was truncated or removed meanwhile, so that a pass stops at its next batch
+    // instead of reading zeros to the end.
     void passed(int z) {
         if (batch_ && z - released_ >= batch_) {
+            volume_.throwIfDamaged();
             volume_.releaseSlices(released_, z);
             released_ = z;
         }

@@ -4,8 +4,8 @@
 // signal handler without locks (atomics only; registration takes a mutex that
 // the handler never touches). The handler replaces the faulting page with an
 // anonymous page of zeros (mmap MAP_FIXED: a system call, safe in a handler on
-// Linux), marks the mapping damaged and returns, so the access is retried and
-// reads zeros. A SIGBUS outside every mapping goes to the handler that was
+// Linux), with the rest of the mapping after it, marks the mapping damaged and
+// returns, so the access is retried and reads zeros. A SIGBUS outside every mapping goes to the handler that was
 // there before, or kills the process as it would have.
 #include "isotrack/mapped_file.h"
 
@@ -51,8 +51,12 @@ void onSigbus(int signal, siginfo_t* info, void* context) {
     for (GuardSlot& slot : guardSlots) {
         const std::uintptr_t end = slot.end.load(std::memory_order_acquire);
         if (end == 0 || address < slot.begin.load(std::memory_order_relaxed) || address >= end) continue;
-        void* page = reinterpret_cast<void*>(address & ~(pageSize() - 1));
-        if (mmap(page, pageSize(), PROT_READ, MAP_PRIVATE | MAP_ANONYMOUS | MAP_FIXED, -1, 0) != MAP_FAILED) {
+        // Zeros from the faulting page to the end of the mapping in one call: a file
+        // that shrank has lost its tail, and the rest of the pass then reads on
+        // without a signal per page.
+        const std::uintptr_t page = address & ~(pageSize() - 1);
+        if (mmap(reinterpret_cast<void*>(page), end - page, PROT_READ, MAP_PRIVATE | MAP_ANONYMOUS | MAP_FIXED, -1,
+                 0) != MAP_FAILED) {
             slot.damaged.store(true, std::memory_order_release);
             return;
         }
