@@ -227,6 +227,9 @@ py::tuple loadPy(const std::string& path) {
     const Volume& kept = *static_cast<const Volume*>(owner.get_pointer());
     py::array samples(dtypeOf(type), {py::ssize_t(dims[2]), py::ssize_t(dims[1]), py::ssize_t(dims[0])},
                       static_cast<const void*>(kept.bytes()), owner);
+    // Read-only: mapped samples live in a read-only map of the file (a write would
+    // crash), and a loaded volume is the file's, in memory or not.
+    samples.attr("setflags")(py::arg("write") = false);
     return py::make_tuple(samples, triple(spacing), triple(origin),
                           py::make_tuple(triple(direction[0]), triple(direction[1]), triple(direction[2])));
 }

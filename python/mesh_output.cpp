@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "isotrack/errors.h"
+#include "isotrack/mapped_file.h"
 
 namespace isotrack::python {
 
@@ -109,7 +110,14 @@ Volume volumeView(const py::array& array, const Geometry& geometry) {
                              std::to_string(array.shape(a)));
     }
     const Dims dims{int(array.shape(2)), int(array.shape(1)), int(array.shape(0))};
-    Volume volume = Volume::view(dims, *type, array.data(), geometry.spacing, geometry.origin);
+    // A Volume's samples mapped from a file (isotrack.open): a volume over the mapping
+    // itself, so that streaming passes let passed slices go and a truncated file is an
+    // error. The array, held for the call, keeps the mapping alive: the pointer owns nothing.
+    const MappedFile* file = MappedFile::containing(array.data());
+    Volume volume = file && file->data() == array.data() && file->size() == std::uint64_t(array.nbytes())
+                        ? Volume::mapped(dims, *type, std::shared_ptr<const MappedFile>(std::shared_ptr<void>(), file),
+                                         geometry.spacing, geometry.origin)
+                        : Volume::view(dims, *type, array.data(), geometry.spacing, geometry.origin);
     volume.setDirection(geometry.direction);
     return volume;
 }
