@@ -67,3 +67,21 @@ def test_track_matches_cli_method_track(cli, blobs):
     assert surface.triangle_count == expected["triangles"] == largest.triangle_count
     assert surface.cells_visited == expected["cells_visited"]
     assert surface.area == pytest.approx(expected["area"], rel=1e-6)
+
+
+def test_default_level_is_the_command_lines_on_the_ct(cli):
+    """level=None takes the isovalue info suggests and extract opens at without --iso."""
+    from conftest import SOURCE_DIR
+
+    ct = SOURCE_DIR / "assets" / "ct" / "cranium.nrrd"
+    if not ct.is_file():
+        pytest.skip("the CT sample is missing (scripts/get_ct.sh makes it)")
+    info = json.loads(cli("info", "--volume", ct, "--json"))
+    report = extract_json(cli, "--volume", ct, "--method", "all")
+    assert report["isovalue"] == info["suggested_isovalue"]
+    volume = isotrack.load(str(ct))
+    surfaces = isotrack.surfaces(volume)
+    assert [s.triangle_count for s in surfaces] == [s["triangles"] for s in report["surfaces"]]
+    # The middle of the range (scikit-image's default) gives another surface.
+    middle = float(volume.samples.min() + volume.samples.max()) / 2
+    assert sum(s.triangle_count for s in isotrack.surfaces(volume, middle)) != report["triangles"]
