@@ -42,6 +42,13 @@ std::string gib(std::uint64_t bytes) {
     return text;
 }
 
+// A volume over the budget has no default isovalue (it would read every sample).
+InputError overBudgetWithoutIso(const LoadedVolume& volume, std::uint64_t memoryBudget) {
+    return InputError(volume.source.text + ": " + gib(volume.mappedBytes) + " mapped, over the memory budget of " +
+                      gib(memoryBudget) + ": give --iso (a default isovalue reads every sample) or a larger " +
+                      "--memory-budget");
+}
+
 bool meshHasEdge(const Mesh& mesh, const GridEdge& edge) {
     return std::any_of(mesh.vertexEdges.begin(), mesh.vertexEdges.end(),
                        [&](const PackedGridEdge& e) { return GridEdge(e) == edge; });
@@ -75,11 +82,7 @@ std::shared_ptr<LoadedVolume> loadForView(const VolumeSource& source, bool isoGi
         loaded->overBudget = loaded->mappedBytes > memoryBudget;
     }
     if (loaded->overBudget) {
-        if (!isoGiven) {
-            throw InputError(source.text + ": " + gib(loaded->mappedBytes) + " mapped, over the memory budget of " +
-                             gib(memoryBudget) + ": give --iso (a default isovalue reads every sample) or a larger " +
-                             "--memory-budget");
-        }
+        if (!isoGiven) throw overBudgetWithoutIso(*loaded, memoryBudget);
         loaded->valuesRead = false;
         loaded->defaultIso = std::numeric_limits<double>::quiet_NaN();
         return loaded;
@@ -206,6 +209,7 @@ ExtractionResult ExtractionWorker::work(const ExtractionRequest& request) {
     try {
         result.volume = volumeFor(request, result.loadMs);
         if (cancelling()) throw Cancelled{};
+        if (!request.iso && !result.volume->valuesRead) throw overBudgetWithoutIso(*result.volume, memoryBudget_);
         result.iso = request.iso.value_or(result.volume->defaultIso);
         extract(request, *result.volume, result);
     } catch (const std::bad_alloc&) {
