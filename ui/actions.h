@@ -81,13 +81,17 @@ struct SetSurfaceIso {  // method tree: surface `id` at an isovalue of its own
     std::uint32_t id = 0;
     double iso = 0.0;
 };
+// A volume over the memory budget: let the method asked for read it whole, or
+// do not (back to track).
+struct ConfirmExtraction {};
+struct CancelExtraction {};
 struct FrameSelection {};
 struct FrameAll {};
 
-using Action =
-    std::variant<LoadField, LoadFile, SetIso, SetTable, SetMethod, Growth, SetCellsPerFrame, SetGrowthBudget,
-                 SetColourByGrowth, Select, SetVisible, Isolate, ShowAll, Delete, Export, SetColour, SetOffset,
-                 SetExplode, SetWireframe, SetBoundingBox, SetMinPersistence, SetSurfaceIso, FrameSelection, FrameAll>;
+using Action = std::variant<LoadField, LoadFile, SetIso, SetTable, SetMethod, Growth, SetCellsPerFrame, SetGrowthBudget,
+                            SetColourByGrowth, Select, SetVisible, Isolate, ShowAll, Delete, Export, SetColour,
+                            SetOffset, SetExplode, SetWireframe, SetBoundingBox, SetMinPersistence, SetSurfaceIso,
+                            ConfirmExtraction, CancelExtraction, FrameSelection, FrameAll>;
 
 inline constexpr const char* kDefaultExportPattern = "surface_{id}.ply";
 

@@ -111,6 +111,15 @@ void dataSection(const PanelState& state, PanelScratch& scratch, std::vector<Act
     fieldChooser(data, scratch, actions);
     fileChooser(scratch, actions);
     if (!data.loaded) return;
+    if (!data.valuesRead) {
+        ImGui::Text("%d x %d x %d %s, values not read", data.dims[0], data.dims[1], data.dims[2],
+                    data.scalarType.c_str());
+        if (ImGui::IsItemHovered()) {
+            ImGui::SetTooltip("%s mapped, over the memory budget: samples are read only where a surface goes",
+                              formatBytes(data.mappedBytes).c_str());
+        }
+        return;
+    }
     ImGui::Text("%d x %d x %d %s, values %.5g .. %.5g", data.dims[0], data.dims[1], data.dims[2],
                 data.scalarType.c_str(), data.rangeMin, data.rangeMax);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", data.source.c_str());

@@ -45,6 +45,18 @@ void persistenceSlider(const PanelState& state, std::vector<Action>& actions) {
     }
 }
 
+// A volume over the memory budget: the method reads all of it from disk only when told to.
+void confirmation(const ExtractionState& extraction, std::vector<Action>& actions) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.8f, 0.35f, 1.0f));
+    ImGui::TextWrapped("%s reads %s from disk (over the memory budget)", methodLabels(extraction.confirmMethod).choice,
+                       formatBytes(extraction.confirmBytes).c_str());
+    ImGui::PopStyleColor();
+    if (ImGui::Button("Extract")) actions.push_back(ConfirmExtraction{});
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) actions.push_back(CancelExtraction{});
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("back to track: click a surface to grow it");
+}
+
 }  // namespace
 
 void extractionSection(const PanelState& state, std::vector<Action>& actions) {
@@ -52,7 +64,11 @@ void extractionSection(const PanelState& state, std::vector<Action>& actions) {
     const DataState& data = state.data;
     double iso = extraction.iso;
     const double low = data.loaded ? data.rangeMin : 0.0, high = data.loaded ? data.rangeMax : 1.0;
-    if (ImGui::SliderScalar("isovalue", ImGuiDataType_Double, &iso, &low, &high, "%.5g")) {
+    if (data.loaded && !data.valuesRead) {  // no range to slide across: typed in
+        if (ImGui::InputDouble("isovalue", &iso, 0.0, 0.0, "%.5g", ImGuiInputTextFlags_EnterReturnsTrue)) {
+            actions.push_back(SetIso{iso});
+        }
+    } else if (ImGui::SliderScalar("isovalue", ImGuiDataType_Double, &iso, &low, &high, "%.5g")) {
         actions.push_back(SetIso{iso});
     }
 
@@ -85,6 +101,7 @@ void extractionSection(const PanelState& state, std::vector<Action>& actions) {
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", labels.tooltip);
     }
     if (extraction.method == Method::Tree) persistenceSlider(state, actions);
+    if (extraction.confirmBytes > 0) confirmation(extraction, actions);
     progress(extraction, state.stats.deterministic);
     if (!extraction.error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));

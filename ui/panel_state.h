@@ -36,6 +36,8 @@ struct DataState {
     std::string scalarType;
     double rangeMin = 0.0, rangeMax = 1.0;
     std::vector<float> histogram;  // sample counts per bin, bins evenly across [rangeMin, rangeMax]
+    std::size_t mappedBytes = 0;   // a mapped file's samples: its bytes (0: in memory)
+    bool valuesRead = true;        // false: mapped and over the memory budget, range and histogram not read
 };
 
 struct ExtractionState {
@@ -50,6 +52,10 @@ struct ExtractionState {
     float fraction = -1.0f;       // estimated completion 0..1, or < 0 when unknown
     double lastMs = 0.0;          // the last finished extraction (worker time)
     std::string error;            // the last failure, shown until the next success
+    // Nonzero: `confirmMethod` reads this many bytes of a volume over the memory
+    // budget, and waits for Extract (ConfirmExtraction) or Cancel.
+    std::size_t confirmBytes = 0;
+    Method confirmMethod = Method::All;
 };
 
 struct GrowthState {
@@ -94,7 +100,8 @@ struct StatsState {
     std::vector<float> frameTimesMs;  // oldest first, the last few hundred frames
     // The last frame's stages, CPU milliseconds, and the GPU's time for the 3D draw (< 0: unknown).
     double inputMs = 0, uiMs = 0, extractMs = 0, uploadMs = 0, drawMs = 0, presentMs = 0, gpuMs = -1;
-    std::size_t cpuVolumeBytes = 0, cpuMeshBytes = 0, cpuTableBytes = 0;
+    std::size_t cpuVolumeBytes = 0, cpuMeshBytes = 0, cpuTableBytes = 0;  // a mapped volume: 0, it is the file's
+    bool volumeMapped = false;
     std::size_t gpuSurfaceBytes = 0, gpuOtherBytes = 0;
     // The surfaces' shared GPU pages: how many, their free space, its largest
     // range, and how split it is (0: one range per buffer, towards 1: many small).

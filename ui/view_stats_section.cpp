@@ -73,7 +73,8 @@ void statsSection(const PanelState& state) {
 
     ImGui::Text("CPU %s: volume %s, meshes %s,",
                 formatBytes(stats.cpuVolumeBytes + stats.cpuMeshBytes + stats.cpuTableBytes).c_str(),
-                formatBytes(stats.cpuVolumeBytes).c_str(), formatBytes(stats.cpuMeshBytes).c_str());
+                stats.volumeMapped ? "mapped" : formatBytes(stats.cpuVolumeBytes).c_str(),
+                formatBytes(stats.cpuMeshBytes).c_str());
     ImGui::Text("    tables %s; process RSS %s", formatBytes(stats.cpuTableBytes).c_str(),
                 frozen ? "--" : formatBytes(stats.rssBytes).c_str());
     ImGui::Text("GPU %s: surfaces %s, other %s", formatBytes(stats.gpuSurfaceBytes + stats.gpuOtherBytes).c_str(),

@@ -3,6 +3,7 @@
 namespace isotrack::viewer {
 
 void ExtractionController::setSource(VolumeSource source) {
+    if (source != source_) confirmed_.clear();
     source_ = std::move(source);
     iso_.reset();
 }
@@ -16,6 +17,7 @@ void ExtractionController::submit(std::vector<SeedRequest> seeds, std::vector<Fl
     request.table = table_;
     request.method = method_;
     request.minPersistence = minPersistence_;
+    request.confirmed = confirmed(method_);
     if (!lastRequest_ || supersedes(request, *lastRequest_)) epoch_ = request.generation;
     lastRequest_ = request;
     request.seeds = std::move(seeds);

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <set>
 #include <vector>
 
 #include "viewer/extraction_worker.h"
@@ -18,7 +19,7 @@ namespace isotrack::viewer {
 
 class ExtractionController {
 public:
-    explicit ExtractionController(int threads) : worker_(threads) {}
+    ExtractionController(int threads, std::uint64_t memoryBudget) : worker_(threads, memoryBudget) {}
 
     // ---- what is wanted ----
     const VolumeSource& source() const { return source_; }
@@ -31,6 +32,10 @@ public:
     void setMethod(ui::Method method) { method_ = method; }
     double minPersistence() const { return minPersistence_; }  // method tree: 0, or the simplification's
     void setMinPersistence(double persistence) { minPersistence_ = persistence; }
+    // The user agreed that `method` may read the whole source (a volume over
+    // the memory budget); asked once per source and method.
+    void confirm(ui::Method method) { confirmed_.insert(method); }
+    bool confirmed(ui::Method method) const { return confirmed_.count(method) != 0; }
 
     // Sends what is wanted, with the tracked surfaces' seeds and the flexible
     // surfaces' own isovalues; `onlyFlexible`: only those surfaces changed.
@@ -55,6 +60,7 @@ private:
     TableKind table_ = TableKind::Consistent;
     ui::Method method_ = ui::Method::All;
     double minPersistence_ = 0.0;
+    std::set<ui::Method> confirmed_;  // for source_
 
     std::uint64_t generation_ = 0;
     std::uint64_t epoch_ = 0;  // results of requests before this one are void

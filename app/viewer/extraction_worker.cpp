@@ -6,12 +6,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <limits>
 
 #include "isotrack/errors.h"
 #include "isotrack/extract.h"
+#include "isotrack/isovalue.h"
 #include "isotrack/source.h"
 #include "ui/method_labels.h"
 
@@ -34,6 +36,19 @@ std::vector<float> histogramOf(const Volume& volume, const std::array<double, 2>
 // Thrown inside a pass when the flag is raised; caught by work().
 struct Cancelled {};
 
+std::string gib(std::uint64_t bytes) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.3g GiB", double(bytes) / double(std::uint64_t(1) << 30));
+    return text;
+}
+
+// A volume over the budget has no default isovalue (it would read every sample).
+InputError overBudgetWithoutIso(const LoadedVolume& volume, std::uint64_t memoryBudget) {
+    return InputError(volume.source.text + ": " + gib(volume.mappedBytes) + " mapped, over the memory budget of " +
+                      gib(memoryBudget) + ": give --iso (a default isovalue reads every sample) or a larger " +
+                      "--memory-budget");
+}
+
 bool meshHasEdge(const Mesh& mesh, const GridEdge& edge) {
     return std::any_of(mesh.vertexEdges.begin(), mesh.vertexEdges.end(),
                        [&](const PackedGridEdge& e) { return GridEdge(e) == edge; });
@@ -50,20 +65,37 @@ bool supersedes(const ExtractionRequest& newer, const ExtractionRequest& older) 
     return newer.source != older.source || newer.method != older.method || newer.table != older.table;
 }
 
-std::shared_ptr<LoadedVolume> loadForView(const VolumeSource& source) {
-    LoadedSource read = isotrack::loadSource(source);
-    if (!read.defaultIso) throw InputError(source.text + ": no finite samples");
+std::uint64_t defaultMemoryBudget() { return availableMemoryBytes() / 2; }
+
+// The samples are read (range, histogram, and for a file core's suggested
+// isovalue) unless the volume is mapped and over the budget: then nothing is
+// read until an extraction goes there, and the isovalue must be given.
+std::shared_ptr<LoadedVolume> loadForView(const VolumeSource& source, bool isoGiven, std::uint64_t memoryBudget) {
+    LoadedSource read = isotrack::loadSource(source, DefaultIso::Skip);
     auto loaded = std::make_shared<LoadedVolume>();
     loaded->source = source;
     loaded->volume = std::move(read.volume);
-    loaded->defaultIso = *read.defaultIso;
-    loaded->range = loaded->volume.range();
-    loaded->histogram = histogramOf(loaded->volume, loaded->range);
     if (read.dicom) loaded->skipped = read.dicom->skipped;
+    loaded->mapped = loaded->volume.mappedFile();
+    if (loaded->mapped) {
+        loaded->mappedBytes = loaded->mapped->size();
+        loaded->overBudget = loaded->mappedBytes > memoryBudget;
+    }
+    if (loaded->overBudget) {
+        if (!isoGiven) throw overBudgetWithoutIso(*loaded, memoryBudget);
+        loaded->valuesRead = false;
+        loaded->defaultIso = std::numeric_limits<double>::quiet_NaN();
+        return loaded;
+    }
+    loaded->range = loaded->volume.range();
+    if (!std::isfinite(loaded->range[0])) throw InputError(source.text + ": no finite samples");
+    loaded->defaultIso = read.defaultIso ? *read.defaultIso : suggestIsovalue(loaded->volume);
+    loaded->histogram = histogramOf(loaded->volume, loaded->range);
     return loaded;
 }
 
-ExtractionWorker::ExtractionWorker(int threads) : threads_(std::max(threads, 1)), thread_([this] { run(); }) {}
+ExtractionWorker::ExtractionWorker(int threads, std::uint64_t memoryBudget)
+    : threads_(std::max(threads, 1)), memoryBudget_(memoryBudget), thread_([this] { run(); }) {}
 
 ExtractionWorker::~ExtractionWorker() {
     {
@@ -117,7 +149,12 @@ WorkerProgress ExtractionWorker::progress() const {
     progress.what = running_ ? phase_ : "waiting";
     progress.seconds = running_ ? msSince(phaseStart_) / 1000.0 : 0.0;
     const int total = seedsTotal_.load();
-    if (total > 0) {
+    const std::uint64_t slabs = march_.slabsTotal.load(std::memory_order_relaxed);
+    if (running_ && slabs > 0) {  // mc, all: how much of the volume has streamed past
+        const std::uint64_t done = std::min(march_.slabsDone.load(std::memory_order_relaxed), slabs);
+        progress.fraction = float(double(done) / double(slabs));
+        if (done == slabs) progress.what += ": marched, finishing";
+    } else if (total > 0) {
         progress.fraction = float(seedsDone_.load()) / float(total);
     } else if (expectedMs_ > 0.0) {
         // The same extraction took expectedMs_ last time; never claim to be done.
@@ -170,8 +207,9 @@ ExtractionResult ExtractionWorker::work(const ExtractionRequest& request) {
     result.method = request.method;
     result.onlyFlexible = request.onlyFlexible;
     try {
-        result.volume = volumeFor(request.source, result.loadMs);
+        result.volume = volumeFor(request, result.loadMs);
         if (cancelling()) throw Cancelled{};
+        if (!request.iso && !result.volume->valuesRead) throw overBudgetWithoutIso(*result.volume, memoryBudget_);
         result.iso = request.iso.value_or(result.volume->defaultIso);
         extract(request, *result.volume, result);
     } catch (const std::bad_alloc&) {
@@ -190,7 +228,8 @@ ExtractionResult ExtractionWorker::work(const ExtractionRequest& request) {
     return result;
 }
 
-std::shared_ptr<const LoadedVolume> ExtractionWorker::volumeFor(const VolumeSource& source, double& loadMs) {
+std::shared_ptr<const LoadedVolume> ExtractionWorker::volumeFor(const ExtractionRequest& request, double& loadMs) {
+    const VolumeSource& source = request.source;
     if (cache_ && cache_->source == source) return cache_;
     setPhase(source.kind == VolumeSource::Kind::Field ? "building " + source.text : "loading " + displayName(source),
              0.0);
@@ -202,7 +241,7 @@ std::shared_ptr<const LoadedVolume> ExtractionWorker::volumeFor(const VolumeSour
     treeLayout_.reset();
     fullLayout_.reset();
     simplifiedLayout_.reset();
-    cache_ = loadForView(source);
+    cache_ = loadForView(source, request.iso.has_value(), memoryBudget_);
     loadMs = msSince(start);
     return cache_;
 }
@@ -218,6 +257,12 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
         result.extractMs = msSince(start);
         return;
     }
+    if (request.method != Method::Track && loaded.overBudget && !request.confirmed) {
+        result.confirmBytes = loaded.mappedBytes;  // the viewer asks first; seeds wait too
+        return;
+    }
+    march_.slabsDone = 0;
+    march_.slabsTotal = 0;
     if (request.method != Method::Track) {  // track: only the seeds' surfaces, below
         ExtractRequest exhaustive;
         exhaustive.method = request.method;
@@ -226,6 +271,7 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
         exhaustive.threads = threads_;
         exhaustive.measure = true;
         exhaustive.cancel = &cancel_;
+        exhaustive.progress = &march_;
         if (request.method == Method::Tree && request.table == TableKind::Consistent) {
             exhaustive.tree = &treeOf(volume, request.minPersistence);
             result.tree = lastTree_;
@@ -233,6 +279,7 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
             setPhase(ui::methodLabels(request.method).work, known != lastMs_.end() ? known->second : 0.0);
         }
         result.surfaces = isotrack::extract(volume, exhaustive);
+        march_.slabsTotal = 0;
     }
     if (cancelling()) throw Cancelled{};
     trackFlexible(request, volume, result);

@@ -17,11 +17,20 @@
 // thread (GL objects are created only there). With the contour tree, a request
 // may ask only for the surfaces with an isovalue of their own (flexible
 // isosurfaces): the others are not extracted again.
+//
+// Volumes bigger than memory: a mapped volume (isotrack/mapped_file.h) whose
+// bytes exceed the worker's memory budget is loaded without reading its
+// samples (no range, histogram or default isovalue: the request must carry an
+// isovalue), and a method that reads the whole volume (mc, all, tree) runs on
+// it only when the request is confirmed; unconfirmed, the result carries the
+// bytes it would read and no surfaces, for the viewer to ask. While mc or all
+// march, progress() reports the slabs done (ExtractRequest::progress).
 #include <array>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -31,8 +40,10 @@
 #include <vector>
 
 #include "isotrack/contour_tree.h"
+#include "isotrack/extract.h"
 #include "isotrack/follow.h"
 #include "isotrack/io.h"
+#include "isotrack/mapped_file.h"
 #include "isotrack/source.h"
 #include "isotrack/tables.h"
 #include "isotrack/tracking.h"
@@ -54,6 +65,13 @@ struct LoadedVolume {
     std::vector<float> histogram;       // sample counts in kHistogramBins bins across `range`
     double defaultIso = 0.0;            // a field's own, or suggestIsovalue for a file
     std::vector<DicomSkipped> skipped;  // a DICOM folder or DICOMDIR: the files left out, and why
+    // A mapped file's samples (isotrack/mapped_file.h): its bytes, and whether
+    // they exceed the memory budget. Over it, the samples were not read:
+    // `range`, `histogram` and `defaultIso` are unknown (valuesRead false).
+    const MappedFile* mapped = nullptr;
+    std::uint64_t mappedBytes = 0;
+    bool overBudget = false;
+    bool valuesRead = true;
 };
 
 inline constexpr std::size_t kHistogramBins = 128;
@@ -85,6 +103,7 @@ struct ExtractionRequest {
     std::vector<SeedRequest> seeds;         // every tracked surface, in any method
     std::vector<FlexibleRequest> flexible;  // every surface with its own isovalue (method tree)
     bool onlyFlexible = false;              // re-track the flexible surfaces, nothing else
+    bool confirmed = false;                 // mc, all or tree may read a volume over the memory budget
 };
 
 // Where a seed went at the result's isovalue.
@@ -117,6 +136,9 @@ struct ExtractionResult {
     std::shared_ptr<const ContourTree> tree;       // method tree: the volume's tree, to match surfaces by arc
     std::shared_ptr<const TreeLayout> treeLayout;  // method tree: that tree laid out for the panel's plot
     bool onlyFlexible = false;                     // the other surfaces were not extracted again
+    // Nonzero: the method reads this many bytes of a volume over the memory
+    // budget and the request was not confirmed; nothing was extracted.
+    std::uint64_t confirmBytes = 0;
     double loadMs = 0.0, extractMs = 0.0;
     std::chrono::steady_clock::time_point started{}, finished{};  // on the worker
     std::string error;  // set when loading or extracting failed; then only `generation` is meaningful
@@ -133,12 +155,19 @@ struct WorkerProgress {
 // volume, method or table (a new isovalue or seed does not).
 bool supersedes(const ExtractionRequest& newer, const ExtractionRequest& older);
 
-// Loads a source as the viewer shows it (volume, range, histogram, default isovalue).
-std::shared_ptr<LoadedVolume> loadForView(const VolumeSource& source);
+// Loads a source as the viewer shows it (volume, range, histogram, default
+// isovalue). A mapped volume over `memoryBudget` bytes is left unread, and
+// needs `isoGiven` (InputError naming the file, its size and the budget).
+std::shared_ptr<LoadedVolume> loadForView(const VolumeSource& source, bool isoGiven = false,
+                                          std::uint64_t memoryBudget = std::numeric_limits<std::uint64_t>::max());
+
+// The viewer's memory budget when none is given: half of the memory the system
+// can give without swapping (isotrack::availableMemoryBytes).
+std::uint64_t defaultMemoryBudget();
 
 class ExtractionWorker {
 public:
-    explicit ExtractionWorker(int threads);
+    ExtractionWorker(int threads, std::uint64_t memoryBudget);
     ~ExtractionWorker();  // cancels the current pass and waits for it to end
     ExtractionWorker(const ExtractionWorker&) = delete;
     ExtractionWorker& operator=(const ExtractionWorker&) = delete;
@@ -160,7 +189,7 @@ private:
 
     void run();
     ExtractionResult work(const ExtractionRequest& request);
-    std::shared_ptr<const LoadedVolume> volumeFor(const VolumeSource& source, double& loadMs);
+    std::shared_ptr<const LoadedVolume> volumeFor(const ExtractionRequest& request, double& loadMs);
     void extract(const ExtractionRequest& request, const LoadedVolume& volume, ExtractionResult& result);
     const ContourTree& treeOf(const Volume& volume, double minPersistence);
     void trackSeeds(const ExtractionRequest& request, const Volume& volume, ExtractionResult& result);
@@ -169,6 +198,7 @@ private:
     void setPhase(const std::string& what, double expectedMs);
 
     const int threads_;
+    const std::uint64_t memoryBudget_;
     mutable std::mutex mutex_;
     std::condition_variable wake_;
     std::optional<ExtractionRequest> pending_;
@@ -183,6 +213,7 @@ private:
     Clock::time_point phaseStart_{};
     double expectedMs_ = 0.0;
     std::atomic<int> seedsDone_{0}, seedsTotal_{0};
+    ExtractProgress march_;  // mc and all: the slabs marched (reset per extraction)
 
     // Worker-thread only.
     std::shared_ptr<const LoadedVolume> cache_;

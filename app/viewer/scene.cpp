@@ -131,6 +131,8 @@ void Scene::buildUI(ui::PanelState& state) const {
         data.rangeMin = volume_->range[0];
         data.rangeMax = volume_->range[1];
         data.histogram = volume_->histogram;
+        data.mappedBytes = volume_->mappedBytes;
+        data.valuesRead = volume_->valuesRead;
     }
     state.surfaces.reserve(surfaces_.size());
     for (const auto& surface : surfaces_) surface->buildUI(state);
@@ -141,7 +143,9 @@ void Scene::buildUI(ui::PanelState& state) const {
     state.growth.colourByGrowth = colourByGrowth;
 }
 
-std::size_t Scene::cpuVolumeBytes() const { return volume_ ? volume_->volume.byteSize() : 0; }
+// A mapped volume's pages belong to the file (the page cache), not to the
+// viewer: the summary reports them as resident bytes instead.
+std::size_t Scene::cpuVolumeBytes() const { return volume_ && !volume_->mapped ? volume_->volume.byteSize() : 0; }
 
 std::size_t Scene::cpuMeshBytes() const {
     std::size_t bytes = 0;

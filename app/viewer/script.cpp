@@ -47,6 +47,7 @@ const std::map<std::string, Syntax>& commands() {
         {"track", {"NNN", 0, {}}},
         {"frames", {"I", 0, {}}},
         {"wait", {"", 0, {}}},
+        {"confirm", {"", 0, {}}},
         {"sweep", {"NNI", 0, {}}},
         {"screenshot", {"P", 0, {}}},
         {"profile", {"P", 0, {}}},

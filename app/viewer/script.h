@@ -16,6 +16,9 @@
 //                             after any extraction in progress has finished
 //   frames N                  run N frames
 //   wait                      run frames until extraction and growth are done
+//   confirm                   let the method read a volume over the memory budget (the
+//                             panel's Extract), after any extraction in progress has finished;
+//                             an error when no extraction waits for it
 //   sweep FROM TO STEPS       set the isovalue on each of STEPS frames, FROM to TO
 //   screenshot PATH           the whole window, panel included, as PNG
 //   profile PATH              record a Chrome trace from here on, written at the end

@@ -131,6 +131,12 @@ bool ScriptRunner::runCommand(const ScriptCommand& c) {
         }
         if (!host_.hasVolume()) throw script_.error(c, "track: no volume loaded");
         host_.trackPoint(Vec3d{c.numbers[0], c.numbers[1], c.numbers[2]});
+    } else if (name == "confirm") {
+        if (host_.extracting()) {  // the method's request reaches the worker's gate first
+            --next_;
+            return waitFor(Wait::Idle);
+        }
+        host_.apply(ui::ConfirmExtraction{});
     } else if (name == "frames") {
         const auto frames = static_cast<std::uint64_t>(c.numbers[0]);
         if (frames == 0) return true;

@@ -25,6 +25,10 @@ constexpr std::chrono::milliseconds kWaitingFramePeriod{16};
 
 int extractionThreads(int requested) { return requested > 0 ? requested : defaultInteractiveThreadCount(); }
 
+std::uint64_t memoryBudget(double gib) {
+    return gib > 0 ? static_cast<std::uint64_t>(gib * double(std::uint64_t(1) << 30)) : defaultMemoryBudget();
+}
+
 }  // namespace
 
 Viewer::Viewer(const ViewerOptions& options, std::optional<Script> script)
@@ -32,7 +36,9 @@ Viewer::Viewer(const ViewerOptions& options, std::optional<Script> script)
       window_(options.width, options.height, "isotrack", !options.noVsync && !script && !options.deterministic),
       renderer_(std::make_unique<render::Renderer>()),
       profiler_(gl::timerQueriesAvailable()),
-      extraction_(extractionThreads(options.threads)) {
+      extraction_(extractionThreads(options.threads), memoryBudget(options.memoryBudgetGiB)),
+      memoryBudget_(memoryBudget(options.memoryBudgetGiB)),
+      methodChosen_(options.methodGiven) {
     if (!options.volumePath.empty()) {
         VolumeSource source = VolumeSource::file(options.volumePath, options.raw);
         source.series = options.series;

@@ -52,7 +52,9 @@ struct ViewerOptions {
     bool deterministic = false;
     bool noVsync = false;  // vsync is on in interactive sessions unless this; scripts never wait for it
     int width = 1280, height = 800;
-    int threads = 0;  // extraction threads; 0: defaultInteractiveThreadCount()
+    int threads = 0;             // extraction threads; 0: defaultInteractiveThreadCount()
+    bool methodGiven = false;    // --method was given: a volume over the memory budget asks before it, not track
+    double memoryBudgetGiB = 0;  // --memory-budget; 0: defaultMemoryBudget()
 };
 
 inline constexpr const char* kDefaultField = "blobs:128";
@@ -109,6 +111,7 @@ private:
     std::size_t cpuBytes() const;
     std::size_t gpuBytes() const;
     nlohmann::json memoryJson() const;
+    nlohmann::json volumeJson() const;
     void writeScreenshot(const std::string& path) const;
 
     // viewer_script.cpp: the ScriptHost a --script session drives (the rest
@@ -155,6 +158,17 @@ private:
     std::shared_ptr<const TreeLayout> treeLayout_;  // the volume's contour tree laid out (method tree)
     std::string extractionError_;
     std::string status_;
+
+    // A volume over the memory budget: the method that reads it whole waits
+    // for the user's Extract (or Cancel: back to track).
+    std::uint64_t memoryBudget_ = 0;
+    struct Confirmation {
+        ui::Method method = ui::Method::All;
+        std::uint64_t bytes = 0;
+    };
+    std::optional<Confirmation> confirmation_;
+    bool methodChosen_ = false;  // --method, or a method picked since: not switched to track on its own
+    void askConfirmation(const ExtractionResult& result);
 
     // Growth.
     bool playing_ = true;

@@ -24,10 +24,12 @@ Overloaded(Ts...) -> Overloaded<Ts...>;
 void Viewer::apply(const ui::Action& action) {
     std::visit(Overloaded{
                    [&](const ui::LoadField& a) {
+                       confirmation_.reset();
                        extraction_.setSource(VolumeSource::field(a.name + ":" + std::to_string(a.size)));
                        submit();
                    },
                    [&](const ui::LoadFile& a) {
+                       confirmation_.reset();
                        extraction_.setSource(VolumeSource::file(a.path));
                        submit();
                    },
@@ -40,7 +42,22 @@ void Viewer::apply(const ui::Action& action) {
                        submit();
                    },
                    [&](const ui::SetMethod& a) {
+                       methodChosen_ = true;
+                       confirmation_.reset();
                        extraction_.setMethod(a.method);
+                       submit();
+                   },
+                   [&](const ui::ConfirmExtraction&) {
+                       if (!confirmation_) throw InputError("confirm: no extraction waits for confirmation");
+                       extraction_.confirm(confirmation_->method);
+                       extraction_.setMethod(confirmation_->method);
+                       confirmation_.reset();
+                       submit();
+                   },
+                   [&](const ui::CancelExtraction&) {
+                       if (!confirmation_) return;
+                       confirmation_.reset();
+                       extraction_.setMethod(ui::Method::Track);
                        submit();
                    },
                    [&](const ui::Growth& a) {

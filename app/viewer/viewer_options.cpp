@@ -43,9 +43,10 @@ ViewerCommandLine addViewerOptions(CLI::App& app) {
                       "Isovalue (default: the field's own, or a file's suggested isovalue, as `isotrack info` "
                       "prints it)");
     cli::addTableOption(*group, o.table);
-    cli::addMethodOption(*group, o.method,
-                         "mc: exhaustive; track: surfaces you click; all: every surface (default); "
-                         "tree: every surface from the contour tree");
+    commandLine.method =
+        cli::addMethodOption(*group, o.method,
+                             "mc: exhaustive; track: surfaces you click; all: every surface (default); "
+                             "tree: every surface from the contour tree");
     cli::addFrameOption(*group, o.frame,
                         "Frame of exported meshes: lps (default, world), ras or voxel; the view stays in the grid");
     group->add_option("--script", o.script, "Run the commands in FILE, one per line, in the window");
@@ -56,6 +57,12 @@ ViewerCommandLine addViewerOptions(CLI::App& app) {
                     "reproducible screenshots");
     group->add_flag("--no-vsync", o.noVsync, "Do not wait for the display's refresh between frames");
     group->add_option("--size", *commandLine.size, "Window size WIDTHxHEIGHT (default 1280x800)");
+    group
+        ->add_option("--memory-budget", o.memoryBudgetGiB,
+                     "GiB a mapped volume may take before the viewer asks: bigger ones open without reading their "
+                     "samples (give --iso), and mc, all and tree ask before they read them (default: half the "
+                     "memory available)")
+        ->check(CLI::PositiveNumber);
     group->add_option("--threads", o.threads, "Extraction threads (default: one fewer than the hardware threads)")
         ->check(CLI::Range(1, 256));
     return commandLine;
@@ -64,6 +71,7 @@ ViewerCommandLine addViewerOptions(CLI::App& app) {
 int runViewerCommand(const ViewerCommandLine& commandLine) {
     ViewerOptions options = *commandLine.options;
     if (options.iso && !std::isfinite(*options.iso)) throw InputError("--iso: must be a finite number");
+    options.methodGiven = commandLine.method != nullptr && commandLine.method->count() > 0;
     if (!options.fieldSpec.empty()) parseFieldSpec(options.fieldSpec);
     const std::string& size = *commandLine.size;
     if (!size.empty()) {

@@ -6,7 +6,8 @@
 
 namespace CLI {
 class App;
-}
+class Option;
+}  // namespace CLI
 namespace isotrack::cli {
 struct RawOptions;
 }
@@ -19,10 +20,11 @@ struct ViewerCommandLine {
     std::shared_ptr<ViewerOptions> options;
     std::shared_ptr<std::string> size;     // WIDTHxHEIGHT, parsed by run()
     std::shared_ptr<cli::RawOptions> raw;  // --dims --type --spacing --endian
+    CLI::Option* method = nullptr;         // --method, to tell a method given from the default
 };
 
 // Adds --volume, --field, --iso, --table, --method, --frame, --script, --json,
-// --profile, --deterministic, --size and --threads to `app`, in a "Viewer" group.
+// --profile, --deterministic, --size, --threads and --memory-budget to `app`, in a "Viewer" group.
 ViewerCommandLine addViewerOptions(CLI::App& app);
 
 // Opens the viewer with the parsed options; returns the exit status. Throws

@@ -61,6 +61,8 @@ nlohmann::json Viewer::memoryJson() const {
             {"surfaces", scene_.surfaces().size()},
             {"extractions_applied", extraction_.appliedCount()},
             {"isovalue_shown", shownIso()},
+            {"confirm_bytes", confirmation_ ? confirmation_->bytes : 0},
+            {"method", ui::methodName(extraction_.method())},
             {"frame", profiler_.frames()}};
 }
 
@@ -86,6 +88,10 @@ ui::PanelState Viewer::panelState() const {
     extraction.fraction = progress.fraction;
     extraction.lastMs = extraction_.lastMs();
     extraction.error = extractionError_;
+    if (confirmation_) {
+        extraction.confirmBytes = confirmation_->bytes;
+        extraction.confirmMethod = confirmation_->method;
+    }
 
     state.tree.layout = treeLayout_;
     for (const auto& surface : scene_.surfaces()) {
@@ -122,6 +128,7 @@ ui::PanelState Viewer::panelState() const {
     stats.presentMs = profiler_.lastStageMs(Stage::Present);
     stats.gpuMs = profiler_.lastGpuMs();
     stats.cpuVolumeBytes = scene_.cpuVolumeBytes();
+    stats.volumeMapped = scene_.volume() && scene_.volume()->mapped;
     stats.cpuMeshBytes = scene_.cpuMeshBytes();
     stats.cpuTableBytes = tableBytes();
     const render::ArenaStats arena = renderer_->arena().stats();
@@ -141,7 +148,23 @@ ui::PanelState Viewer::panelState() const {
     return state;
 }
 
+// The volume's samples: in memory, or mapped from its file (how much of it is
+// resident now, and whether it is over the memory budget, unread).
+nlohmann::json Viewer::volumeJson() const {
+    const std::shared_ptr<const LoadedVolume> volume = scene_.volume();
+    nlohmann::json json = {{"mapped", volume && volume->mapped},
+                           {"memory_budget_bytes", memoryBudget_},
+                           {"awaiting_confirmation", confirmation_.has_value()}};
+    if (!volume) return json;
+    json["bytes"] = volume->volume.byteSize();
+    json["values_read"] = volume->valuesRead;
+    json["over_memory_budget"] = volume->overBudget;
+    if (volume->mapped) json["resident_bytes"] = volume->mapped->residentBytes();
+    return json;
+}
+
 nlohmann::json Viewer::summary() const {
+    const nlohmann::json volumeJson = this->volumeJson();
     nlohmann::json surfaces = nlohmann::json::array();
     for (const auto& surface : scene_.surfaces()) {
         const Mesh& mesh = surface->mesh();
@@ -170,7 +193,10 @@ nlohmann::json Viewer::summary() const {
     }
     nlohmann::json summary = {
         {"source", scene_.volume() ? scene_.volume()->source.text : ""},
-        {"default_isovalue", scene_.volume() ? scene_.volume()->defaultIso : 0.0},
+        {"default_isovalue", volumeJson.value("values_read", true) && scene_.volume()
+                                 ? nlohmann::json(scene_.volume()->defaultIso)
+                                 : nlohmann::json(nullptr)},
+        {"volume", volumeJson},
         {"isovalue", currentIso()},
         {"isovalue_shown", shownIso()},
         {"extractions_applied", extraction_.appliedCount()},

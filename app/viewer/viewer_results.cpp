@@ -22,6 +22,7 @@
 #include <map>
 
 #include "render/palette.h"
+#include "ui/format.h"
 #include "ui/method_labels.h"
 #include "viewer/arc_match.h"
 #include "viewer/viewer.h"
@@ -66,6 +67,11 @@ void Viewer::applyResult(ExtractionResult result) {
         nextColour_ = 0;
         treeLayout_.reset();
     }
+    if (result.confirmBytes > 0) {  // nothing extracted: the method waits for the user's word
+        askConfirmation(result);
+        return;
+    }
+    confirmation_.reset();
     if (result.treeLayout) treeLayout_ = result.treeLayout;
     if (result.onlyFlexible) {  // the other surfaces, and the common isovalue shown, are as they were
         placeFlexible(result, scene_.surfaces());
@@ -96,6 +102,21 @@ void Viewer::applyResult(ExtractionResult result) {
     placeUntracked(result, old, claimed, next, previousIso);
     for (auto& surface : next) scene_.add(std::move(surface));
     if (scene_.selected && !scene_.find(*scene_.selected)) scene_.selected.reset();
+}
+
+// A method that reads the whole of a volume over the memory budget ran into
+// the worker's gate. Not chosen by anyone (the default at start-up), the viewer
+// goes to track and waits for a click; chosen, the panel asks.
+void Viewer::askConfirmation(const ExtractionResult& result) {
+    const std::string size = ui::formatBytes(result.confirmBytes);
+    if (!methodChosen_) {
+        methodChosen_ = true;
+        extraction_.setMethod(ui::Method::Track);
+        status(displayName(result.volume->source) + " maps " + size + ", over the memory budget of " +
+               ui::formatBytes(memoryBudget_) + ": method track, click a surface");
+        return;
+    }
+    confirmation_ = Confirmation{result.method, result.confirmBytes};
 }
 
 // A DICOM folder's files that were left out: a line each on stderr, and a

@@ -22,6 +22,7 @@ std::size_t Viewer::surfaceCount() const { return scene_.surfaces().size(); }
 std::uint32_t Viewer::surfaceId(std::size_t index) const { return scene_.surfaces().at(index)->id(); }
 
 void Viewer::load(const VolumeSource& source) {
+    confirmation_.reset();
     extraction_.setSource(source);
     submit();
 }

@@ -109,3 +109,31 @@ TEST_CASE("with the contour tree the panel adds the persistence and own isovalue
     CHECK(vertices(tree) > vertices(plain));
     CHECK(actions.empty());
 }
+
+TEST_CASE("a volume over the memory budget: unread values and the Extract / Cancel question", "[viewer][ui]") {
+    const HeadlessImGui imgui;
+    ui::Panel panel;
+    std::vector<ui::Action> actions;
+    const auto vertices = [&](const ui::PanelState& state) {
+        int count = 0;
+        for (int frame = 0; frame < 3; ++frame) {
+            ImGui::NewFrame();
+            panel.build(state, actions);
+            ImGui::Render();
+            count = ImGui::GetDrawData()->TotalVtxCount;
+        }
+        return count;
+    };
+    ImGui::GetIO().DisplaySize = ImVec2(960.0f, 4000.0f);
+    ui::PanelState unread = busyState();
+    unread.displayHeight = 4000;
+    unread.extraction.busy = false;
+    unread.data.valuesRead = false;  // no range, no histogram: the isovalue is typed in
+    unread.data.histogram.clear();
+    unread.data.mappedBytes = std::size_t(32) << 30;
+    ui::PanelState asking = unread;
+    asking.extraction.confirmBytes = unread.data.mappedBytes;
+    asking.extraction.confirmMethod = ui::Method::All;
+    CHECK(vertices(asking) > vertices(unread));
+    CHECK(actions.empty());  // the question alone asks nothing of the viewer
+}

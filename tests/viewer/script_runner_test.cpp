@@ -194,6 +194,21 @@ TEST_CASE("clicks and track wait for the extraction in progress", "[viewer][scri
     CHECK(isoValues(t.host.actions) == std::vector<double>{1.0, 2.0});
 }
 
+TEST_CASE("confirm waits for the method's request to reach the worker, then confirms", "[viewer][script]") {
+    Session s("method all\nconfirm\niso 2\n");
+    s.host.busy = true;
+    s.frame();  // the request for all is on its way: confirm is put back
+    REQUIRE(s.host.actions.size() == 1);
+    CHECK(std::holds_alternative<ui::SetMethod>(s.host.actions[0]));
+    s.frame();
+    CHECK(s.host.actions.size() == 1);
+    s.host.busy = false;
+    s.frame();
+    REQUIRE(s.host.actions.size() == 3);
+    CHECK(std::holds_alternative<ui::ConfirmExtraction>(s.host.actions[1]));
+    CHECK(isoValues(s.host.actions) == std::vector<double>{2.0});
+}
+
 TEST_CASE("wait waits for extraction and for growth; screenshot for the picture", "[viewer][script]") {
     Session s("wait\niso 1\nscreenshot a b.png\niso 2\n");
     s.host.growingNow = true;

@@ -3,6 +3,7 @@
 // the command line and in reports.
 #include <array>
 #include <atomic>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,18 @@ Method parseMethod(const std::string& name);
 // "mc", "track", "all" or "tree".
 const char* methodName(Method method);
 
+// How far an exhaustive pass has got, for a front end's progress bar. The
+// march sets `slabsTotal` when it starts (its slabs of cells, twice: it counts,
+// then writes) and adds each slab to `slabsDone` as a thread finishes it, so
+// done/total rises from 0 to 1 while the volume streams past; the rest of an
+// extraction (splitting every surface, measuring) comes after done == total.
+// Methods mc and all with the consistent or classic table report; trilinear,
+// track and tree leave both at 0.
+struct ExtractProgress {
+    std::atomic<std::uint64_t> slabsDone{0};
+    std::atomic<std::uint64_t> slabsTotal{0};
+};
+
 struct ExtractRequest {
     Method method = Method::Exhaustive;
     double iso = 0.0;
@@ -48,6 +61,9 @@ struct ExtractRequest {
     // returns what it finished; the caller that set it discards the result.
     // Checked between passes and between seeds only, never in their loops.
     const std::atomic<bool>* cancel = nullptr;
+    // When given, the march reports its slabs here (ExtractProgress); one
+    // relaxed atomic add per slab, nothing when null.
+    ExtractProgress* progress = nullptr;
 };
 
 // Exhaustive: one surface, the whole mesh. Track: one surface per seed, in the

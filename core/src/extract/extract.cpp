@@ -14,7 +14,7 @@ namespace {
 
 Surface exhaustiveSurface(const Volume& volume, const ExtractRequest& request) {
     Surface surface;
-    surface.mesh = marchingCubes(volume, request.iso, request.table, request.threads);
+    surface.mesh = detail::marchingCubes(volume, request.iso, request.table, request.threads, request.progress);
     if (request.measure && !detail::cancelled(request.cancel)) {
         surface.stats = measureSurface(surface.mesh, volume, request.table == TableKind::Consistent);
     } else {
@@ -67,7 +67,8 @@ std::vector<Surface> extract(const Volume& volume, const ExtractRequest& request
     switch (request.method) {
         case Method::Exhaustive: surfaces.push_back(exhaustiveSurface(volume, request)); break;
         case Method::All:
-            surfaces = detail::extractAllSurfaces(volume, request.iso, request.table, request.threads, request.cancel);
+            surfaces = detail::extractAllSurfaces(volume, request.iso, request.table, request.threads, request.cancel,
+                                                  request.progress);
             break;
         case Method::Track:
             if (request.seeds.empty()) throw InputError("method track needs a seed (a world point near the surface)");

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "isotrack/extract.h"
 #include "isotrack/mesh.h"
 #include "isotrack/tables.h"
 #include "isotrack/volume.h"
@@ -34,6 +35,8 @@ struct LabelledMesh {
     Buffer<std::uint8_t> tally;  // per vertex, the cell pieces and triangles counted at it (kTalliedPiece)
 };
 
-LabelledMesh marchLabelled(const Volume& volume, double iso, TableKind table, int threads);
+// Its slabs are added to `progress` when given (ExtractProgress).
+LabelledMesh marchLabelled(const Volume& volume, double iso, TableKind table, int threads,
+                           ExtractProgress* progress = nullptr);
 
 }  // namespace isotrack::detail

@@ -37,6 +37,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "cancel.h"
+#include "edge_slots.h"
 #include "edge_vertex.h"
 #include "isotrack/continuation.h"
 #include "isotrack/cube.h"
@@ -51,6 +53,8 @@
 namespace isotrack {
 namespace {
 
+using detail::EdgeSlots;
+using detail::edgeSlots;
 constexpr std::uint32_t kNoVertex = std::numeric_limits<std::uint32_t>::max();
 using detail::kSeamBit;  // placeholder: a vertex on the next chunk's first slice
 
@@ -58,40 +62,6 @@ struct RowSpan {
     int lo, hi;                // x-edges [lo, hi) hold every change of flag along the row
     std::uint8_t first, last;  // flags of the row's first and last samples
 };
-
-struct EdgeSlots {
-    // config of the cell whose two x-columns of four flags (bits: row y at z, row
-    // y+1 at z, row y at z+1, row y+1 at z+1) are `left | right << 4`.
-    std::array<std::uint8_t, 256> configOfColumns{};
-    std::array<int, 12> axis{};
-    std::array<std::array<int, 3>, 12> origin{};  // the edge's first corner, from the cell's
-    std::array<std::size_t, 12> offset{};         // within a slice, from the cell's origin sample
-    std::array<std::uint16_t, 256> crossed{};
-};
-
-EdgeSlots edgeSlots(int nx) {
-    EdgeSlots s;
-    for (int e = 0; e < cube::kEdgeCount; ++e) {
-        const auto& o = cube::edgeOrigin(e);
-        s.origin[e] = o;
-        s.axis[e] = cube::edgeAxis(e);
-        s.offset[e] = std::size_t(o[0]) + std::size_t(nx) * std::size_t(o[1]);
-    }
-    for (int columns = 0; columns < 256; ++columns) {
-        const int l = columns & 15, r = columns >> 4;
-        s.configOfColumns[columns] =
-            static_cast<std::uint8_t>((l & 1) | (r & 1) << 1 | (r >> 1 & 1) << 2 | (l >> 1 & 1) << 3 |
-                                      (l >> 2 & 1) << 4 | (r >> 2 & 1) << 5 | (r >> 3 & 1) << 6 | (l >> 3 & 1) << 7);
-    }
-    for (int c = 0; c < 256; ++c) {
-        unsigned mask = 0;
-        for (int e = 0; e < cube::kEdgeCount; ++e) {
-            if ((c >> cube::kEdgeVertices[e][0] & 1) != (c >> cube::kEdgeVertices[e][1] & 1)) mask |= 1u << e;
-        }
-        s.crossed[c] = static_cast<std::uint16_t>(mask);
-    }
-    return s;
-}
 
 // Slabs [zBegin, zEnd) of the volume. A first pass counts the chunk's vertices
 // and triangles; the second writes them straight into their ranges of the
@@ -142,8 +112,9 @@ public:
     // With labels.parent, the writing pass labels surfaces in it (surface_labels.h).
     ChunkMarcher(const Volume& volume, const detail::SampleGrid<T>& grid,
                  const std::array<CaseContinuation, 256>& table, const EdgeSlots& slots,
-                 const detail::SurfaceLabels& labels, Mesh& mesh)
+                 const detail::SurfaceLabels& labels, Mesh& mesh, ExtractProgress* progress)
         : volume_(volume),
+          progress_(progress),
           grid_(grid),
           table_(table),
           slots_(slots),
@@ -192,6 +163,7 @@ public:
             if (z + 1 < chunk_->zEnd || chunk_->last) vertices += crossings;
             vertices += verticalCrossings(bottom, top);
             for (int y = 0; y + 1 < ny_; ++y) triangles += rowTriangles(y, bottom, top);
+            slabDone();
         }
         release.finish(chunk_->zEnd + 1);
         chunk_->vertexCount = vertices;
@@ -225,6 +197,7 @@ public:
                 for (int y = 0; y + 1 < ny_; ++y) marchRow<false>(y, z, bottom, top);
             }
             if (z == chunk_->zBegin) chunk_->firstSliceIds = planar_[bottom];
+            slabDone();
         }
         release.finish(chunk_->zEnd + 2);
         if (chunk_->vertexCursor != chunk_->vertexCount || chunk_->indexCursor != 3 * chunk_->triangleCount) {
@@ -237,6 +210,11 @@ public:
 
 private:
     const Volume& volume_;
+    ExtractProgress* const progress_;
+
+    void slabDone() {
+        if (progress_) progress_->slabsDone.fetch_add(1, std::memory_order_relaxed);
+    }
 
     void classifySlice(int z, int slot) {
         std::uint8_t* flags = flags_[slot].data();
@@ -526,7 +504,7 @@ void resolveSeam(std::vector<Chunk>& chunks, std::size_t c, Mesh& mesh) {
 // The exhaustive pass on `threads` threads; labels surfaces in *parent and tallies
 // cell pieces in *tally (both resized to one entry per vertex) when given.
 std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int threads, Mesh& mesh,
-                         Buffer<std::uint32_t>* parent, Buffer<std::uint8_t>* tally) {
+                         Buffer<std::uint32_t>* parent, Buffer<std::uint8_t>* tally, ExtractProgress* progress) {
     const Dims& n = volume.dims();
     if (n[0] < 2 || n[1] < 2 || n[2] < 2) return {};
     const int slabs = n[2] - 1;
@@ -539,6 +517,7 @@ std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int 
         chunks[std::size_t(c)].zEnd = int(std::int64_t(slabs) * (c + 1) / chunkCount);
         chunks[std::size_t(c)].last = c + 1 == chunkCount;
     }
+    if (progress) progress->slabsTotal.fetch_add(2 * std::uint64_t(slabs), std::memory_order_relaxed);
     const auto& continuation = continuationTable(table);
     const EdgeSlots slots = edgeSlots(n[0]);
     visitSamples(volume, [&](const auto* samples) {
@@ -547,7 +526,7 @@ std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int 
         // A marcher per thread, its slices of flags and ids reused from chunk to chunk.
         detail::parallelForWithState(
             chunkCount, threads,
-            [&] { return ChunkMarcher<T>(volume, grid, continuation, slots, detail::SurfaceLabels{}, mesh); },
+            [&] { return ChunkMarcher<T>(volume, grid, continuation, slots, detail::SurfaceLabels{}, mesh, progress); },
             [&](ChunkMarcher<T>& marcher, int c) { marcher.count(chunks[std::size_t(c)]); });
         allocate(chunks, mesh);
         detail::SurfaceLabels labels;
@@ -569,7 +548,8 @@ std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int 
             }
         };
         detail::parallelForWithState(
-            chunkCount, threads, [&] { return ChunkMarcher<T>(volume, grid, continuation, slots, labels, mesh); },
+            chunkCount, threads,
+            [&] { return ChunkMarcher<T>(volume, grid, continuation, slots, labels, mesh, progress); },
             [&](ChunkMarcher<T>& marcher, int index) {
                 const std::size_t c = std::size_t(index);
                 marcher.run(chunks[c]);
@@ -583,20 +563,24 @@ std::vector<Chunk> march(const Volume& volume, double iso, TableKind table, int 
 }  // namespace
 
 Mesh marchingCubes(const Volume& volume, double iso, TableKind table, int threads) {
-    Mesh mesh;
-    if (table == TableKind::Trilinear)
-        mesh = detail::marchTrilinear(volume, iso, threads);
-    else
-        march(volume, iso, table, threads, mesh, nullptr, nullptr);
-    volume.throwIfDamaged();  // a mapped file that shrank meanwhile read as zeros
-    return mesh;
+    return detail::marchingCubes(volume, iso, table, threads, nullptr);
 }
 
 namespace detail {
 
-LabelledMesh marchLabelled(const Volume& volume, double iso, TableKind table, int threads) {
+Mesh marchingCubes(const Volume& volume, double iso, TableKind table, int threads, ExtractProgress* progress) {
+    Mesh mesh;
+    if (table == TableKind::Trilinear)
+        mesh = marchTrilinear(volume, iso, threads);
+    else
+        march(volume, iso, table, threads, mesh, nullptr, nullptr, progress);
+    volume.throwIfDamaged();  // a mapped file that shrank meanwhile read as zeros
+    return mesh;
+}
+
+LabelledMesh marchLabelled(const Volume& volume, double iso, TableKind table, int threads, ExtractProgress* progress) {
     LabelledMesh out;
-    std::vector<Chunk> chunks = march(volume, iso, table, threads, out.mesh, &out.parent, &out.tally);
+    std::vector<Chunk> chunks = march(volume, iso, table, threads, out.mesh, &out.parent, &out.tally, progress);
     for (Chunk& chunk : chunks) {
         out.chunks.push_back({chunk.vertexBase, chunk.vertexBase + chunk.vertexCount, chunk.indexBase / 3,
                               chunk.indexBase / 3 + chunk.triangleCount, std::move(chunk.borderVertices)});
