@@ -21,6 +21,7 @@
 #include "cli/dicom_report.h"
 #include "cli/source.h"
 #include "cli/timed_extraction.h"
+#include "cli/tree_progress.h"
 #include "cli/vocabulary.h"
 #include "isotrack/continuation.h"
 #include "isotrack/contour_tree.h"
@@ -247,7 +248,7 @@ Extraction extract(const ExtractOptions& options, const Source& source, TableKin
     double treeSeconds = 0.0;
     if (options.method == Method::Tree) {
         treeSeconds = secondsOf([&] {
-            tree = computeContourTree(source.volume, options.threads);
+            tree = buildContourTree(source.volume, options.threads);
             if (options.minPersistence > 0 || options.minSize > 0)
                 simplifyContourTree(*tree, options.minPersistence, options.minSize);
         });

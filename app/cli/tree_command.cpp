@@ -12,6 +12,7 @@
 #include "cli/commands.h"
 #include "cli/source.h"
 #include "cli/timed_extraction.h"
+#include "cli/tree_progress.h"
 #include "cli/tree_svg.h"
 #include "isotrack/contour_tree.h"
 #include "isotrack/errors.h"
@@ -79,7 +80,7 @@ int runTree(const TreeOptions& options) {
     const Source source = loadSource(options.source);
     const double at = options.at.value_or(source.iso);
     ContourTree tree;
-    const double seconds = secondsOf([&] { tree = computeContourTree(source.volume, options.threads); });
+    const double seconds = secondsOf([&] { tree = buildContourTree(source.volume, options.threads); });
     const double simplifySeconds =
         secondsOf([&] { simplifyContourTree(tree, options.minPersistence, options.minSize); });
     std::size_t kept = 0;

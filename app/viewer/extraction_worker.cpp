@@ -33,9 +33,6 @@ std::vector<float> histogramOf(const Volume& volume, const std::array<double, 2>
     return std::vector<float>(counts.begin(), counts.end());
 }
 
-// Thrown inside a pass when the flag is raised; caught by work().
-struct Cancelled {};
-
 std::string gib(std::uint64_t bytes) {
     char text[32];
     std::snprintf(text, sizeof(text), "%.3g GiB", double(bytes) / double(std::uint64_t(1) << 30));
@@ -150,7 +147,10 @@ WorkerProgress ExtractionWorker::progress() const {
     progress.seconds = running_ ? msSince(phaseStart_) / 1000.0 : 0.0;
     const int total = seedsTotal_.load();
     const std::uint64_t slabs = march_.slabsTotal.load(std::memory_order_relaxed);
-    if (running_ && slabs > 0) {  // mc, all: how much of the volume has streamed past
+    if (running_ && buildingTree_.load()) {
+        progress.what = std::string("building the contour tree: ") + contourTreePhaseName(treeBuild_.phase.load());
+        progress.fraction = float(treeBuild_.fraction());
+    } else if (running_ && slabs > 0) {  // mc, all: how much of the volume has streamed past
         const std::uint64_t done = std::min(march_.slabsDone.load(std::memory_order_relaxed), slabs);
         progress.fraction = float(double(done) / double(slabs));
         if (done == slabs) progress.what += ": marched, finishing";
@@ -297,7 +297,16 @@ const ContourTree& ExtractionWorker::treeOf(const Volume& volume, double minPers
     if (!tree_) {
         setPhase("building the contour tree", lastMs_.count("tree") ? lastMs_["tree"] : 0.0);
         const auto start = Clock::now();
-        tree_ = std::make_shared<const ContourTree>(computeContourTree(volume, threads_));
+        // Its progress shows in the panel; a new volume or method cancels it (Cancelled).
+        treeBuild_.cancel = &cancel_;
+        buildingTree_ = true;
+        try {
+            tree_ = std::make_shared<const ContourTree>(computeContourTree(volume, threads_, &treeBuild_));
+        } catch (...) {
+            buildingTree_ = false;
+            throw;
+        }
+        buildingTree_ = false;
         fullLayout_ = std::make_shared<const TreeLayout>(layoutContourTree(*tree_, ui::kTreePlotBranches));
         lastMs_["tree"] = msSince(start);
     }

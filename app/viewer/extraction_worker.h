@@ -213,7 +213,9 @@ private:
     Clock::time_point phaseStart_{};
     double expectedMs_ = 0.0;
     std::atomic<int> seedsDone_{0}, seedsTotal_{0};
-    ExtractProgress march_;  // mc and all: the slabs marched (reset per extraction)
+    ExtractProgress march_;          // mc and all: the slabs marched (reset per extraction)
+    ContourTreeProgress treeBuild_;  // the contour tree's build, while buildingTree_
+    std::atomic<bool> buildingTree_{false};
 
     // Worker-thread only.
     std::shared_ptr<const LoadedVolume> cache_;

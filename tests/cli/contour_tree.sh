@@ -105,4 +105,17 @@ set +e
 status=$?
 set -e
 [[ $status == 1 ]] && grep -q "^isotrack: .*tree.txt" err.txt || fail "--out tree.txt: status $status, $(cat err.txt)"
+
+# Progress on a terminal (script(1) gives the command one): the phases and a
+# percentage on one line redrawn in place, cleared before the result; none in a pipe.
+if command -v script > /dev/null; then
+    script -qec "'$isotrack' tree --field gyroid:48" /dev/null | tr '\r' '\n' > tty.txt
+    grep -q "^isotrack: contour tree: sorting the samples  *[0-9]*%" tty.txt || fail "no progress on a terminal: $(cat tty.txt)"
+    grep -q "gyroid:48: contour tree of" tty.txt || fail "no result after the progress: $(cat tty.txt)"
+    grep -q $'^\033\[Kgyroid:48: contour tree of' tty.txt || fail "the progress line was not cleared"
+fi
+"$isotrack" tree --field gyroid:48 2> piped.txt > /dev/null
+[[ ! -s piped.txt ]] || fail "progress in a pipe: $(cat piped.txt)"
+"$isotrack" extract --field gyroid:48 --method tree 2> piped.txt > /dev/null
+[[ ! -s piped.txt ]] || fail "extract --method tree: progress in a pipe: $(cat piped.txt)"
 echo "contour tree CLI: ok"

@@ -15,6 +15,7 @@
 // Each arc keeps its regular samples in ascending order, so a seed edge of its
 // surface at any isovalue is found by a binary search, and tracking the seeds
 // gives every surface without a scan of the volume.
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -68,9 +69,26 @@ struct ContourTree {
 // arcs.size() when the surface vanishes on the way (an extremum is passed).
 std::size_t followArc(const ContourTree& tree, std::size_t arc, double to);
 
+// How far a contour tree build has got, for another thread to show, and how it
+// is stopped. The build moves through the phases in order; within sorting,
+// sweeping and merging, done/total is the fraction of samples handled (total is
+// 0 while unknown). Cancel is checked every 64Ki samples.
+struct ContourTreeProgress {
+    enum class Phase : std::uint8_t { Sorting, Sweeping, Merging, Arcs, Done };
+    std::atomic<Phase> phase{Phase::Sorting};
+    std::atomic<std::uint64_t> done{0}, total{0};
+    const std::atomic<bool>* cancel = nullptr;  // when another thread sets it: Cancelled
+
+    // The fraction of the whole build, from the phases' typical shares of its time.
+    double fraction() const;
+};
+// "sorting the samples", "sweeping the join and split trees", "merging them", "building arcs", "done".
+const char* contourTreePhaseName(ContourTreeProgress::Phase phase);
+
 // Builds the contour tree on up to two threads (the join and split trees at
-// once). Throws InputError for an empty volume or one of 2^31 samples or more.
-ContourTree computeContourTree(const Volume& volume, int threads = 2);
+// once). Throws InputError for an empty volume or one of 2^31 samples or more,
+// and Cancelled (isotrack/errors.h) when progress->cancel is set meanwhile.
+ContourTree computeContourTree(const Volume& volume, int threads = 2, ContourTreeProgress* progress = nullptr);
 
 // Hides noise: repeatedly prunes the leaf branch (a chain of arcs from an
 // extremum to the saddle where it joins the rest) with the smallest measure,

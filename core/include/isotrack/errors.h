@@ -24,6 +24,13 @@ private:
     std::string file_;
 };
 
+// A long operation stopped part-way because its caller asked it to (see
+// ContourTreeProgress::cancel); not an error to show.
+class Cancelled : public std::runtime_error {
+public:
+    Cancelled() : std::runtime_error("cancelled") {}
+};
+
 // A request the core cannot satisfy (unknown field name, bad size, no surface at a seed...).
 class InputError : public std::runtime_error {
 public:

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "isotrack/contour_tree.h"
+#include "isotrack/errors.h"
 
 namespace isotrack::detail {
 
@@ -64,10 +65,42 @@ struct AugmentedTree {
     std::vector<std::uint32_t> next;
 };
 
+// Reports progress to a ContourTreeProgress, if any, every kStride samples,
+// and throws Cancelled there when asked to stop.
+class BuildProgress {
+public:
+    static constexpr std::uint32_t kStride = 1u << 16;
+    explicit BuildProgress(ContourTreeProgress* progress) : progress_(progress) {}
+    void start(ContourTreeProgress::Phase phase, std::uint64_t total) const {
+        if (!progress_) return;
+        progress_->total.store(0, std::memory_order_relaxed);
+        progress_->done.store(0, std::memory_order_relaxed);
+        progress_->phase.store(phase, std::memory_order_relaxed);
+        progress_->total.store(total, std::memory_order_relaxed);
+        check();
+    }
+    // Called with each sample count k; counts a stride when k is a multiple of it,
+    // and then says whether to stop (a thread of its own returns, then check()
+    // throws on the calling one).
+    bool step(std::uint32_t k) const {
+        if (!progress_ || (k & (kStride - 1)) != 0 || k == 0) return false;
+        progress_->done.fetch_add(kStride, std::memory_order_relaxed);
+        return cancelled();
+    }
+    bool cancelled() const { return progress_ && progress_->cancel && progress_->cancel->load(); }
+    void check() const {
+        if (cancelled()) throw Cancelled{};
+    }
+
+private:
+    ContourTreeProgress* progress_;
+};
+
 // Samples sorted ascending in the order above (a stable radix sort).
 std::vector<std::uint32_t> sortSamples(const Volume& volume);
 // Join tree, split tree and their merge (Carr et al.'s algorithm).
-AugmentedTree augmentedContourTree(const Volume& volume, int threads);
+AugmentedTree augmentedContourTree(const Volume& volume, int threads,
+                                   const BuildProgress& progress = BuildProgress{nullptr});
 // Chains of regular samples into arcs between the critical ones.
 ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented);
 

@@ -1,0 +1,69 @@
+// A contour tree build reports its phases in order, ends Done at fraction 1,
+// gives the same tree as without a watcher, and stops with Cancelled when asked.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "isotrack/contour_tree.h"
+#include "isotrack/errors.h"
+#include "isotrack/fields.h"
+
+using namespace isotrack;
+
+namespace {
+
+Volume field(const char* spec) { return makeField(parseFieldSpec(spec)); }
+
+}  // namespace
+
+TEST_CASE("a watched build goes through its phases to Done and builds the same tree", "[core][contour-tree]") {
+    const Volume volume = field("noise:48");
+    const ContourTree plain = computeContourTree(volume, 2);
+    ContourTreeProgress progress;
+    std::atomic<bool> finished{false};
+    std::vector<double> seen;
+    std::vector<ContourTreeProgress::Phase> phases;
+    std::thread watcher([&] {
+        while (!finished.load()) {
+            seen.push_back(progress.fraction());
+            phases.push_back(progress.phase.load());
+            std::this_thread::sleep_for(std::chrono::microseconds(50));
+        }
+    });
+    const ContourTree watched = computeContourTree(volume, 2, &progress);
+    finished = true;
+    watcher.join();
+    CHECK(progress.phase.load() == ContourTreeProgress::Phase::Done);
+    CHECK(progress.fraction() == 1.0);
+    CHECK(std::is_sorted(phases.begin(), phases.end()));
+    CHECK(std::all_of(seen.begin(), seen.end(), [](double f) { return f >= 0.0 && f <= 1.0; }));
+    CHECK(watched.arcs.size() == plain.arcs.size());
+    CHECK(watched.samples == plain.samples);
+    CHECK(std::string(contourTreePhaseName(ContourTreeProgress::Phase::Sweeping)) ==
+          "sweeping the join and split trees");
+}
+
+TEST_CASE("a build asked to stop throws Cancelled", "[core][contour-tree]") {
+    const Volume volume = field("gyroid:96");
+    std::atomic<bool> cancel{true};
+    ContourTreeProgress progress;
+    progress.cancel = &cancel;
+    CHECK_THROWS_AS(computeContourTree(volume, 2, &progress), Cancelled);
+    CHECK(progress.phase.load() == ContourTreeProgress::Phase::Sorting);  // it stopped at the first check
+    // Raised while the sweeps run (on two threads): the build stops within a stride.
+    cancel = false;
+    ContourTreeProgress later;
+    later.cancel = &cancel;
+    std::thread stopper([&] {
+        while (later.phase.load() != ContourTreeProgress::Phase::Sweeping) std::this_thread::yield();
+        cancel = true;
+    });
+    CHECK_THROWS_AS(computeContourTree(volume, 2, &later), Cancelled);
+    stopper.join();
+    CHECK(later.phase.load() != ContourTreeProgress::Phase::Done);
+}
