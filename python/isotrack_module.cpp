@@ -299,8 +299,9 @@ py::array vertexEdgesOf(const PySurface& s) {
 // Many surfaces of a raw array in one go, for isotrack.dask's chunks (whose
 // pieces can number thousands): the vertices (z, y, x), normals, vertex_edges
 // and faces (indexing the concatenated vertices, uint64) of all of them one after
-// the other, with per surface its vertex and triangle counts, area and bounds.
-py::tuple concatenatedPy(const py::list& list) {
+// the other, with per surface its vertex and triangle counts, area, bounds and
+// signed volume about `reference` (z, y, x), in double: additive over pieces.
+py::tuple concatenatedPy(const py::list& list, const Vec3d& reference) {
     std::vector<const Surface*> surfaces;
     for (const py::handle item : list) surfaces.push_back(&item.cast<const PySurface&>().surface);
     std::size_t vertexTotal = 0, faceTotal = 0;
@@ -314,7 +315,7 @@ py::tuple concatenatedPy(const py::list& list) {
     py::array_t<std::int32_t> edges({py::ssize_t(vertexTotal), py::ssize_t(4)});
     py::array_t<std::uint64_t> faces({py::ssize_t(faceTotal), py::ssize_t(3)});
     py::array_t<std::int64_t> vertexCounts(count), triangleCounts(count);
-    py::array_t<double> areas(count), bounds({count, py::ssize_t(2), py::ssize_t(3)});
+    py::array_t<double> areas(count), volumes(count), bounds({count, py::ssize_t(2), py::ssize_t(3)});
     auto p = positions.mutable_unchecked<2>(), n = normals.mutable_unchecked<2>();
     auto e = edges.mutable_unchecked<2>();
     auto f = faces.mutable_unchecked<2>();
@@ -337,6 +338,17 @@ py::tuple concatenatedPy(const py::list& list) {
         }
         for (std::size_t i = 0; i < s.mesh.indices.size(); i += 3, ++t)
             for (py::ssize_t c = 0; c < 3; ++c) f(t, c) = std::uint64_t(first) + s.mesh.indices[i + std::size_t(c)];
+        double sixfold = 0.0;
+        for (std::size_t i = 0; i < s.mesh.indices.size(); i += 3) {
+            std::array<std::array<double, 3>, 3> c{};
+            for (std::size_t j = 0; j < 3; ++j)
+                for (std::size_t a = 0; a < 3; ++a)
+                    c[j][a] = double(s.mesh.vertices[s.mesh.indices[i + j]].position[a]) - reference[2 - a];
+            sixfold += c[0][0] * (c[1][1] * c[2][2] - c[1][2] * c[2][1]) +
+                       c[0][1] * (c[1][2] * c[2][0] - c[1][0] * c[2][2]) +
+                       c[0][2] * (c[1][0] * c[2][1] - c[1][1] * c[2][0]);
+        }
+        volumes.mutable_at(k) = sixfold / 6.0;
         vertexCounts.mutable_at(k) = std::int64_t(s.mesh.vertices.size());
         triangleCounts.mutable_at(k) = std::int64_t(s.mesh.triangleCount());
         areas.mutable_at(k) = s.stats.area;
@@ -345,7 +357,7 @@ py::tuple concatenatedPy(const py::list& list) {
             b(k, 1, a) = s.stats.boundsMax[std::size_t(2 - a)];
         }
     }
-    return py::make_tuple(positions, normals, edges, faces, vertexCounts, triangleCounts, areas, bounds);
+    return py::make_tuple(positions, normals, edges, faces, vertexCounts, triangleCounts, areas, bounds, volumes);
 }
 
 // The crossed grid edge nearest a raw array's point (z, y, x), as (z, y, x, axis).
@@ -449,7 +461,7 @@ PYBIND11_MODULE(_isotrack, m) {
           py::arg("split"));
     m.def("track", &trackPy, py::arg("samples"), py::arg("level"), py::arg("geometry"), py::arg("table"),
           py::arg("threads"), py::arg("seed"), py::arg("seed_edge"), py::arg("ascent"));
-    m.def("concatenated", &concatenatedPy, py::arg("surfaces"));
+    m.def("concatenated", &concatenatedPy, py::arg("surfaces"), py::arg("reference"));
     m.def("nearest_edge", &nearestEdgePy, py::arg("samples"), py::arg("level"), py::arg("geometry"), py::arg("point"));
     m.def("load", &loadPy, py::arg("path"));
     m.def("frame_affine", &frameAffinePy, py::arg("spacing"), py::arg("origin"), py::arg("direction"),

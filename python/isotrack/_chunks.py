@@ -109,7 +109,9 @@ def pieces_of(found, block, grid, lo, hi, meshes):
     With `meshes`, "mesh": (vertices, normals, edge ids, values, faces,
     face_piece), faces indexing the chunk's vertices.
     """
-    vertices, normals, local, faces, sizes, triangles, area, bounds = _isotrack.concatenated(list(found))
+    vertices, normals, local, faces, sizes, triangles, area, bounds, signed = _isotrack.concatenated(
+        list(found), tuple(grid.origin)
+    )
     count = len(sizes)
     label = np.repeat(np.arange(count), sizes)
     g = [local[:, a].astype(np.int64) + lo[a] for a in range(3)]
@@ -123,18 +125,11 @@ def pieces_of(found, block, grid, lo, hi, meshes):
     offsets = np.concatenate([[0], np.cumsum(sizes)[:-1]]).astype(np.int64)
     faces = faces.astype(np.int64)
     face_piece = np.repeat(np.arange(count), triangles)
-    about = vertices.astype(np.float64) - grid.origin
-    a, b, c = about[faces[:, 0]], about[faces[:, 1]], about[faces[:, 2]]
-    sixfold = (
-        a[:, 0] * (b[:, 1] * c[:, 2] - b[:, 2] * c[:, 1])
-        + a[:, 1] * (b[:, 2] * c[:, 0] - b[:, 0] * c[:, 2])
-        + a[:, 2] * (b[:, 0] * c[:, 1] - b[:, 1] * c[:, 0])
-    )
     result = {
         "triangles": triangles,
         "vertices": sizes,
         "area": area,
-        "signed_volume": np.bincount(face_piece, sixfold, minlength=count) / 6.0,
+        "signed_volume": signed,
         "bounds": bounds,
         "first_edge": np.minimum.reduceat(ids, offsets) if count else _EMPTY,
         "touches_border": np.bincount(label, border, minlength=count) > 0,

@@ -27,7 +27,44 @@ import dask.array as da
 from . import _chunks
 from . import _inputs
 
-__all__ = ["surfaces", "track", "marching_cubes", "TrackedSurface"]
+__all__ = ["surfaces", "track", "marching_cubes", "from_file", "TrackedSurface"]
+
+
+class _FileSamples:
+    """A volume file's samples for da.from_array, pickled as its path: each worker opens
+    (maps) the file itself and reads only the slices its tasks ask for."""
+
+    def __init__(self, path):
+        from . import open as open_volume
+
+        self.path = os.fspath(path)
+        samples = open_volume(self.path, frame="voxel").samples
+        self.shape, self.dtype, self.ndim = samples.shape, samples.dtype, 3
+        self._samples = samples
+
+    def __getstate__(self):
+        return {"path": self.path, "shape": self.shape, "dtype": self.dtype, "ndim": 3}
+
+    def __setstate__(self, state):
+        self.__dict__.update(state, _samples=None)
+
+    def __getitem__(self, key):
+        if self._samples is None:
+            from . import open as open_volume
+
+            self._samples = open_volume(self.path, frame="voxel").samples
+        return np.array(self._samples[key])
+
+
+def from_file(path, chunks=64):
+    """A dask array (z, y, x) over a volume file isotrack reads (isotrack.open), in `chunks`.
+
+    Its graph holds the file's path, not its samples: each worker maps the file
+    itself (so the file must be reachable there at the same path) and reads the
+    slices of its tasks. The samples are the raw array's: pass spacing (and
+    origin) yourself, e.g. spacing=isotrack.open(path).spacing[::-1].
+    """
+    return da.from_array(_FileSamples(path), chunks=chunks, name=f"isotrack-file-{os.path.abspath(path)}")
 
 
 def _grid(array, spacing, origin):

@@ -31,7 +31,7 @@ CHUNKS = (64, 64, 64)
 @pytest.fixture(scope="module")
 def client():
     """Two in-process workers, one thread each: Dask's distributed scheduler without process start-up."""
-    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None)
+    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False, dashboard_address=":0")
     with distributed.Client(cluster) as c:
         yield c
     cluster.close()
@@ -46,9 +46,11 @@ def volumes(tmp_path_factory, cli):
         nrrd = folder / (spec.replace(":", "_") + ".nrrd")
         cli("field", spec, "--out", nrrd)
         made[spec] = np.array(isotrack.load(str(nrrd)).samples)
+    made["gyroid file"] = str(folder / "gyroid_128.nrrd")
     if CT.is_file():
         made["ct"] = np.array(isotrack.load(str(CT)).samples)
     out = {}
+    out = {"gyroid file": made.pop("gyroid file")}
     for name, samples in made.items():
         path = folder / (name.replace(":", "_") + ".zarr")
         zarr.save_array(str(path), samples, chunks=CHUNKS)
@@ -197,22 +199,25 @@ def test_track_equals_in_memory_track(volumes, client):
 
 PROCESS_SCRIPT = """
 import sys, numpy as np, dask.array as da, distributed, isotrack, isotrack.dask as idask
-path, level = sys.argv[1], float(sys.argv[2])
+path, nrrd, level = sys.argv[1], sys.argv[2], float(sys.argv[3])
 if __name__ == "__main__":
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \\
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0") as cluster, \\
             distributed.Client(cluster) as client:
         table = idask.surfaces(da.from_zarr(path), level)
+        from_file = idask.surfaces(idask.from_file(nrrd, chunks=64), level)
+        assert np.array_equal(table["triangles"], from_file["triangles"])
+        assert np.array_equal(table["area"], from_file["area"])
         pids = set(client.run(lambda: __import__("os").getpid()).values())
         print(len(pids), " ".join(map(str, table["triangles"])), " ".join(map(repr, table["area"])), sep=" | ")
 """
 
 
 def test_worker_processes(volumes, tmp_path):
-    """Real worker processes (spawned, so the script has its __main__ guard)."""
+    """Real worker processes (spawned, so the script has its __main__ guard), from zarr and from a NRRD file."""
     samples, level, path = volumes["gyroid:128"]
     script = tmp_path / "on_processes.py"
     script.write_text(PROCESS_SCRIPT)
-    run = subprocess.run([sys.executable, str(script), path, repr(level)], capture_output=True, text=True, timeout=120,
+    run = subprocess.run([sys.executable, str(script), path, volumes["gyroid file"], repr(level)], capture_output=True, text=True, timeout=120,
                          env=dict(os.environ))
     assert run.returncode == 0, run.stderr[-2000:]
     workers, triangles, areas = run.stdout.strip().splitlines()[-1].split(" | ")
