@@ -250,3 +250,22 @@ def test_bad_arguments(volumes):
     with pytest.raises(ValueError, match="3D"):
         idask.surfaces(da.zeros((8, 8), chunks=4), 0.5)
     assert len(idask.surfaces(array, 0.5)["id"]) == 0
+
+
+@pytest.mark.parametrize(
+    "shape, chunks",
+    [((65, 65, 65), 64), ((40, 33, 50), ((10, 1, 29), (32, 1), (1, 24, 25))), ((30, 30, 30), 7)],
+    ids=["last-chunk-one-sample", "chunks-of-one-sample", "many-small-chunks"],
+)
+def test_irregular_chunks(shape, chunks):
+    """Chunks of one sample (in the middle: one layer of cells; at the end: no cells) and many small ones."""
+    from scipy.ndimage import gaussian_filter
+
+    samples = gaussian_filter(np.random.default_rng(1).random(shape), 2).astype(np.float32)
+    level = float(np.median(samples))
+    array = da.from_array(samples, chunks=chunks)
+    assert_same_surfaces(idask.surfaces(array, level, scheduler="sync"), isotrack.surfaces(samples, level, threads=1))
+    surface = idask.track(array, level, seed=(5.3, 6.1, 7.7), scheduler="sync")
+    reference = isotrack.track(samples, level, seed=(5.3, 6.1, 7.7), threads=1)
+    assert same_triangles(surface.vertices, surface.faces, reference.vertices, reference.faces)
+    assert surface.vertex_count == reference.vertex_count
