@@ -257,6 +257,7 @@ def test_bad_arguments(volumes):
     [((65, 65, 65), 64), ((40, 33, 50), ((10, 1, 29), (32, 1), (1, 24, 25))), ((30, 30, 30), 7)],
     ids=["last-chunk-one-sample", "chunks-of-one-sample", "many-small-chunks"],
 )
+@pytest.mark.filterwarnings("ignore:Running on a single-machine scheduler")
 def test_irregular_chunks(shape, chunks):
     """Chunks of one sample (in the middle: one layer of cells; at the end: no cells) and many small ones."""
     from scipy.ndimage import gaussian_filter
