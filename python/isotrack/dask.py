@@ -15,7 +15,7 @@ Tasks run on whatever Dask runs them with: the default threaded scheduler, or
 the distributed Client made last (a LocalCluster or Client("tcp://...")).
 The consistent table only: it is the one whose cells' triangles join across
 chunk faces with no holes, so that joined pieces are exactly the in-memory
-surfaces. See docs/distributed.md.
+surfaces. See docs/distributed.md. From a shell: python3 -m isotrack.dask --help.
 """
 
 import os
@@ -335,3 +335,63 @@ def track(array, level, seed=None, *, seed_edge=None, spacing=(1.0, 1.0, 1.0), o
                 pending.setdefault(chunk, set()).add(edge)
     pieces = _chunks.merged(found)
     return TrackedSurface(pieces, covered.keys(), waves)
+
+
+def _main(argv=None):
+    """python3 -m isotrack.dask: surfaces or one tracked surface of a zarr folder or volume file."""
+    import argparse
+    import contextlib
+
+    parser = argparse.ArgumentParser(prog="python3 -m isotrack.dask", description=_main.__doc__)
+    parser.add_argument("--volume", required=True, help="a zarr array folder (*.zarr) or a file isotrack.open reads")
+    parser.add_argument("--iso", type=float, required=True, help="the isovalue")
+    parser.add_argument("--method", choices=("all", "track", "mc"), default="all")
+    parser.add_argument("--seed", help="track: Z,Y,X in the array's coordinates (index * spacing)")
+    parser.add_argument("--spacing", help="Z,Y,X (default: a file's own spacing, 1,1,1 for zarr)")
+    parser.add_argument("--chunks", type=int, default=64, help="chunk size for a volume file (zarr keeps its own)")
+    parser.add_argument("--scheduler", help="tcp://HOST:PORT of a Dask scheduler, or local:N for N worker processes")
+    parser.add_argument("--out", help="all: a folder of PLY files; track, mc: one PLY file")
+    args = parser.parse_args(argv)
+    triple = lambda text: tuple(float(v) for v in text.split(","))  # noqa: E731
+    if args.volume.rstrip("/").endswith(".zarr"):
+        array, spacing = da.from_zarr(args.volume), (1.0, 1.0, 1.0)
+    else:
+        from . import open as open_volume
+
+        array, spacing = from_file(args.volume, args.chunks), open_volume(args.volume).spacing[::-1]
+    spacing = triple(args.spacing) if args.spacing else spacing
+    with contextlib.ExitStack() as stack:
+        if args.scheduler:
+            import distributed
+
+            if args.scheduler.startswith("local:"):
+                workers = int(args.scheduler[len("local:") :])
+                cluster = stack.enter_context(distributed.LocalCluster(n_workers=workers, threads_per_worker=1))
+                stack.enter_context(distributed.Client(cluster))
+            else:
+                stack.enter_context(distributed.Client(args.scheduler))
+        if args.method == "all":
+            table = surfaces(array, args.iso, spacing=spacing, out=args.out)
+            print(f"{len(table['id'])} surfaces, {int(table['triangles'].sum())} triangles")
+            for k in range(min(len(table["id"]), 10)):
+                closed = "closed" if table["closed"][k] else "open"
+                print(f"  {k}: {table['triangles'][k]} triangles, area {table['area'][k]:.6g}, {closed}")
+            return 0
+        if args.method == "track":
+            if not args.seed:
+                parser.error("--method track needs --seed Z,Y,X")
+            found = track(array, args.iso, seed=triple(args.seed), spacing=spacing)
+            print(f"{found.triangle_count} triangles, area {found.area:.6g}, {'closed' if found.closed else 'open'}, "
+                  f"{len(found.chunks)} of {array.npartitions} chunks read in {found.waves} waves")
+            mesh = (found.vertices, found.faces, found.normals)
+        else:
+            vertices, faces, normals, _ = marching_cubes(array, args.iso, spacing=spacing)
+            print(f"{len(faces)} triangles")
+            mesh = (vertices, faces, normals)
+        if args.out:
+            write_ply(args.out, *mesh)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(_main())

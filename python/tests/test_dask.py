@@ -270,3 +270,21 @@ def test_irregular_chunks(shape, chunks):
     reference = isotrack.track(samples, level, seed=(5.3, 6.1, 7.7), threads=1)
     assert same_triangles(surface.vertices, surface.faces, reference.vertices, reference.faces)
     assert surface.vertex_count == reference.vertex_count
+
+
+def test_module_command_line(volumes, tmp_path):
+    """python3 -m isotrack.dask: every surface into a folder of PLY files, and one tracked surface."""
+    samples, level, path = volumes["gyroid:128"]
+    reference = isotrack.surfaces(samples, level, threads=1)
+    command = [sys.executable, "-m", "isotrack.dask", "--volume", path, f"--iso={level!r}"]  # = for a negative level
+    run = subprocess.run(command + ["--out", str(tmp_path / "all")], capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    assert run.stdout.startswith(f"{len(reference)} surfaces, {sum(s.triangle_count for s in reference)} triangles")
+    for k, surface in enumerate(reference):
+        assert len(read_ply(tmp_path / "all" / f"surface_{k:04d}.ply")[1]) == surface.triangle_count
+    seed = ["--method", "track", "--seed", "64,64,64", "--out", str(tmp_path / "one.ply")]
+    run = subprocess.run(command + seed, capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    tracked = isotrack.track(samples, level, seed=(64, 64, 64), threads=1)
+    positions, faces = read_ply(tmp_path / "one.ply")
+    assert same_triangles(positions[:, ::-1], faces, tracked.vertices, tracked.faces)
