@@ -262,6 +262,9 @@ def _seed_id(array, grid, level, seed, seed_edge, scheduler):
         ends = np.array(edge[:3]) + (np.arange(3) == edge[3])
         if np.any(ends >= grid.shape):
             raise ValueError(f"seed_edge {tuple(edge)} lies outside the volume of shape {grid.shape}")
+        ends = array[tuple(slice(v, e + 1) for v, e in zip(edge[:3], ends))].compute(scheduler=scheduler).ravel()
+        if (ends[0] >= level) == (ends[-1] >= level):  # isotrack counts a sample equal to the level as above it
+            raise ValueError(f"seed_edge {tuple(edge)} is not crossed at level {level}")
         return int(_chunks.encode(*(np.array([v]) for v in edge), grid.shape)[0])
     point = np.asarray(_inputs.triple(seed, "seed", "(z, y, x)"), dtype=np.float64)
     index = np.clip(np.round((point - grid.origin) / grid.spacing), 0, np.array(grid.shape) - 1)

@@ -247,6 +247,10 @@ def test_bad_arguments(volumes):
         idask.track(array, 0.5)
     with pytest.raises(ValueError, match="not crossed|no grid edge"):
         idask.track(array, 0.5, seed=(1.0, 1.0, 1.0))
+    with pytest.raises(ValueError, match=r"seed_edge \(1, 2, 3, 0\) is not crossed"):
+        idask.track(array, 0.5, seed_edge=(1, 2, 3, 0))
+    with pytest.raises(ValueError, match="outside"):
+        idask.track(array, 0.5, seed_edge=(7, 2, 3, 0))
     with pytest.raises(ValueError, match="3D"):
         idask.surfaces(da.zeros((8, 8), chunks=4), 0.5)
     assert len(idask.surfaces(array, 0.5)["id"]) == 0
