@@ -25,6 +25,7 @@
 #include <utility>
 #include <vector>
 
+#include "isotrack/chunks.h"
 #include "isotrack/errors.h"
 #include "isotrack/extract.h"
 #include "isotrack/io.h"
@@ -296,12 +297,19 @@ py::array vertexEdgesOf(const PySurface& s) {
     return std::move(out);
 }
 
-// Many surfaces of a raw array in one go, for isotrack.dask's chunks (whose
-// pieces can number thousands): the vertices (z, y, x), normals, vertex_edges
-// and faces (indexing the concatenated vertices, uint64) of all of them one after
-// the other, with per surface its vertex and triangle counts, area, bounds and
-// signed volume about `reference` (z, y, x), in double: additive over pieces.
-py::tuple concatenatedPy(const py::list& list, const Vec3d& reference) {
+// Many surfaces of one chunk of a raw array in one go, for isotrack.dask (a
+// chunk's pieces can number thousands): the vertices (z, y, x), normals,
+// vertex_edges and faces (indexing the concatenated vertices, uint64) of all of
+// them one after the other; per surface its vertex and triangle counts, area,
+// bounds and signed volume about `reference` (z, y, x), in double, additive over
+// pieces; and per vertex core's global edge id and whether the edge lies on a
+// face shared with another chunk or on the volume's border (isotrack/chunks.h).
+// The chunk's samples start at `offset` and span `shape` in a volume of
+// `volumeShape`, all (z, y, x).
+Dims dimsOf(const std::array<int, 3>& zyx) { return {zyx[2], zyx[1], zyx[0]}; }
+
+py::tuple concatenatedPy(const py::list& list, const Vec3d& reference, const std::array<int, 3>& offset,
+                         const std::array<int, 3>& shape, const std::array<int, 3>& volumeShape) {
     std::vector<const Surface*> surfaces;
     for (const py::handle item : list) surfaces.push_back(&item.cast<const PySurface&>().surface);
     std::size_t vertexTotal = 0, faceTotal = 0;
@@ -313,6 +321,8 @@ py::tuple concatenatedPy(const py::list& list, const Vec3d& reference) {
     py::array_t<float> positions({py::ssize_t(vertexTotal), py::ssize_t(3)}),
         normals({py::ssize_t(vertexTotal), py::ssize_t(3)});
     py::array_t<std::int32_t> edges({py::ssize_t(vertexTotal), py::ssize_t(4)});
+    py::array_t<std::int64_t> ids{py::ssize_t(vertexTotal)};
+    py::array_t<bool> shared{py::ssize_t(vertexTotal)}, onBorder{py::ssize_t(vertexTotal)};
     py::array_t<std::uint64_t> faces({py::ssize_t(faceTotal), py::ssize_t(3)});
     py::array_t<std::int64_t> vertexCounts(count), triangleCounts(count);
     py::array_t<double> areas(count), volumes(count), bounds({count, py::ssize_t(2), py::ssize_t(3)});
@@ -324,7 +334,11 @@ py::tuple concatenatedPy(const py::list& list, const Vec3d& reference) {
     for (py::ssize_t k = 0; k < count; ++k) {
         const Surface& s = *surfaces[std::size_t(k)];
         const py::ssize_t first = v;
+        const ChunkEdges named = chunkEdges(s.mesh, dimsOf(offset), dimsOf(shape), dimsOf(volumeShape));
         for (std::size_t i = 0; i < s.mesh.vertices.size(); ++i, ++v) {
+            ids.mutable_at(v) = std::int64_t(named.ids[i]);
+            shared.mutable_at(v) = named.shared[i] != 0;
+            onBorder.mutable_at(v) = named.onBorder[i] != 0;
             const Vertex& vertex = s.mesh.vertices[i];
             const GridEdge g = s.mesh.vertexEdges[i];
             for (py::ssize_t a = 0; a < 3; ++a) {
@@ -357,7 +371,37 @@ py::tuple concatenatedPy(const py::list& list, const Vec3d& reference) {
             b(k, 1, a) = s.stats.boundsMax[std::size_t(2 - a)];
         }
     }
-    return py::make_tuple(positions, normals, edges, faces, vertexCounts, triangleCounts, areas, bounds, volumes);
+    return py::make_tuple(positions, normals, edges, faces, vertexCounts, triangleCounts, areas, bounds, volumes, ids,
+                          shared, onBorder);
+}
+
+// Core's global edge ids of edges (z, y, x, axis with 0 along z) in a volume of
+// shape (z, y, x), and back (isotrack/chunks.h).
+py::array_t<std::int64_t> edgeIdsPy(const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& edges,
+                                    const std::array<int, 3>& shape) {
+    const auto rows = edges.unchecked<2>();
+    if (rows.shape(1) != 4) throw InputError("edges: internal: expected (N, 4) rows of (z, y, x, axis)");
+    py::array_t<std::int64_t> out(rows.shape(0));
+    for (py::ssize_t i = 0; i < rows.shape(0); ++i) {
+        const GridEdge edge{int(rows(i, 2)), int(rows(i, 1)), int(rows(i, 0)), 2 - int(rows(i, 3))};
+        out.mutable_at(i) = std::int64_t(globalEdgeId(edge, dimsOf(shape)));
+    }
+    return out;
+}
+
+py::array_t<std::int64_t> edgesOfIdsPy(const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& ids,
+                                       const std::array<int, 3>& shape) {
+    const auto in = ids.unchecked<1>();
+    py::array_t<std::int64_t> out({in.shape(0), py::ssize_t(4)});
+    auto rows = out.mutable_unchecked<2>();
+    for (py::ssize_t i = 0; i < in.shape(0); ++i) {
+        const GridEdge e = edgeOfGlobalId(std::uint64_t(in(i)), dimsOf(shape));
+        rows(i, 0) = e.z;
+        rows(i, 1) = e.y;
+        rows(i, 2) = e.x;
+        rows(i, 3) = 2 - e.axis;
+    }
+    return out;
 }
 
 // The crossed grid edge nearest a raw array's point (z, y, x), as (z, y, x, axis).
@@ -461,7 +505,10 @@ PYBIND11_MODULE(_isotrack, m) {
           py::arg("split"));
     m.def("track", &trackPy, py::arg("samples"), py::arg("level"), py::arg("geometry"), py::arg("table"),
           py::arg("threads"), py::arg("seed"), py::arg("seed_edge"), py::arg("ascent"));
-    m.def("concatenated", &concatenatedPy, py::arg("surfaces"), py::arg("reference"));
+    m.def("concatenated", &concatenatedPy, py::arg("surfaces"), py::arg("reference"), py::arg("offset"),
+          py::arg("shape"), py::arg("volume_shape"));
+    m.def("edge_ids", &edgeIdsPy, py::arg("edges"), py::arg("shape"));
+    m.def("edges_of_ids", &edgesOfIdsPy, py::arg("ids"), py::arg("shape"));
     m.def("nearest_edge", &nearestEdgePy, py::arg("samples"), py::arg("level"), py::arg("geometry"), py::arg("point"));
     m.def("load", &loadPy, py::arg("path"));
     m.def("frame_affine", &frameAffinePy, py::arg("spacing"), py::arg("origin"), py::arg("direction"),

@@ -7,10 +7,11 @@ cells are exactly its own and the chunks' cells together are the volume's. With
 the consistent table a cell's triangles depend only on its eight samples, so the
 chunks' triangles are the whole volume's.
 
-A crossed grid edge is named globally by core's memory order of edges,
-((z * ny + y) * nx + x) * 3 + axis (axis 0 along x), the order core breaks ties
-between equal-sized surfaces by. An edge on a face two chunks share is the same
-edge, and the same vertex, for both: pieces that share one are one surface.
+A crossed grid edge is named globally by core (isotrack/chunks.h: its memory
+order, ((z * ny + y) * nx + x) * 3 + axis with axis 0 along x, the order core
+breaks ties between equal-sized surfaces by), which also says which edges lie on
+faces a chunk shares. An edge on a face two chunks share is the same edge, and
+the same vertex, for both: pieces that share one are one surface.
 """
 
 import numpy as np
@@ -68,35 +69,20 @@ class Grid:
 
 
 def encode(z, y, x, axis_zyx, shape):
-    """Global edge ids from global (z, y, x) and an axis in (z, y, x) order."""
-    nz, ny, nx = shape
-    return ((z.astype(np.int64) * ny + y) * nx + x) * 3 + (2 - axis_zyx.astype(np.int64))
+    """Core's global edge ids (isotrack/chunks.h) of global (z, y, x) and an axis in (z, y, x) order."""
+    edges = np.stack([np.asarray(v, dtype=np.int64) for v in (z, y, x, axis_zyx)], axis=1)
+    return _isotrack.edge_ids(edges.reshape(-1, 4), tuple(int(n) for n in shape))
 
 
 def decode(ids, shape):
-    """(z, y, x, axis in (z, y, x) order) of global edge ids."""
-    nz, ny, nx = shape
-    ids = np.asarray(ids, dtype=np.int64)
-    axis = 2 - ids % 3
-    cell = ids // 3
-    return cell // (nx * ny), cell // nx % ny, cell % nx, axis
+    """(z, y, x, axis in (z, y, x) order) of core's global edge ids."""
+    edges = _isotrack.edges_of_ids(np.asarray(ids, dtype=np.int64).ravel(), tuple(int(n) for n in shape))
+    return edges[:, 0], edges[:, 1], edges[:, 2], edges[:, 3]
 
 
 def _geometry(grid, lo):
     origin = grid.origin + lo * grid.spacing
     return _Geometry(tuple(grid.spacing[::-1]), tuple(origin[::-1]), _IDENTITY, "")
-
-
-def _on_planes(coordinates, axis, planes_low, planes_high):
-    """True for edges lying in one of the given planes (not along the plane's normal)."""
-    hit = np.zeros(len(axis), dtype=bool)
-    for a in range(3):
-        across = axis != a
-        if planes_low[a] is not None:
-            hit |= across & (coordinates[a] == planes_low[a])
-        if planes_high[a] is not None:
-            hit |= across & (coordinates[a] == planes_high[a])
-    return hit
 
 
 def pieces_of(found, block, grid, lo, hi, meshes):
@@ -109,19 +95,12 @@ def pieces_of(found, block, grid, lo, hi, meshes):
     With `meshes`, "mesh": (vertices, normals, edge ids, values, faces,
     face_piece), faces indexing the chunk's vertices.
     """
-    vertices, normals, local, faces, sizes, triangles, area, bounds, signed = _isotrack.concatenated(
-        list(found), tuple(grid.origin)
+    shape = tuple(int(b - a) for a, b in zip(lo, hi))
+    vertices, normals, local, faces, sizes, triangles, area, bounds, signed, ids, shared, border = (
+        _isotrack.concatenated(list(found), tuple(grid.origin), tuple(int(v) for v in lo), shape, grid.shape)
     )
     count = len(sizes)
     label = np.repeat(np.arange(count), sizes)
-    g = [local[:, a].astype(np.int64) + lo[a] for a in range(3)]
-    axis = local[:, 3]
-    ids = encode(g[0], g[1], g[2], axis, grid.shape)
-    n = grid.shape
-    border = _on_planes(g, axis, (0, 0, 0), tuple(m - 1 for m in n))
-    shared = _on_planes(
-        g, axis, tuple(int(v) if v > 0 else None for v in lo), tuple(int(h - 1) if h < m else None for h, m in zip(hi, n))
-    )
     offsets = np.concatenate([[0], np.cumsum(sizes)[:-1]]).astype(np.int64)
     faces = faces.astype(np.int64)
     face_piece = np.repeat(np.arange(count), triangles)
