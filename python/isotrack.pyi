@@ -57,6 +57,9 @@ class Surface:
     def normals(self) -> npt.NDArray[np.float32]:
         """(V, 3) unit normals, pointing towards lower values."""
     @property
+    def vertex_edges(self) -> npt.NDArray[np.int32]:
+        """(V, 4) per vertex its grid edge (z, y, x, axis), axis 0 along z, as seed_edge takes it (a copy)."""
+    @property
     def faces(self) -> npt.NDArray[np.uint32]:
         """(F, 3) vertex indices, one row per triangle."""
     @property

@@ -25,6 +25,7 @@
 #include <utility>
 #include <vector>
 
+#include "isotrack/chunks.h"
 #include "isotrack/errors.h"
 #include "isotrack/extract.h"
 #include "isotrack/io.h"
@@ -278,6 +279,142 @@ std::string surfaceRepr(const PySurface& surface) {
 
 const SurfaceStats& statsOf(const PySurface& s) { return s.surface.stats; }
 
+// Per vertex, the grid edge it lies on as (z, y, x, axis) sample indices, axis 0
+// along z and 2 along x as seed_edge takes it (3: inside its cell, the
+// trilinear table's). isotrack.dask names crossed edges globally with it.
+py::array vertexEdgesOf(const PySurface& s) {
+    const Buffer<PackedGridEdge>& edges = s.surface.mesh.vertexEdges;
+    py::array_t<std::int32_t> out({py::ssize_t(edges.size()), py::ssize_t(4)});
+    auto rows = out.mutable_unchecked<2>();
+    for (std::size_t v = 0; v < edges.size(); ++v) {
+        const GridEdge e = edges[v];
+        const auto i = py::ssize_t(v);
+        rows(i, 0) = e.z;
+        rows(i, 1) = e.y;
+        rows(i, 2) = e.x;
+        rows(i, 3) = e.axis == kCellInterior ? 3 : 2 - e.axis;
+    }
+    return std::move(out);
+}
+
+// Many surfaces of one chunk of a raw array in one go, for isotrack.dask (a
+// chunk's pieces can number thousands): the vertices (z, y, x), normals,
+// vertex_edges and faces (indexing the concatenated vertices, uint64) of all of
+// them one after the other; per surface its vertex and triangle counts, area,
+// bounds and signed volume about `reference` (z, y, x), in double, additive over
+// pieces; and per vertex core's global edge id and whether the edge lies on a
+// face shared with another chunk or on the volume's border (isotrack/chunks.h).
+// The chunk's samples start at `offset` and span `shape` in a volume of
+// `volumeShape`, all (z, y, x).
+Dims dimsOf(const std::array<int, 3>& zyx) { return {zyx[2], zyx[1], zyx[0]}; }
+
+py::tuple concatenatedPy(const py::list& list, const Vec3d& reference, const std::array<int, 3>& offset,
+                         const std::array<int, 3>& shape, const std::array<int, 3>& volumeShape) {
+    std::vector<const Surface*> surfaces;
+    for (const py::handle item : list) surfaces.push_back(&item.cast<const PySurface&>().surface);
+    std::size_t vertexTotal = 0, faceTotal = 0;
+    for (const Surface* s : surfaces) {
+        vertexTotal += s->mesh.vertices.size();
+        faceTotal += s->mesh.triangleCount();
+    }
+    const auto count = py::ssize_t(surfaces.size());
+    py::array_t<float> positions({py::ssize_t(vertexTotal), py::ssize_t(3)}),
+        normals({py::ssize_t(vertexTotal), py::ssize_t(3)});
+    py::array_t<std::int32_t> edges({py::ssize_t(vertexTotal), py::ssize_t(4)});
+    py::array_t<std::int64_t> ids{py::ssize_t(vertexTotal)};
+    py::array_t<bool> shared{py::ssize_t(vertexTotal)}, onBorder{py::ssize_t(vertexTotal)};
+    py::array_t<std::uint64_t> faces({py::ssize_t(faceTotal), py::ssize_t(3)});
+    py::array_t<std::int64_t> vertexCounts(count), triangleCounts(count);
+    py::array_t<double> areas(count), volumes(count), bounds({count, py::ssize_t(2), py::ssize_t(3)});
+    auto p = positions.mutable_unchecked<2>(), n = normals.mutable_unchecked<2>();
+    auto e = edges.mutable_unchecked<2>();
+    auto f = faces.mutable_unchecked<2>();
+    auto b = bounds.mutable_unchecked<3>();
+    py::ssize_t v = 0, t = 0;
+    for (py::ssize_t k = 0; k < count; ++k) {
+        const Surface& s = *surfaces[std::size_t(k)];
+        const py::ssize_t first = v;
+        const ChunkEdges named = chunkEdges(s.mesh, dimsOf(offset), dimsOf(shape), dimsOf(volumeShape));
+        for (std::size_t i = 0; i < s.mesh.vertices.size(); ++i, ++v) {
+            ids.mutable_at(v) = std::int64_t(named.ids[i]);
+            shared.mutable_at(v) = named.shared[i] != 0;
+            onBorder.mutable_at(v) = named.onBorder[i] != 0;
+            const Vertex& vertex = s.mesh.vertices[i];
+            const GridEdge g = s.mesh.vertexEdges[i];
+            for (py::ssize_t a = 0; a < 3; ++a) {
+                p(v, a) = vertex.position[2 - a];
+                n(v, a) = vertex.normal[2 - a];
+            }
+            e(v, 0) = g.z;
+            e(v, 1) = g.y;
+            e(v, 2) = g.x;
+            e(v, 3) = g.axis == kCellInterior ? 3 : 2 - g.axis;
+        }
+        for (std::size_t i = 0; i < s.mesh.indices.size(); i += 3, ++t)
+            for (py::ssize_t c = 0; c < 3; ++c) f(t, c) = std::uint64_t(first) + s.mesh.indices[i + std::size_t(c)];
+        double sixfold = 0.0;
+        for (std::size_t i = 0; i < s.mesh.indices.size(); i += 3) {
+            std::array<std::array<double, 3>, 3> c{};
+            for (std::size_t j = 0; j < 3; ++j)
+                for (std::size_t a = 0; a < 3; ++a)
+                    c[j][a] = double(s.mesh.vertices[s.mesh.indices[i + j]].position[a]) - reference[2 - a];
+            sixfold += c[0][0] * (c[1][1] * c[2][2] - c[1][2] * c[2][1]) +
+                       c[0][1] * (c[1][2] * c[2][0] - c[1][0] * c[2][2]) +
+                       c[0][2] * (c[1][0] * c[2][1] - c[1][1] * c[2][0]);
+        }
+        volumes.mutable_at(k) = sixfold / 6.0;
+        vertexCounts.mutable_at(k) = std::int64_t(s.mesh.vertices.size());
+        triangleCounts.mutable_at(k) = std::int64_t(s.mesh.triangleCount());
+        areas.mutable_at(k) = s.stats.area;
+        for (py::ssize_t a = 0; a < 3; ++a) {
+            b(k, 0, a) = s.stats.boundsMin[std::size_t(2 - a)];
+            b(k, 1, a) = s.stats.boundsMax[std::size_t(2 - a)];
+        }
+    }
+    return py::make_tuple(positions, normals, edges, faces, vertexCounts, triangleCounts, areas, bounds, volumes, ids,
+                          shared, onBorder);
+}
+
+// Core's global edge ids of edges (z, y, x, axis with 0 along z) in a volume of
+// shape (z, y, x), and back (isotrack/chunks.h).
+py::array_t<std::int64_t> edgeIdsPy(const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& edges,
+                                    const std::array<int, 3>& shape) {
+    const auto rows = edges.unchecked<2>();
+    if (rows.shape(1) != 4) throw InputError("edges: internal: expected (N, 4) rows of (z, y, x, axis)");
+    py::array_t<std::int64_t> out(rows.shape(0));
+    for (py::ssize_t i = 0; i < rows.shape(0); ++i) {
+        const GridEdge edge{int(rows(i, 2)), int(rows(i, 1)), int(rows(i, 0)), 2 - int(rows(i, 3))};
+        out.mutable_at(i) = std::int64_t(globalEdgeId(edge, dimsOf(shape)));
+    }
+    return out;
+}
+
+py::array_t<std::int64_t> edgesOfIdsPy(const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& ids,
+                                       const std::array<int, 3>& shape) {
+    const auto in = ids.unchecked<1>();
+    py::array_t<std::int64_t> out({in.shape(0), py::ssize_t(4)});
+    auto rows = out.mutable_unchecked<2>();
+    for (py::ssize_t i = 0; i < in.shape(0); ++i) {
+        const GridEdge e = edgeOfGlobalId(std::uint64_t(in(i)), dimsOf(shape));
+        rows(i, 0) = e.z;
+        rows(i, 1) = e.y;
+        rows(i, 2) = e.x;
+        rows(i, 3) = 2 - e.axis;
+    }
+    return out;
+}
+
+// The crossed grid edge nearest a raw array's point (z, y, x), as (z, y, x, axis).
+std::array<int, 4> nearestEdgePy(const py::array& array, double level, const Geometry& geometry, const Vec3d& point) {
+    const Volume volume = volumeView(array, geometry);
+    GridEdge e;
+    {
+        py::gil_scoped_release unlocked;
+        e = nearestCrossedEdge(volume, level, {point[2], point[1], point[0]});
+    }
+    return {e.z, e.y, e.x, 2 - e.axis};
+}
+
 constexpr const char* kSurfaceDoc = R"(One isosurface: an indexed triangle mesh and its measures.
 
 vertices, normals and faces are numpy views over the mesh isotrack built (no
@@ -330,6 +467,8 @@ void bindSurface(py::module_& m) {
         .def_property_readonly(
             "seconds", [](const PySurface& s) { return statsOf(s).seconds; },
             "Seconds track took for it (0 for surfaces of surfaces()).")
+        .def_property_readonly("vertex_edges", &vertexEdgesOf,
+                               "(V, 4) int32: per vertex its grid edge (z, y, x, axis), axis 0 along z (a copy).")
         .def(
             "__len__", [](const PySurface& s) { return statsOf(s).triangles; }, "Number of triangles.")
         .def("__repr__", &surfaceRepr);
@@ -366,6 +505,11 @@ PYBIND11_MODULE(_isotrack, m) {
           py::arg("split"));
     m.def("track", &trackPy, py::arg("samples"), py::arg("level"), py::arg("geometry"), py::arg("table"),
           py::arg("threads"), py::arg("seed"), py::arg("seed_edge"), py::arg("ascent"));
+    m.def("concatenated", &concatenatedPy, py::arg("surfaces"), py::arg("reference"), py::arg("offset"),
+          py::arg("shape"), py::arg("volume_shape"));
+    m.def("edge_ids", &edgeIdsPy, py::arg("edges"), py::arg("shape"));
+    m.def("edges_of_ids", &edgesOfIdsPy, py::arg("ids"), py::arg("shape"));
+    m.def("nearest_edge", &nearestEdgePy, py::arg("samples"), py::arg("level"), py::arg("geometry"), py::arg("point"));
     m.def("load", &loadPy, py::arg("path"));
     m.def("frame_affine", &frameAffinePy, py::arg("spacing"), py::arg("origin"), py::arg("direction"),
           py::arg("frame"));
