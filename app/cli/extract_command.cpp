@@ -18,6 +18,7 @@
 #include "isotrack/mapped_file.h"
 
 #include "cli/commands.h"
+#include "cli/dask_handoff.h"
 #include "cli/dicom_report.h"
 #include "cli/source.h"
 #include "cli/timed_extraction.h"
@@ -52,6 +53,7 @@ struct ExtractOptions {
     std::size_t minSize = 0;          // --method tree: prune leaf branches sweeping fewer samples
     std::size_t largestArcs = 0;      // --method tree: only the surfaces of the arcs sweeping the most samples
     std::vector<std::string> arcIso;  // --method tree: I:V, surface I at its own isovalue V
+    std::string scheduler;            // a Dask scheduler: the extraction runs there (dask_handoff.h)
 };
 
 struct Extraction {
@@ -294,6 +296,17 @@ void checkExtractOptions(const ExtractOptions& options) {
 
 int runExtract(const ExtractOptions& options) {
     checkExtractOptions(options);
+    if (wantsDask(options.source.volumePath, options.scheduler)) {
+        const DaskRequest dask{options.source.volumePath,
+                               options.scheduler,
+                               options.source.iso,
+                               options.method,
+                               options.seed,
+                               options.out,
+                               options.outDir};
+        checkDaskRequest(dask, options.table, options.frame, options.json, !options.outFormat.empty());
+        runOnDask(dask);
+    }
     const TableKind table = options.table;
     const std::string method = methodName(options.method);
     const Source source = loadSource(options.source);
@@ -410,6 +423,9 @@ RunCommand addExtractCommand(CLI::App& app) {
     addFrameOption(*command, options->frame,
                    "Frame of the written meshes, --seed and bounds: lps (world, default), ras, or voxel (indices)");
     command->add_flag("--json", options->json, "Print one JSON object on stdout");
+    command->add_option("--scheduler", options->scheduler,
+                        "Run on Dask, one task per chunk: tcp://HOST:PORT, or local:N worker processes (a .zarr "
+                        "--volume runs on Dask without it; docs/distributed.md)");
     return [options] { return runExtract(*options); };
 }
 

@@ -292,3 +292,24 @@ def test_module_command_line(volumes, tmp_path):
     tracked = isotrack.track(samples, level, seed=(64, 64, 64), threads=1)
     positions, faces = read_ply(tmp_path / "one.ply")
     assert same_triangles(positions[:, ::-1], faces, tracked.vertices, tracked.faces)
+
+
+def test_extract_scheduler_hands_over_to_dask(volumes, tmp_path):
+    """isotrack extract --scheduler (or a .zarr volume) runs the module: the same surfaces."""
+    from conftest import cli_path
+
+    samples, level, _ = volumes["gyroid:128"]
+    reference = isotrack.surfaces(samples, level, threads=1)
+    zarr = pytest.importorskip("zarr")
+    store = tmp_path / "gyroid.zarr"
+    zarr.save_array(str(store), samples, chunks=(64, 64, 64))
+    command = [cli_path(), "extract", "--volume", str(store), f"--iso={level!r}", "--method", "all"]
+    expected = f"{len(reference)} surfaces, {sum(s.triangle_count for s in reference)} triangles"
+    for extra in ([], ["--scheduler", "local:2"]):
+        run = subprocess.run(command + extra, capture_output=True, text=True)
+        assert run.returncode == 0, run.stderr
+        assert run.stdout.startswith(expected)
+    # What Dask does not do is refused at once, in one line.
+    run = subprocess.run(command + ["--json"], capture_output=True, text=True)
+    assert run.returncode == 1
+    assert run.stderr.strip().splitlines() == ["isotrack: --scheduler (Dask): --json is not supported there (docs/distributed.md)"]
