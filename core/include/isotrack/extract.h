@@ -48,6 +48,12 @@ struct ExtractRequest {
     // returns what it finished; the caller that set it discards the result.
     // Checked between passes and between seeds only, never in their loops.
     const std::atomic<bool>* cancel = nullptr;
+    // Close the surfaces the volume's border cuts: extract from a copy padded with
+    // one layer of samples below iso (isotrack/mesh_processing.h: capPadValue,
+    // padVolume). Meshes stay in the volume's grid coordinates; their vertexEdges
+    // index the padded grid (one sample more before each axis). Tree: the tree is
+    // that of the padded copy (`tree` is not used).
+    bool cap = false;
 };
 
 // Exhaustive: one surface, the whole mesh. Track: one surface per seed, in the
