@@ -188,6 +188,9 @@ Extraction extractOnce(const ExtractOptions& options, const Source& source, Tabl
     request.tree = tree;
     request.largestArcs = options.largestArcs;
     request.cap = options.cap;
+    MeshProcessing processing = options.processing;
+    if (processing.decimateRatio < 1.0 && !processing.decimateError)
+        processing.decimateError = defaultDecimateError(source.volume);
     TimedExtraction run = extractTimed(source.volume, request);
     Extraction out;
     out.seconds.push_back(run.seconds);
@@ -195,7 +198,7 @@ Extraction extractOnce(const ExtractOptions& options, const Source& source, Tabl
     if (tree && !options.arcIso.empty()) applyArcIsovalues(options, source.volume, *tree, run.surfaces, isovalues);
     // Smoothing and decimation, per surface, in the grid frame (timed apart).
     out.processSeconds = secondsOf([&] {
-        for (Surface& surface : run.surfaces) processSurface(surface, options.processing);
+        for (Surface& surface : run.surfaces) processSurface(surface, processing);
     });
     // Meshes leave the grid for the --frame here, after the timing.
     const FrameTransform transform = gridToFrame(source.volume, frame);
@@ -367,8 +370,11 @@ int runExtract(const ExtractOptions& options) {
         report["smooth"] = options.processing.smoothIterations;
         report["passband"] = options.processing.passband;
         report["decimate"] = options.processing.decimateRatio;
-        report["decimate_error"] = options.processing.decimateError ? nlohmann::json(*options.processing.decimateError)
-                                                                    : nlohmann::json(nullptr);
+        // The bound decimation used: --decimate-error, else core's default.
+        std::optional<double> decimateError = options.processing.decimateError;
+        if (options.processing.decimateRatio < 1.0 && !decimateError)
+            decimateError = defaultDecimateError(source.volume);
+        report["decimate_error"] = decimateError ? nlohmann::json(*decimateError) : nlohmann::json(nullptr);
         report["process_seconds"] = result.processSeconds;
         if (result.quality) report["quality"] = qualityJson(*result.quality);
         if (!options.out.empty()) report["out"] = options.out;
@@ -456,8 +462,8 @@ RunCommand addExtractCommand(CLI::App& app) {
         ->check(CLI::Range(1e-9, 1.0));
     command
         ->add_option("--decimate-error", options->processing.decimateError,
-                     "Decimate, stopping before the surface moves more than E world units (with --decimate: "
-                     "whichever comes first; alone: as far as E allows)")
+                     "Decimate, keeping the surface within E world units of the original (default with --decimate: "
+                     "half the smallest spacing; alone: decimate as far as E allows)")
         ->check(CLI::NonNegativeNumber);
     return [options] { return runExtract(*options); };
 }

@@ -51,11 +51,17 @@ void recomputeNormals(Mesh& mesh);
 // ---- Decimation -------------------------------------------------------------
 
 // Simplifies the mesh with meshoptimizer's edge collapses (meshopt_simplify,
-// borders locked) down to `ratio` of its triangles, stopping earlier when a
-// further collapse would move the surface more than `maxError` world units
-// (unbounded when empty; ratio 0: as far as the error allows). Unused vertices
-// are dropped; normals are recomputed. Throws InputError for a ratio outside
-// [0, 1], a ratio of 0 without an error, or a negative error.
+// borders locked), after welding vertices at one position, down to `ratio` of
+// its triangles, stopping earlier when meshoptimizer's error estimate exceeds
+// `maxError` world units (ratio 0: as far as the error allows). Its estimate
+// misses thin parts collapsed whole, so with `maxError` the result is checked
+// and redone, up to 8 rounds, with the stray vertices locked: those of the
+// input farther than maxError from the result, and the corners of the result's
+// triangles whose centres are farther than maxError from the input. Collapses
+// that leave back-to-back triangles or edges of four are undone by removing
+// the pairs and splitting the pinched vertices, so a closed input stays closed.
+// Unused vertices are dropped; normals are recomputed. Throws InputError for a
+// ratio outside [0, 1], a ratio of 0 without an error, or a negative error.
 void decimateMesh(Mesh& mesh, double ratio, std::optional<double> maxError = std::nullopt);
 
 // ---- Quality ----------------------------------------------------------------
@@ -83,6 +89,10 @@ struct MeshProcessing {
     bool smooths() const { return smoothIterations > 0; }
     bool decimates() const { return decimateRatio < 1.0 || decimateError.has_value(); }
 };
+
+// The error bound decimation uses unless told otherwise: half the volume's
+// smallest spacing.
+double defaultDecimateError(const Volume& volume);
 
 // Throws InputError naming the setting for iterations < 0, a pass band outside
 // (0, 2), a ratio outside (0, 1] or a negative error.

@@ -9,7 +9,6 @@
 // unused ones are dropped, the rest keep their order and grid edges.
 #include <meshoptimizer.h>
 
-#include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
@@ -17,43 +16,75 @@
 #include "isotrack/errors.h"
 #include "isotrack/mesh_processing.h"
 #include "mesh/manifold.h"
-#include "mesh/mesh_edges.h"
+#include "mesh/near_surface.h"
+#include "mesh/weld.h"
 
 namespace isotrack {
 namespace {
 
-void dropUnusedVertices(Mesh& mesh) {
-    constexpr std::uint32_t kUnused = std::numeric_limits<std::uint32_t>::max();
-    std::vector<std::uint32_t> remap(mesh.vertices.size(), kUnused);
-    for (std::uint32_t index : mesh.indices) remap[index] = 0;
-    std::uint32_t next = 0;
-    for (std::size_t v = 0; v < remap.size(); ++v) {
-        if (remap[v] == kUnused) continue;
-        remap[v] = next;
-        mesh.vertices[next] = mesh.vertices[v];
-        if (v < mesh.vertexEdges.size()) mesh.vertexEdges[next] = mesh.vertexEdges[v];
-        ++next;
+// Rounds of meshopt_simplify: its quadric error underestimates how far a thin
+// bone's rim or spike moves when collapsed (the planes around it barely
+// change), so after each round the vertices of the input farther than the
+// error bound from the result are locked, and the next round starts again from
+// the input. meshoptimizer 0.18 locks border vertices only, so a vertex is
+// locked by leaving its triangles out of the simplified part: their corners
+// are then on a border, kept, and the triangles fit back unchanged.
+constexpr int kLockingRounds = 8;
+
+std::vector<std::uint32_t> simplifyRound(const Mesh& mesh, const std::vector<char>& locked, std::size_t targetTriangles,
+                                         float relativeError) {
+    std::vector<std::uint32_t> free, held;
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        const std::uint32_t* corner = &mesh.indices[3 * t];
+        auto& to = locked[corner[0]] || locked[corner[1]] || locked[corner[2]] ? held : free;
+        to.insert(to.end(), corner, corner + 3);
     }
-    mesh.vertices.resize(next);
-    if (mesh.vertexEdges.size() > next) mesh.vertexEdges.resize(next);
-    for (std::uint32_t& index : mesh.indices) index = remap[index];
+    const std::size_t heldTriangles = held.size() / 3;
+    const std::size_t target = targetTriangles > heldTriangles ? 3 * (targetTriangles - heldTriangles) : 0;
+    std::vector<std::uint32_t> kept(free.size());
+    kept.resize(meshopt_simplify(kept.data(), free.data(), free.size(), mesh.vertices.front().position,
+                                 mesh.vertices.size(), sizeof(Vertex), target, relativeError,
+                                 meshopt_SimplifyLockBorder, nullptr));
+    kept.insert(kept.end(), held.begin(), held.end());
+    return kept;
 }
 
-// Vertices at one position become one, and the triangles that collapses (the
-// zero-area ones between coincident vertices) go: the edge collapses then see
-// one connected surface rather than seams.
-void weldCoincidentVertices(Mesh& mesh) {
-    const std::vector<std::uint32_t> weld = detail::weldedIds(mesh);
-    std::size_t kept = 0;
-    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-        const std::uint32_t a = weld[mesh.indices[3 * t]], b = weld[mesh.indices[3 * t + 1]],
-                            c = weld[mesh.indices[3 * t + 2]];
-        if (a == b || b == c || a == c) continue;
-        mesh.indices[kept++] = a;
-        mesh.indices[kept++] = b;
-        mesh.indices[kept++] = c;
+// Locks the input's vertices farther than maxError from the result, and the
+// corners of the result's triangles whose centre is farther than maxError from
+// the input. False when there are none: the result stands.
+void centreOf(const Mesh& mesh, const std::uint32_t* corner, float centre[3]) {
+    for (int a = 0; a < 3; ++a) {
+        double sum = 0.0;
+        for (int k = 0; k < 3; ++k) sum += mesh.vertices[corner[k]].position[a];
+        centre[a] = float(sum / 3.0);
     }
-    mesh.indices.resize(kept);
+}
+
+// Locks the input's vertices farther than maxError from the result, and the
+// corners of the result's
+// triangles whose centre is farther than maxError from the input. False when
+// there are none: the result stands.
+bool lockStrayVertices(const Mesh& mesh, const std::vector<std::uint32_t>& kept, const detail::NearSurface& original,
+                       double maxError, std::vector<char>& locked) {
+    bool locking = false;
+    auto lockCorners = [&](const std::uint32_t* corner) {
+        for (int k = 0; k < 3; ++k) {
+            locking = locking || !locked[corner[k]];
+            locked[corner[k]] = 1;
+        }
+    };
+    const detail::NearSurface result(mesh.vertices, kept, maxError);
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+        if (locked[v] || result.near(mesh.vertices[v].position)) continue;
+        locked[v] = 1;
+        locking = true;
+    }
+    float centre[3];
+    for (std::size_t t = 0; t < kept.size() / 3; ++t) {
+        centreOf(mesh, &kept[3 * t], centre);
+        if (!original.near(centre)) lockCorners(&kept[3 * t]);
+    }
+    return locking;
 }
 
 }  // namespace
@@ -64,24 +95,29 @@ void decimateMesh(Mesh& mesh, double ratio, std::optional<double> maxError) {
     if (ratio == 0.0 && !maxError) throw InputError("decimate: ratio 0 needs an error bound");
     if (maxError && !(*maxError >= 0.0))
         throw InputError("decimate: error " + std::to_string(*maxError) + " is negative");
-    weldCoincidentVertices(mesh);
-    dropUnusedVertices(mesh);
+    detail::weldCoincidentVertices(mesh);
     if (mesh.indices.empty()) return;
     const float* positions = mesh.vertices.front().position;
-    const std::size_t target = std::size_t(double(mesh.triangleCount()) * ratio) * 3;
+    const std::size_t target = std::size_t(double(mesh.triangleCount()) * ratio);
     // meshoptimizer's error is relative to the mesh's extent.
     float relativeError = std::numeric_limits<float>::max();
     if (maxError) {
         const float scale = meshopt_simplifyScale(positions, mesh.vertices.size(), sizeof(Vertex));
         relativeError = scale > 0.0f ? float(*maxError / double(scale)) : 0.0f;
     }
-    Buffer<std::uint32_t> kept(mesh.indices.size());
-    const std::size_t count =
-        meshopt_simplify(kept.data(), mesh.indices.data(), mesh.indices.size(), positions, mesh.vertices.size(),
-                         sizeof(Vertex), target, relativeError, meshopt_SimplifyLockBorder, nullptr);
-    kept.resize(count);
-    mesh.indices = std::move(kept);
-    dropUnusedVertices(mesh);
+    std::vector<char> locked(mesh.vertices.size(), 0);
+    std::vector<std::uint32_t> kept;
+    const std::vector<std::uint32_t> input(mesh.indices.begin(), mesh.indices.end());
+    std::optional<detail::NearSurface> original;
+    if (maxError) original.emplace(mesh.vertices, input, *maxError);
+    for (int round = 0; round < kLockingRounds; ++round) {
+        kept = simplifyRound(mesh, locked, target, relativeError);
+        detail::removeFins(kept);  // a thin part collapsed into fins is gone: lock it too
+        if (!maxError) break;
+        if (!lockStrayVertices(mesh, kept, *original, *maxError, locked)) break;
+    }
+    mesh.indices.assign(kept.begin(), kept.end());
+    detail::dropUnusedVertices(mesh);
     detail::removeFinsAndSplitPinches(mesh);
     recomputeNormals(mesh);
 }

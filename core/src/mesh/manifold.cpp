@@ -16,36 +16,12 @@ std::uint32_t root(std::vector<std::uint32_t>& forest, std::uint32_t c) {
     return c;
 }
 
-void removeFins(Mesh& mesh) {
-    const std::size_t count = mesh.triangleCount();
-    std::vector<std::pair<std::array<std::uint32_t, 3>, std::uint32_t>> sets(count);
-    for (std::size_t t = 0; t < count; ++t) {
-        std::array<std::uint32_t, 3> key{mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]};
-        std::sort(key.begin(), key.end());
-        sets[t] = {key, std::uint32_t(t)};
-    }
-    std::sort(sets.begin(), sets.end());
-    std::vector<char> drop(count, 0);
-    for (std::size_t i = 0; i + 1 < count;) {
-        if (sets[i].first == sets[i + 1].first) {  // the same three vertices: a fin (or a duplicate)
-            drop[sets[i].second] = drop[sets[i + 1].second] = 1;
-            i += 2;
-        } else {
-            ++i;
-        }
-    }
-    std::size_t kept = 0;
-    for (std::size_t t = 0; t < count; ++t) {
-        if (drop[t]) continue;
-        for (int k = 0; k < 3; ++k) mesh.indices[kept++] = mesh.indices[3 * t + std::size_t(k)];
-    }
-    mesh.indices.resize(kept);
-}
-
 }  // namespace
 
 void removeFinsAndSplitPinches(Mesh& mesh) {
-    removeFins(mesh);
+    std::vector<std::uint32_t> indices(mesh.indices.begin(), mesh.indices.end());
+    removeFins(indices);
+    mesh.indices.assign(indices.begin(), indices.end());
     const std::size_t corners = mesh.indices.size();
     // Sides grouped by their undirected edge: (min, max, forward?, corner of the side's start).
     struct Side {
@@ -131,6 +107,32 @@ void removeFinsAndSplitPinches(Mesh& mesh) {
         }
         mesh.indices[c] = groupVertex[group];
     }
+}
+
+void removeFins(std::vector<std::uint32_t>& indices) {
+    const std::size_t count = indices.size() / 3;
+    std::vector<std::pair<std::array<std::uint32_t, 3>, std::uint32_t>> sets(count);
+    for (std::size_t t = 0; t < count; ++t) {
+        std::array<std::uint32_t, 3> key{indices[3 * t], indices[3 * t + 1], indices[3 * t + 2]};
+        std::sort(key.begin(), key.end());
+        sets[t] = {key, std::uint32_t(t)};
+    }
+    std::sort(sets.begin(), sets.end());
+    std::vector<char> drop(count, 0);
+    for (std::size_t i = 0; i + 1 < count;) {
+        if (sets[i].first == sets[i + 1].first) {  // the same three vertices: a fin (or a duplicate)
+            drop[sets[i].second] = drop[sets[i + 1].second] = 1;
+            i += 2;
+        } else {
+            ++i;
+        }
+    }
+    std::size_t kept = 0;
+    for (std::size_t t = 0; t < count; ++t) {
+        if (drop[t]) continue;
+        for (int k = 0; k < 3; ++k) indices[kept++] = indices[3 * t + std::size_t(k)];
+    }
+    indices.resize(kept);
 }
 
 }  // namespace isotrack::detail

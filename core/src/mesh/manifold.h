@@ -1,5 +1,8 @@
 #pragma once
 // Making a decimated mesh closed again where edge collapses pinched it.
+#include <cstdint>
+#include <vector>
+
 #include "isotrack/mesh.h"
 
 namespace isotrack::detail {
@@ -13,5 +16,9 @@ namespace isotrack::detail {
 // its own copy of the vertex: a surface closed by index, whose copies at one
 // position MeshQuality's welding still counts as non-manifold edges.
 void removeFinsAndSplitPinches(Mesh& mesh);
+
+// Step (1) alone, on a list of triangles: both triangles of every pair over the
+// same three vertices go.
+void removeFins(std::vector<std::uint32_t>& indices);
 
 }  // namespace isotrack::detail

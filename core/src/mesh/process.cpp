@@ -43,6 +43,11 @@ void remeasure(Surface& surface) {
 
 }  // namespace
 
+double defaultDecimateError(const Volume& volume) {
+    const Vec3d& s = volume.spacing();
+    return 0.5 * std::min({s[0], s[1], s[2]});
+}
+
 void checkMeshProcessing(const MeshProcessing& p) {
     if (p.smoothIterations < 0)
         throw InputError("smooth: iterations " + std::to_string(p.smoothIterations) + " is negative");
