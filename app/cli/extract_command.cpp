@@ -269,7 +269,8 @@ Extraction extract(const ExtractOptions& options, const Source& source, TableKin
     std::size_t before = 0, peak = 0;
     std::optional<ContourTree> tree;
     double treeSeconds = 0.0;
-    if (options.method == Method::Tree) {
+    // With --cap the tree is the padded copy's, built inside the extraction.
+    if (options.method == Method::Tree && !options.cap) {
         treeSeconds = secondsOf([&] {
             tree = computeContourTree(source.volume, options.threads);
             if (options.minPersistence > 0 || options.minSize > 0)
@@ -311,6 +312,9 @@ void checkExtractOptions(const ExtractOptions& options) {
         throw InputError("--min-persistence, --min-size, --largest-arcs and --arc-iso need --method tree, not " +
                          method);
     for (const std::string& item : options.arcIso) parseArcIso(item);
+    if (options.cap && (!options.arcIso.empty() || options.minPersistence > 0 || options.minSize > 0))
+        throw InputError(
+            "--cap builds the padded copy's contour tree: not with --arc-iso, --min-persistence or --min-size");
     if (options.method == Method::Tree && options.table != TableKind::Consistent)
         throw InputError(std::string("--method tree works with the consistent table only, not ") +
                          tableKindName(options.table));
