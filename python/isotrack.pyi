@@ -84,6 +84,14 @@ class Surface:
     def nbytes(self) -> int: ...
     @property
     def seconds(self) -> float: ...
+    @property
+    def degenerate_triangles(self) -> int: ...
+    @property
+    def boundary_edges(self) -> int: ...
+    @property
+    def non_manifold_edges(self) -> int: ...
+    @property
+    def min_angle_fractions(self) -> Tuple[float, float, float]: ...
     def __len__(self) -> int: ...
 
 MeshTuple = Tuple[
@@ -119,6 +127,11 @@ def marching_cubes(
     table: Table = "consistent",
     threads: int = 0,
     origin: Optional[Sequence[float]] = None,
+    cap: bool = False,
+    smooth: int = 0,
+    passband: float = 0.1,
+    decimate: float = 1.0,
+    decimate_error: Optional[float] = None,
 ) -> List[Surface]: ...
 def track(
     volume: VolumeInput,
@@ -130,6 +143,11 @@ def track(
     table: Table = "consistent",
     threads: int = 0,
     origin: Optional[Sequence[float]] = None,
+    cap: bool = False,
+    smooth: int = 0,
+    passband: float = 0.1,
+    decimate: float = 1.0,
+    decimate_error: Optional[float] = None,
 ) -> Surface: ...
 def surfaces(
     volume: VolumeInput,
@@ -139,6 +157,11 @@ def surfaces(
     table: Table = "consistent",
     threads: int = 0,
     origin: Optional[Sequence[float]] = None,
+    cap: bool = False,
+    smooth: int = 0,
+    passband: float = 0.1,
+    decimate: float = 1.0,
+    decimate_error: Optional[float] = None,
 ) -> List[Surface]: ...
 def load(path: Union[str, os.PathLike[str]], frame: Frame = "lps") -> Volume: ...
 def open(path: Union[str, os.PathLike[str]], frame: Frame = "lps") -> Volume:

@@ -32,6 +32,7 @@
 #include "isotrack/isovalue.h"
 #include "isotrack/mapped_file.h"
 #include "isotrack/marching_cubes.h"
+#include "isotrack/mesh_processing.h"
 #include "isotrack/orientation.h"
 #include "isotrack/tables.h"
 #include "isotrack/threads.h"
@@ -110,6 +111,31 @@ void toFrame(std::vector<Surface>& surfaces, const Geometry& geometry, const Vol
     for (Surface& surface : surfaces) surfaceToFrame(surface, transform);
 }
 
+// What track and surfaces do to each surface: capping (an extraction from a
+// padded copy), then smoothing and decimation (core's processSurface), in
+// grid coordinates, before the winding is reversed or the frame applied.
+struct Processing {
+    bool cap = false;
+    MeshProcessing mesh;
+};
+
+Processing processingOf(bool cap, int smooth, double passband, double decimate,
+                        const std::optional<double>& decimateError, const Volume& volume) {
+    Processing p;
+    p.cap = cap;
+    p.mesh.smoothIterations = smooth;
+    p.mesh.passband = passband;
+    p.mesh.decimateRatio = decimate;
+    p.mesh.decimateError = decimateError;
+    if (decimate < 1.0 && !decimateError) p.mesh.decimateError = defaultDecimateError(volume);
+    checkMeshProcessing(p.mesh);
+    return p;
+}
+
+void processAll(std::vector<Surface>& surfaces, const Processing& processing) {
+    for (Surface& surface : surfaces) processSurface(surface, processing.mesh);
+}
+
 py::list surfaceList(std::vector<Surface> surfaces, bool zyx) {
     py::list out;
     for (Surface& surface : surfaces) out.append(py::cast(PySurface{std::move(surface), zyx}));
@@ -125,15 +151,20 @@ void throwIfMappedDamaged(const py::array& array) {
 // One mesh (as scikit-image returns it) or, with `split`, every surface.
 py::object marchingCubesPy(const py::array& array, double level, const Geometry& geometry, const std::string& tableName,
                            int threads, const std::optional<py::array>& cellMask, bool allowDegenerate, bool ascent,
-                           bool split) {
+                           bool split, bool cap, int smooth, double passband, double decimate,
+                           const std::optional<double>& decimateError) {
     const Volume volume = volumeView(array, geometry);
     const TableKind table = tableOf(tableName);
     const int threadCount = threadsOf(threads);
     if (split) {
+        const Processing processing = processingOf(cap, smooth, passband, decimate, decimateError, volume);
         std::vector<Surface> surfaces;
         {
             py::gil_scoped_release unlocked;
-            surfaces = extractAllSurfaces(volume, level, table, threadCount);
+            surfaces = processing.cap ? extractAllSurfaces(padVolume(volume, capPadValue(volume, level)), level, table,
+                                                           threadCount)
+                                      : extractAllSurfaces(volume, level, table, threadCount);
+            processAll(surfaces, processing);
             if (ascent)
                 for (Surface& surface : surfaces) reverseWinding(surface.mesh);
             toFrame(surfaces, geometry, volume);
@@ -197,15 +228,24 @@ GridEdge seedEdgeOf(const Volume& volume, const Geometry& geometry, double iso, 
 
 py::object trackPy(const py::array& array, double level, const Geometry& geometry, const std::string& tableName,
                    int threads, const std::optional<Vec3d>& seed, const std::optional<std::array<int, 4>>& seedEdge,
-                   bool ascent) {
+                   bool ascent, bool cap, int smooth, double passband, double decimate,
+                   const std::optional<double>& decimateError) {
     const Volume volume = volumeView(array, geometry);
     const TableKind table = tableOf(tableName);
     const int threadCount = std::min(threadsOf(threads), kMaxTrackThreads);
+    const Processing processing = processingOf(cap, smooth, passband, decimate, decimateError, volume);
     std::vector<Surface> surfaces(1);
     {
         py::gil_scoped_release unlocked;
         const GridEdge edge = seedEdgeOf(volume, geometry, level, seed, seedEdge);
-        surfaces[0] = trackSurface(volume, level, edge, table, threadCount);
+        if (processing.cap) {  // the same edge, one sample further along each axis of the padded copy
+            const GridEdge padded{edge.x + 1, edge.y + 1, edge.z + 1, edge.axis};
+            surfaces[0] =
+                trackSurface(padVolume(volume, capPadValue(volume, level)), level, padded, table, threadCount);
+        } else {
+            surfaces[0] = trackSurface(volume, level, edge, table, threadCount);
+        }
+        processAll(surfaces, processing);
         if (ascent) reverseWinding(surfaces[0].mesh);
         toFrame(surfaces, geometry, volume);
     }
@@ -471,6 +511,23 @@ void bindSurface(py::module_& m) {
                                "(V, 4) int32: per vertex its grid edge (z, y, x, axis), axis 0 along z (a copy).")
         .def(
             "__len__", [](const PySurface& s) { return statsOf(s).triangles; }, "Number of triangles.")
+        .def_property_readonly(
+            "degenerate_triangles",
+            [](const PySurface& s) { return measureQuality(s.surface.mesh).degenerateTriangles; },
+            "Triangles of zero area (corners at one place or on one line).")
+        .def_property_readonly(
+            "boundary_edges", [](const PySurface& s) { return measureQuality(s.surface.mesh).boundaryEdges; },
+            "Edges of one triangle, once vertices at one position are welded (0 for a closed surface).")
+        .def_property_readonly(
+            "non_manifold_edges", [](const PySurface& s) { return measureQuality(s.surface.mesh).nonManifoldEdges; },
+            "Edges of more than two triangles, once vertices at one position are welded.")
+        .def_property_readonly(
+            "min_angle_fractions",
+            [](const PySurface& s) {
+                const MeshQuality q = measureQuality(s.surface.mesh);
+                return py::make_tuple(q.minAngleBelow1, q.minAngleBelow10, q.minAngleBelow20);
+            },
+            "Fractions of the triangles whose smallest angle is below 1, 10 and 20 degrees.")
         .def("__repr__", &surfaceRepr);
 }
 
@@ -502,9 +559,12 @@ PYBIND11_MODULE(_isotrack, m) {
     m.def("level", &levelPy, py::arg("samples"), py::arg("level"), py::arg("within_range"));
     m.def("marching_cubes", &marchingCubesPy, py::arg("samples"), py::arg("level"), py::arg("geometry"),
           py::arg("table"), py::arg("threads"), py::arg("cell_mask"), py::arg("allow_degenerate"), py::arg("ascent"),
-          py::arg("split"));
+          py::arg("split"), py::arg("cap") = false, py::arg("smooth") = 0, py::arg("passband") = 0.1,
+          py::arg("decimate") = 1.0, py::arg("decimate_error") = py::none());
     m.def("track", &trackPy, py::arg("samples"), py::arg("level"), py::arg("geometry"), py::arg("table"),
-          py::arg("threads"), py::arg("seed"), py::arg("seed_edge"), py::arg("ascent"));
+          py::arg("threads"), py::arg("seed"), py::arg("seed_edge"), py::arg("ascent"), py::arg("cap") = false,
+          py::arg("smooth") = 0, py::arg("passband") = 0.1, py::arg("decimate") = 1.0,
+          py::arg("decimate_error") = py::none());
     m.def("concatenated", &concatenatedPy, py::arg("surfaces"), py::arg("reference"), py::arg("offset"),
           py::arg("shape"), py::arg("volume_shape"));
     m.def("edge_ids", &edgeIdsPy, py::arg("edges"), py::arg("shape"));

@@ -85,13 +85,24 @@ struct SetSurfaceIso {  // method tree: surface `id` at an isovalue of its own
 // do not (back to track).
 struct ConfirmExtraction {};
 struct CancelExtraction {};
+// Smooth (iterations, 0: none) then decimate (fraction of triangles kept, 1:
+// none) surface `id`'s mesh, as `isotrack extract --smooth --decimate` does.
+struct ProcessMesh {
+    std::uint32_t id = 0;
+    int smooth = 0;
+    double decimate = 1.0;
+};
+// Back to the surface's mesh before its last ProcessMesh.
+struct UndoMesh {
+    std::uint32_t id = 0;
+};
 struct FrameSelection {};
 struct FrameAll {};
 
 using Action = std::variant<LoadField, LoadFile, SetIso, SetTable, SetMethod, Growth, SetCellsPerFrame, SetGrowthBudget,
                             SetColourByGrowth, Select, SetVisible, Isolate, ShowAll, Delete, Export, SetColour,
                             SetOffset, SetExplode, SetWireframe, SetBoundingBox, SetMinPersistence, SetSurfaceIso,
-                            ConfirmExtraction, CancelExtraction, FrameSelection, FrameAll>;
+                            ConfirmExtraction, CancelExtraction, ProcessMesh, UndoMesh, FrameSelection, FrameAll>;
 
 inline constexpr const char* kDefaultExportPattern = "surface_{id}.ply";
 

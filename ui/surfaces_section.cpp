@@ -118,6 +118,11 @@ void selectedDetails(const SurfaceRow& row, const PanelState& state, PanelScratc
     if (ImGui::Button("Delete")) actions.push_back(Delete{row.id});
     ImGui::SameLine();
     if (ImGui::Button("Export")) actions.push_back(Export{row.id, exportPath(scratch.exportPattern.data(), row.id)});
+    if (ImGui::Button("Smooth 20")) actions.push_back(ProcessMesh{row.id, 20, 1.0});
+    ImGui::SameLine();
+    if (ImGui::Button("Decimate to 10%")) actions.push_back(ProcessMesh{row.id, 0, 0.1});
+    ImGui::SameLine();
+    if (ImGui::Button("Undo")) actions.push_back(UndoMesh{row.id});
 }
 
 // PLY, OBJ or STL: rewrites the pattern's extension, which is what decides the format.

@@ -29,6 +29,7 @@
 #include "isotrack/extract.h"
 #include "isotrack/io.h"
 #include "isotrack/marching_cubes.h"
+#include "isotrack/mesh_processing.h"
 #include "isotrack/orientation.h"
 #include "isotrack/tables.h"
 #include "isotrack/threads.h"
@@ -54,6 +55,8 @@ struct ExtractOptions {
     std::size_t largestArcs = 0;      // --method tree: only the surfaces of the arcs sweeping the most samples
     std::vector<std::string> arcIso;  // --method tree: I:V, surface I at its own isovalue V
     std::string scheduler;            // a Dask scheduler: the extraction runs there (dask_handoff.h)
+    bool cap = false;                 // close the surfaces the border cuts
+    MeshProcessing processing;        // --smooth, --passband, --decimate, --decimate-error
 };
 
 struct Extraction {
@@ -68,7 +71,15 @@ struct Extraction {
     std::size_t residentBefore = 0, residentPeak = 0;        // bytes, around the first run
     double treeSeconds =
         0.0;  // --method tree: building (and simplifying) the contour tree, not timed with the extraction
+    double processSeconds = 0.0;         // --smooth and --decimate, not timed with the extraction
+    std::optional<MeshQuality> quality;  // --method mc with --json: the mesh's
 };
+
+nlohmann::json qualityJson(const MeshQuality& q) {
+    return {{"degenerate_triangles", q.degenerateTriangles}, {"boundary_edges", q.boundaryEdges},
+            {"non_manifold_edges", q.nonManifoldEdges},      {"min_angle_below_1", q.minAngleBelow1},
+            {"min_angle_below_10", q.minAngleBelow10},       {"min_angle_below_20", q.minAngleBelow20}};
+}
 
 nlohmann::json surfaceJson(const SurfaceStats& s) {
     nlohmann::json j{{"triangles", s.triangles}, {"vertices", s.vertices}, {"cells_visited", s.cellsVisited},
@@ -179,18 +190,29 @@ Extraction extractOnce(const ExtractOptions& options, const Source& source, Tabl
     ExtractRequest request = extractRequest(method, source.iso, table, options.threads, seed);
     request.tree = tree;
     request.largestArcs = options.largestArcs;
+    request.cap = options.cap;
+    MeshProcessing processing = options.processing;
+    if (processing.decimateRatio < 1.0 && !processing.decimateError)
+        processing.decimateError = defaultDecimateError(source.volume);
     TimedExtraction run = extractTimed(source.volume, request);
     Extraction out;
     out.seconds.push_back(run.seconds);
     std::vector<double> isovalues(run.surfaces.size(), source.iso);
     if (tree && !options.arcIso.empty()) applyArcIsovalues(options, source.volume, *tree, run.surfaces, isovalues);
+    // Smoothing and decimation, per surface, in the grid frame (timed apart).
+    out.processSeconds = secondsOf([&] {
+        for (Surface& surface : run.surfaces) processSurface(surface, processing);
+    });
     // Meshes leave the grid for the --frame here, after the timing.
     const FrameTransform transform = gridToFrame(source.volume, frame);
+    std::vector<MeshQuality> quality;
     for (Surface& surface : run.surfaces) {
         surfaceToFrame(surface, transform);
         if (options.json && method != Method::Exhaustive && !surface.stats.euler) measureTopology(surface);
+        if (options.json) quality.push_back(measureQuality(surface.mesh));
     }
     if (method == Method::Exhaustive) {
+        if (options.json) out.quality = quality.front();
         out.mesh = std::move(run.surfaces.front().mesh);
         countMesh(out);
         return out;
@@ -200,6 +222,7 @@ Extraction extractOnce(const ExtractOptions& options, const Source& source, Tabl
         out.components = 1;
         out.cellsVisited = surface.stats.cellsVisited;
         out.surfaces.push_back(surfaceJson(surface.stats));
+        if (options.json) out.surfaces.back()["quality"] = qualityJson(quality.front());
         out.mesh = std::move(surface.mesh);
         countMesh(out);
         return out;
@@ -210,6 +233,7 @@ Extraction extractOnce(const ExtractOptions& options, const Source& source, Tabl
     for (std::size_t i = 0; i < surfaces.size(); ++i) {
         cells += surfaces[i].stats.cellsVisited;
         out.surfaces.push_back(surfaceJson(surfaces[i].stats));
+        if (options.json) out.surfaces.back()["quality"] = qualityJson(quality[i]);
         if (!options.arcIso.empty()) out.surfaces.back()["isovalue"] = isovalues[i];
         // One labelled mesh is only needed for --out; the counts come from the surfaces.
         if (!options.out.empty()) appendSurface(surfaces[i], static_cast<std::int32_t>(i), out);
@@ -248,7 +272,8 @@ Extraction extract(const ExtractOptions& options, const Source& source, TableKin
     std::size_t before = 0, peak = 0;
     std::optional<ContourTree> tree;
     double treeSeconds = 0.0;
-    if (options.method == Method::Tree) {
+    // With --cap the tree is the padded copy's, built inside the extraction.
+    if (options.method == Method::Tree && !options.cap) {
         treeSeconds = secondsOf([&] {
             tree = buildContourTree(source.volume, options.threads);
             if (options.minPersistence > 0 || options.minSize > 0)
@@ -278,6 +303,7 @@ bool perSurface(Method method) { return method == Method::All || method == Metho
 // read or generated: a mistake costs no time, however large the volume.
 void checkExtractOptions(const ExtractOptions& options) {
     checkSourceOptions(options.source);
+    checkMeshProcessing(options.processing);
     const std::string method = methodName(options.method);
     checkMethodSeed(options.method, options.seed);
     if (!options.out.empty()) meshFormatOf(options.out);  // an unknown extension
@@ -289,6 +315,9 @@ void checkExtractOptions(const ExtractOptions& options) {
         throw InputError("--min-persistence, --min-size, --largest-arcs and --arc-iso need --method tree, not " +
                          method);
     for (const std::string& item : options.arcIso) parseArcIso(item);
+    if (options.cap && (!options.arcIso.empty() || options.minPersistence > 0 || options.minSize > 0))
+        throw InputError(
+            "--cap builds the padded copy's contour tree: not with --arc-iso, --min-persistence or --min-size");
     if (options.method == Method::Tree && options.table != TableKind::Consistent)
         throw InputError(std::string("--method tree works with the consistent table only, not ") +
                          tableKindName(options.table));
@@ -355,6 +384,17 @@ int runExtract(const ExtractOptions& options) {
              source.volume.mappedFile() ? source.volume.mappedFile()->residentBytes() : source.volume.byteSize()},
         };
         if (options.method == Method::Tree) report["tree_seconds"] = result.treeSeconds;
+        report["cap"] = options.cap;
+        report["smooth"] = options.processing.smoothIterations;
+        report["passband"] = options.processing.passband;
+        report["decimate"] = options.processing.decimateRatio;
+        // The bound decimation used: --decimate-error, else core's default.
+        std::optional<double> decimateError = options.processing.decimateError;
+        if (options.processing.decimateRatio < 1.0 && !decimateError)
+            decimateError = defaultDecimateError(source.volume);
+        report["decimate_error"] = decimateError ? nlohmann::json(*decimateError) : nlohmann::json(nullptr);
+        report["process_seconds"] = result.processSeconds;
+        if (result.quality) report["quality"] = qualityJson(*result.quality);
         if (!options.out.empty()) report["out"] = options.out;
         if (!options.outDir.empty()) report["out_files"] = result.surfaceFiles;
         if (options.method != Method::Exhaustive) report["surfaces"] = result.surfaces;
@@ -426,6 +466,26 @@ RunCommand addExtractCommand(CLI::App& app) {
     command->add_option("--scheduler", options->scheduler,
                         "Run on Dask, one task per chunk: tcp://HOST:PORT, or local:N worker processes (a .zarr "
                         "--volume runs on Dask without it; docs/distributed.md)");
+    command->add_flag("--cap", options->cap,
+                      "Close the surfaces the volume's border cuts, as if the volume were padded with one layer of "
+                      "samples below --iso (its smallest sample)");
+    command
+        ->add_option("--smooth", options->processing.smoothIterations,
+                     "Smooth each surface: N iterations of windowed-sinc smoothing (no shrinkage; borders fixed)")
+        ->check(CLI::Range(0, 1000));
+    command
+        ->add_option("--passband", options->processing.passband,
+                     "With --smooth: the filter's pass band in (0, 2), smaller smooths more (default 0.1)")
+        ->check(CLI::Range(1e-9, 2.0 - 1e-9));
+    command
+        ->add_option("--decimate", options->processing.decimateRatio,
+                     "Decimate each surface to RATIO (0 < RATIO <= 1) of its triangles (meshoptimizer; borders kept)")
+        ->check(CLI::Range(1e-9, 1.0));
+    command
+        ->add_option("--decimate-error", options->processing.decimateError,
+                     "Decimate, keeping the surface within E world units of the original (default with --decimate: "
+                     "half the smallest spacing; alone: decimate as far as E allows)")
+        ->check(CLI::NonNegativeNumber);
     return [options] { return runExtract(*options); };
 }
 

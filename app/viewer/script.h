@@ -28,6 +28,8 @@
 //   min-persistence P         method tree: hide surfaces whose arc's persistence is below P
 //   surface-iso I V           method tree: surface I at its own isovalue V (only it is tracked again)
 //   move I DX DY DZ  colour I R G B  export I PATH  explode F
+//   smooth I N  decimate I R  undo I    surface I's mesh smoothed (N iterations) or
+//                             decimated (to R of its triangles), as extract does; undo the last
 //   growth play|pause|step|restart  cells N  budget MS  growth-colour on|off
 //   wireframe on|off  box on|off
 //   quit                      close the window and end the session

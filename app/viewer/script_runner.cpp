@@ -173,6 +173,12 @@ bool ScriptRunner::runCommand(const ScriptCommand& c) {
         host_.apply(ui::ShowAll{});
     } else if (name == "delete") {
         host_.apply(ui::Delete{surfaceAt(c, 0)});
+    } else if (name == "smooth") {
+        host_.apply(ui::ProcessMesh{surfaceAt(c, 0), static_cast<int>(c.numbers[1]), 1.0});
+    } else if (name == "decimate") {
+        host_.apply(ui::ProcessMesh{surfaceAt(c, 0), 0, c.numbers[1]});
+    } else if (name == "undo") {
+        host_.apply(ui::UndoMesh{surfaceAt(c, 0)});
     } else if (name == "min-persistence") {
         host_.apply(ui::SetMinPersistence{c.numbers[0]});
     } else if (name == "surface-iso") {

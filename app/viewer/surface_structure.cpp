@@ -25,11 +25,36 @@ void SurfaceStructure::replaceSurface(Surface surface, SurfaceFootprint footprin
     tracker_.reset();
     mesh_ = std::move(surface.mesh);
     stats_ = surface.stats;
+    beforeProcessing_.clear();
+    upload();
+    footprint_ = std::move(footprint);
+    presence_ = Presence::Shown;
+}
+
+void SurfaceStructure::upload() {
     gpu_.clear();
     gpu_.arena().reserve(gpu_.slot(), mesh_.vertices.size(), mesh_.indices.size());
     gpu_.appendNew(mesh_);
-    footprint_ = std::move(footprint);
-    presence_ = Presence::Shown;
+}
+
+bool SurfaceStructure::processMesh(const MeshProcessing& processing) {
+    if (growing() || presence_ != Presence::Shown || mesh_.indices.empty()) return false;
+    Surface surface{mesh_, stats_};
+    processSurface(surface, processing);
+    beforeProcessing_.push_back(Surface{std::move(mesh_), stats_});
+    mesh_ = std::move(surface.mesh);
+    stats_ = surface.stats;
+    upload();
+    return true;
+}
+
+bool SurfaceStructure::undoProcessing() {
+    if (beforeProcessing_.empty() || growing()) return false;
+    mesh_ = std::move(beforeProcessing_.back().mesh);
+    stats_ = beforeProcessing_.back().stats;
+    beforeProcessing_.pop_back();
+    upload();
+    return true;
 }
 
 void SurfaceStructure::setSeed(const FollowedSeed& seed, double iso) {
@@ -42,6 +67,7 @@ void SurfaceStructure::setAbsent(Presence presence, double iso, std::uint32_t in
     tracker_.reset();
     mesh_ = Mesh{};
     stats_ = SurfaceStats{};
+    beforeProcessing_.clear();
     gpu_.clear();
     presence_ = presence;
     mergedInto_ = into;

@@ -13,10 +13,12 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
 #include "isotrack/follow.h"
+#include "isotrack/mesh_processing.h"
 #include "isotrack/tracking.h"
 #include "render/gpu_mesh.h"
 #include "render/renderer.h"
@@ -65,6 +67,12 @@ public:
 
     // A new mesh for the same surface (another isovalue); style, offset and id stay.
     void replaceSurface(Surface surface, SurfaceFootprint footprint);
+    // Smooths and decimates the shown mesh (core's processSurface), keeping the
+    // mesh before it for undoProcessing; a new mesh (replaceSurface, setAbsent)
+    // forgets them. False while the surface grows or has no mesh.
+    bool processMesh(const MeshProcessing& processing);
+    // The mesh before the last processMesh; false when there is none.
+    bool undoProcessing();
     // Tracked surfaces: the seed as followed to the new isovalue.
     void setSeed(const FollowedSeed& seed, double iso);
     // No mesh at this isovalue: gone, or merged into surface `into`; the seed stays.
@@ -118,6 +126,8 @@ private:
     std::uint32_t id_;
     Mesh mesh_;
     SurfaceStats stats_;
+    std::vector<Surface> beforeProcessing_;  // the meshes processMesh replaced, last on top
+    void upload();
     render::GpuMesh gpu_;
     render::SurfaceStyle style_;
     glm::vec3 explodeOffset_{0.0f};

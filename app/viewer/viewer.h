@@ -104,6 +104,7 @@ private:
     void applyKey(KeyCommand key);
     void frameCamera(bool selectionOnly) override;
     void exportSurface(std::uint32_t id, const std::string& path) override;
+    void processMesh(const ui::ProcessMesh& request);
 
     // viewer_report.cpp: panel state, summary, screenshots
     ui::PanelState panelState() const;

@@ -109,6 +109,13 @@ void Viewer::apply(const ui::Action& action) {
                    [&](const ui::SetExplode& a) { scene_.setExplode(a.factor); },
                    [&](const ui::SetWireframe& a) { scene_.wireframe = a.on; },
                    [&](const ui::SetBoundingBox& a) { scene_.boundingBox = a.on; },
+                   [&](const ui::ProcessMesh& a) { processMesh(a); },
+                   [&](const ui::UndoMesh& a) {
+                       SurfaceStructure* s = scene_.find(a.id);
+                       if (s && s->undoProcessing())
+                           status("surface " + std::to_string(a.id) + ": back to " +
+                                  std::to_string(s->mesh().triangleCount()) + " triangles");
+                   },
                    [&](const ui::FrameSelection&) { frameCamera(true); },
                    [&](const ui::FrameAll&) { frameCamera(false); },
                },
@@ -163,6 +170,25 @@ void Viewer::frameCamera(bool selectionOnly) {
 // The path's extension picks the format (PLY, OBJ or STL), as for `isotrack extract --out`;
 // the mesh leaves the grid the view draws in for --frame (LPS world by default),
 // through the same transform, so the file equals extract's for the same surface.
+// Smoothing and decimation of one surface, with the command line's defaults
+// (core's defaultDecimateError for the volume shown).
+void Viewer::processMesh(const ui::ProcessMesh& request) {
+    SurfaceStructure* surface = scene_.find(request.id);
+    if (surface == nullptr) return;
+    MeshProcessing processing;
+    processing.smoothIterations = request.smooth;
+    processing.decimateRatio = request.decimate;
+    if (processing.decimates() && scene_.volume())
+        processing.decimateError = defaultDecimateError(scene_.volume()->volume);
+    const std::size_t before = surface->mesh().triangleCount();
+    if (!surface->processMesh(processing)) {
+        status("surface " + std::to_string(request.id) + ": no finished mesh to smooth or decimate");
+        return;
+    }
+    status("surface " + std::to_string(request.id) + ": " + std::to_string(before) + " -> " +
+           std::to_string(surface->mesh().triangleCount()) + " triangles (undo to go back)");
+}
+
 void Viewer::exportSurface(std::uint32_t id, const std::string& path) {
     const SurfaceStructure* surface = scene_.find(id);
     if (surface == nullptr) return;

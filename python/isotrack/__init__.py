@@ -212,7 +212,43 @@ def marching_cubes(
     return result
 
 
-def track(volume, level=None, *, seed=None, seed_edge=None, spacing=None, table="consistent", threads=0, origin=None):
+_PROCESSING_DOC = """
+        cap: close the surfaces the volume's border cuts, as if the volume
+            were padded with one layer of samples below level (its smallest
+            sample): what `isotrack extract --cap` does.
+        smooth: windowed-sinc smoothing iterations (0: none), without
+            shrinkage; border vertices stay. Normals are then the
+            area-weighted face normals.
+        passband: the smoothing filter's pass band in (0, 2); smaller smooths more.
+        decimate: keep this fraction (0, 1] of the triangles (meshoptimizer),
+            within decimate_error of the original.
+        decimate_error: the decimation's bound in world units (default: half
+            the smallest spacing); alone, decimate as far as it allows."""
+
+
+def _processing(cap, smooth, passband, decimate, decimate_error):
+    smooth = _inputs.integer(smooth, "smooth", 0)
+    passband, decimate = float(passband), float(decimate)
+    error = None if decimate_error is None else float(decimate_error)
+    return dict(cap=bool(cap), smooth=smooth, passband=passband, decimate=decimate, decimate_error=error)
+
+
+def track(
+    volume,
+    level=None,
+    *,
+    seed=None,
+    seed_edge=None,
+    spacing=None,
+    table="consistent",
+    threads=0,
+    origin=None,
+    cap=False,
+    smooth=0,
+    passband=0.1,
+    decimate=1.0,
+    decimate_error=None,
+):
     """The one connected surface through a seed, touching only the cells it crosses.
 
     Args:
@@ -228,6 +264,8 @@ def track(volume, level=None, *, seed=None, seed_edge=None, spacing=None, table=
         spacing, origin: of a raw array, in (z, y, x), as for marching_cubes.
         table: "consistent", "classic" or "trilinear".
         threads: threads to use (at most 64); 0 uses every core.
+        cap, smooth, passband, decimate, decimate_error: mesh processing,
+            applied in that order (see surfaces).
 
     Returns:
         A Surface.
@@ -256,20 +294,39 @@ def track(volume, level=None, *, seed=None, seed_edge=None, spacing=None, table=
         if len(edge) != 4:
             raise ValueError(f"seed_edge: expected four integers (z, y, x, axis), got {len(edge)}")
     iso = _isotrack.level(samples, _inputs.level_of(level), False)
-    return _isotrack.track(samples, iso, geometry, table, threads, point, edge, False)
+    processing = _processing(cap, smooth, passband, decimate, decimate_error)
+    return _isotrack.track(samples, iso, geometry, table, threads, point, edge, False, **processing)
 
 
-def surfaces(volume, level=None, *, spacing=None, table="consistent", threads=0, origin=None):
+def surfaces(
+    volume,
+    level=None,
+    *,
+    spacing=None,
+    table="consistent",
+    threads=0,
+    origin=None,
+    cap=False,
+    smooth=0,
+    passband=0.1,
+    decimate=1.0,
+    decimate_error=None,
+):
     """Every connected surface of a volume, largest (most triangles) first.
 
     Together they hold exactly the triangles of marching_cubes with the same
     table. Arguments as for marching_cubes (level None: isotrack's suggested
     isovalue); returns a list of Surface, empty when nothing crosses the level.
+    Each surface is processed, in this order, as these keywords say:
     """
     table, threads = _inputs.choice(table, "table", _TABLES), _inputs.integer(threads, "threads", 0)
     samples, geometry = _samples_and_geometry(volume, spacing, origin)
     iso = _isotrack.level(samples, _inputs.level_of(level), False)
-    return _isotrack.marching_cubes(samples, iso, geometry, table, threads, None, True, False, True)
+    processing = _processing(cap, smooth, passband, decimate, decimate_error)
+    return _isotrack.marching_cubes(samples, iso, geometry, table, threads, None, True, False, True, **processing)
+
+
+surfaces.__doc__ += _PROCESSING_DOC
 
 
 def load(path, frame="lps"):

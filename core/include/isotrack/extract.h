@@ -64,6 +64,12 @@ struct ExtractRequest {
     // When given, the march reports its slabs here (ExtractProgress); one
     // relaxed atomic add per slab, nothing when null.
     ExtractProgress* progress = nullptr;
+    // Close the surfaces the volume's border cuts: extract from a copy padded with
+    // one layer of samples below iso (isotrack/mesh_processing.h: capPadValue,
+    // padVolume). Meshes stay in the volume's grid coordinates; their vertexEdges
+    // index the padded grid (one sample more before each axis). Tree: the tree is
+    // that of the padded copy (`tree` is not used).
+    bool cap = false;
 };
 
 // Exhaustive: one surface, the whole mesh. Track: one surface per seed, in the

@@ -7,6 +7,7 @@
 #include "isotrack/contour_tree.h"
 #include "isotrack/errors.h"
 #include "isotrack/marching_cubes.h"
+#include "isotrack/mesh_processing.h"
 #include "isotrack/tracking.h"
 
 namespace isotrack {
@@ -64,6 +65,13 @@ const char* methodName(Method method) {
 std::vector<Surface> extract(const Volume& volume, const ExtractRequest& request) {
     std::vector<Surface> surfaces;
     if (detail::cancelled(request.cancel)) return surfaces;
+    if (request.cap) {
+        const Volume padded = padVolume(volume, capPadValue(volume, request.iso));
+        ExtractRequest inner = request;
+        inner.cap = false;
+        inner.tree = nullptr;
+        return extract(padded, inner);
+    }
     switch (request.method) {
         case Method::Exhaustive: surfaces.push_back(exhaustiveSurface(volume, request)); break;
         case Method::All:
