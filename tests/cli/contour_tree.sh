@@ -110,7 +110,7 @@ set -e
 # percentage on one line redrawn in place, cleared before the result; none in a pipe.
 if command -v script > /dev/null; then
     script -qec "'$isotrack' tree --field gyroid:48" /dev/null | tr '\r' '\n' > tty.txt
-    grep -q "^isotrack: contour tree: sorting the samples  *[0-9]*%" tty.txt || fail "no progress on a terminal: $(cat tty.txt)"
+    grep -Eq "^isotrack: contour tree: (sorting the samples|sweeping the join and split trees|merging them|building arcs|done) +[0-9]+%" tty.txt || fail "no progress on a terminal: $(cat tty.txt)"
     grep -q "gyroid:48: contour tree of" tty.txt || fail "no result after the progress: $(cat tty.txt)"
     grep -q $'^\033\[Kgyroid:48: contour tree of' tty.txt || fail "the progress line was not cleared"
 fi
