@@ -42,14 +42,13 @@ def volumes(tmp_path_factory, cli):
     """name -> (in-memory samples, level, zarr path): the fields by the CLI, written in 64^3 chunks."""
     folder = tmp_path_factory.mktemp("zarr")
     made = {}
-    for spec in ("noise:128", "gyroid:128"):
+    for spec in ("noise:128", "gyroid:128", "gyroid:256"):
         nrrd = folder / (spec.replace(":", "_") + ".nrrd")
         cli("field", spec, "--out", nrrd)
         made[spec] = np.array(isotrack.load(str(nrrd)).samples)
     made["gyroid file"] = str(folder / "gyroid_128.nrrd")
     if CT.is_file():
         made["ct"] = np.array(isotrack.load(str(CT)).samples)
-    out = {}
     out = {"gyroid file": made.pop("gyroid file")}
     for name, samples in made.items():
         path = folder / (name.replace(":", "_") + ".zarr")
@@ -93,7 +92,7 @@ def enclosed_volume(surface):
     return abs(np.einsum("ij,ij->i", v[f[:, 0]], np.cross(v[f[:, 1]], v[f[:, 2]])).sum() / 6.0)
 
 
-@pytest.mark.parametrize("name", ["noise:128", "gyroid:128", "ct"])
+@pytest.mark.parametrize("name", ["noise:128", "gyroid:128", "gyroid:256", "ct"])
 def test_surfaces_equal_in_memory(name, volumes, client):
     if name not in volumes:
         pytest.skip(f"{CT} missing: run scripts/get_ct.sh")
