@@ -410,6 +410,13 @@ int runExtract(const ExtractOptions& options) {
         std::printf(" at iso %g (%s table, method %s) in %.3f ms%s%s\n", source.iso, tableKindName(table),
                     method.c_str(), seconds * 1e3, options.out.empty() ? "" : " -> ", options.out.c_str());
         if (options.method == Method::Tree) std::printf("contour tree built in %.3f ms\n", result.treeSeconds * 1e3);
+        const MeshProcessing& processing = options.processing;
+        if (processing.smooths() || processing.decimates())
+            std::printf("%s in %.3f ms (the counts above are after it)\n",
+                        processing.smooths() && processing.decimates() ? "smoothed and decimated"
+                        : processing.smooths()                         ? "smoothed"
+                                                                       : "decimated",
+                        result.processSeconds * 1e3);
         if (!options.outDir.empty())
             std::printf("%zu surface file%s in %s\n", result.surfaceFiles.size(),
                         result.surfaceFiles.size() == 1 ? "" : "s", options.outDir.c_str());
