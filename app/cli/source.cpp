@@ -55,6 +55,12 @@ void addRawOptions(CLI::App& command, RawOptions& raw, CLI::Option* volume) {
                     "the largest that forms a volume)")
         ->needs(volume)
         ->excludes(dims);
+    command
+        .add_option("--array", raw.array,
+                    "VTK XML ImageData (.vti): the PointData array to read, by Name (default: the first with one "
+                    "component)")
+        ->needs(volume)
+        ->excludes(dims);
     dims->needs(volume);
     dims->needs(type);
     type->needs(dims);
@@ -67,7 +73,7 @@ void addSourceOptions(CLI::App& command, SourceOptions& options) {
     for (const FieldInfo& field : builtinFields()) names += std::string(names.empty() ? "" : ", ") + field.name;
     auto* volume = command.add_option(
         "--volume", options.volumePath,
-        "Volume file (.nrrd .nhdr .nii .nii.gz .mhd .mha .vtk .dcm, a DICOM folder or DICOMDIR; raw with --dims)");
+        "Volume file (.nrrd .nhdr .nii .nii.gz .mhd .mha .vtk .vti .dcm, a DICOM folder or DICOMDIR; raw with --dims)");
     auto* field = command.add_option("--field", options.fieldSpec, "Built-in field NAME[:N] (" + names + ")");
     volume->excludes(field);
     field->excludes(volume);
@@ -93,6 +99,11 @@ RawLayout rawLayout(const RawOptions& raw) {
 
 Volume loadVolumeFile(const std::string& path, const RawOptions& raw) {
     if (!raw.series.empty()) return loadDicom(path, raw.series);
+    if (!raw.array.empty()) {
+        if (volumeFormatOf(path) != VolumeFormat::VtkImageData)
+            throw InputError(path + ": --array is only for .vti files");
+        return loadVti(path, raw.array);
+    }
     if (raw.dims.empty()) return loadVolume(path);
     return loadRaw(path, rawLayout(raw));
 }
@@ -115,6 +126,7 @@ Source loadSource(const SourceOptions& options) {
         spec.text = options.volumePath;
         if (!options.raw.dims.empty()) spec.raw = rawLayout(options.raw);
         spec.series = options.raw.series;
+        spec.array = options.raw.array;
     }
     LoadedSource loaded;
     try {

@@ -27,6 +27,7 @@ struct RawOptions {
     std::vector<double> spacing;
     std::string endian = "little";
     std::string series;  // DICOM: --series UID|N, empty for the largest that forms a volume
+    std::string array;   // .vti: --array NAME, empty for the first one-component PointData array
 };
 
 struct SourceOptions {

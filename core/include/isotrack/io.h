@@ -20,12 +20,12 @@ namespace isotrack {
 
 // ---- Volumes ---------------------------------------------------------------
 
-enum class VolumeFormat : std::uint8_t { Nrrd, Nifti, MetaImage, VtkLegacy, Raw, Dicom };
+enum class VolumeFormat : std::uint8_t { Nrrd, Nifti, MetaImage, VtkLegacy, Raw, Dicom, VtkImageData };
 
 const char* volumeFormatName(VolumeFormat format);
 
 // The format loadVolume reads `path` as, from its extension (case-insensitive):
-// .nrrd .nhdr, .nii .nii.gz, .mhd .mha, .vtk, .raw; DICOM (isotrack/dicom.h) for
+// .nrrd .nhdr, .nii .nii.gz, .mhd .mha, .vtk, .vti, .raw; DICOM (isotrack/dicom.h) for
 // a folder, a file named DICOMDIR, .dcm or .dicom; nullopt for anything else.
 std::optional<VolumeFormat> volumeFormatOf(const std::string& path);
 
@@ -68,6 +68,14 @@ Volume loadMetaImage(const std::string& path);
 // DIMENSIONS, SPACING (or ASPECT_RATIO), ORIGIN, POINT_DATA n, and the first
 // SCALARS name type [1] (LOOKUP_TABLE optional) as the samples.
 Volume loadVtkLegacy(const std::string& path);
+
+// VTK XML ImageData (.vti): one Piece; a PointData DataArray of one component,
+// `array` by Name or else the first such, in format ascii, binary (base64) or
+// appended (raw or base64), uncompressed or vtkZLibDataCompressor, UInt32 or
+// UInt64 header_type, either byte_order; types Int8..Float64 (Int64 and UInt64
+// are refused). WholeExtent, Origin, Spacing and Direction (VTK 9), taken as
+// given; the volume's origin is the WholeExtent's first point.
+Volume loadVti(const std::string& path, const std::string& array = "");
 
 // A headerless file of samples, x fastest, nothing before or after them.
 struct RawLayout {

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "isotrack/dicom.h"
+#include "isotrack/errors.h"
 #include "isotrack/fields.h"
 #include "isotrack/isovalue.h"
 
@@ -18,6 +19,8 @@ LoadedSource loadSource(const VolumeSource& source, DefaultIso defaultIso) {
         loaded.defaultIso = fieldDefaultIso(spec.name);
         return loaded;
     }
+    if (!source.array.empty() && (source.raw || volumeFormatOf(source.text) != VolumeFormat::VtkImageData))
+        throw InputError(source.text + ": an array name (--array) is only for .vti files");
     if (source.raw) {
         loaded.volume = loadRaw(source.text, *source.raw);
     } else if (!source.series.empty() || volumeFormatOf(source.text) == VolumeFormat::Dicom) {
@@ -25,6 +28,8 @@ LoadedSource loadSource(const VolumeSource& source, DefaultIso defaultIso) {
         loaded.volume = std::move(read.volume);
         loaded.dicom = std::move(read.contents);
         loaded.dicomSeries = read.series;
+    } else if (!source.array.empty()) {
+        loaded.volume = loadVti(source.text, source.array);
     } else {
         loaded.volume = loadVolume(source.text);
     }
