@@ -11,6 +11,7 @@
 #include "isotrack/fields.h"
 #include "isotrack/io.h"
 #include "isotrack/source.h"
+#include "isotrack/time_series.h"
 
 namespace isotrack::cli {
 
@@ -61,6 +62,11 @@ void addRawOptions(CLI::App& command, RawOptions& raw, CLI::Option* volume) {
                     "component)")
         ->needs(volume)
         ->excludes(dims);
+    command
+        .add_option("--time", raw.time,
+                    "A time series (.pvd collection, 4D NIfTI): the step to read, by its index in `info` (default 0)")
+        ->needs(volume)
+        ->excludes(dims);
     dims->needs(volume);
     dims->needs(type);
     type->needs(dims);
@@ -71,9 +77,9 @@ void addRawOptions(CLI::App& command, RawOptions& raw, CLI::Option* volume) {
 void addSourceOptions(CLI::App& command, SourceOptions& options) {
     std::string names;
     for (const FieldInfo& field : builtinFields()) names += std::string(names.empty() ? "" : ", ") + field.name;
-    auto* volume = command.add_option(
-        "--volume", options.volumePath,
-        "Volume file (.nrrd .nhdr .nii .nii.gz .mhd .mha .vtk .vti .dcm, a DICOM folder or DICOMDIR; raw with --dims)");
+    auto* volume = command.add_option("--volume", options.volumePath,
+                                      "Volume file (.nrrd .nhdr .nii .nii.gz .mhd .mha .vtk .vti .pvd .dcm, a DICOM "
+                                      "folder or DICOMDIR; raw with --dims)");
     auto* field = command.add_option("--field", options.fieldSpec, "Built-in field NAME[:N] (" + names + ")");
     volume->excludes(field);
     field->excludes(volume);
@@ -99,12 +105,7 @@ RawLayout rawLayout(const RawOptions& raw) {
 
 Volume loadVolumeFile(const std::string& path, const RawOptions& raw) {
     if (!raw.series.empty()) return loadDicom(path, raw.series);
-    if (!raw.array.empty()) {
-        if (volumeFormatOf(path) != VolumeFormat::VtkImageData)
-            throw InputError(path + ": --array is only for .vti files");
-        return loadVti(path, raw.array);
-    }
-    if (raw.dims.empty()) return loadVolume(path);
+    if (raw.dims.empty()) return loadTimeStep(readTimeSeries(path), raw.time, raw.array);
     return loadRaw(path, rawLayout(raw));
 }
 
@@ -127,6 +128,7 @@ Source loadSource(const SourceOptions& options) {
         if (!options.raw.dims.empty()) spec.raw = rawLayout(options.raw);
         spec.series = options.raw.series;
         spec.array = options.raw.array;
+        spec.time = options.raw.time;
     }
     LoadedSource loaded;
     try {

@@ -77,6 +77,15 @@ open("nested.vti", "wb").write(vti(appended, nest="<a>" * 100 + "</a>" * 100))
 open("no_array.vti", "wb").write(vti('<DataArray type="Float32" Name="v" NumberOfComponents="3" format="ascii">'
                                       '</DataArray>'))
 open("lz4.vti", "wb").write(vti(appended, appended=lying, compressor="vtkLZ4DataCompressor"))
+# ParaView collections: a missing step file, a .pvd naming a .pvd (itself), a bad
+# timestep, no DataSet, and elements nested without end.
+def pvd(body):
+    return f'<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1"><Collection>{body}</Collection></VTKFile>\n'
+open("missing_step.pvd", "w").write(pvd('<DataSet timestep="0" file="gone.vti"/>'))
+open("self.pvd", "w").write(pvd('<DataSet timestep="0" file="self.pvd"/>'))
+open("bad_time.pvd", "w").write(pvd('<DataSet timestep="soon" file="truncated.vti"/>'))
+open("empty.pvd", "w").write(pvd(""))
+open("nested.pvd", "w").write(pvd("<a>" * 100 + "</a>" * 100))
 PY
 
 failures=0
@@ -124,7 +133,9 @@ done
 for case in "truncated.vti|truncated" "bad_base64.vti|not valid base64" \
             "lying_zlib.vti|compression header says 1 blocks of 1073741824 bytes" \
             "huge_extent.vti|WholeExtent" "nested.vti|nested deeper than 8" \
-            "no_array.vti|no one-component PointData array" "lz4.vti|vtkLZ4DataCompressor"; do
+            "no_array.vti|no one-component PointData array" "lz4.vti|vtkLZ4DataCompressor" \
+            "missing_step.pvd|cannot read" "self.pvd|is another .pvd" "bad_time.pvd|not a finite number" \
+            "empty.pvd|no DataSet" "nested.pvd|nested deeper than 8"; do
     expect=${case#*|}
     check "${case%%|*}"
     if ! grep -q "$expect" stderr.txt; then
