@@ -25,7 +25,7 @@ constexpr std::size_t kHeaderBytes = 348;
 
 // Offsets into the header, from nifti1.h.
 constexpr std::size_t kSizeofHdr = 0, kDim = 40, kDatatype = 70, kBitpix = 72, kPixdim = 76, kVoxOffset = 108,
-                      kSclSlope = 112, kSclInter = 116, kToffset = 132, kQformCode = 252, kSformCode = 254,
+                      kSclSlope = 112, kSclInter = 116, kToffset = 136, kQformCode = 252, kSformCode = 254,
                       kQuatern = 256, kQoffset = 268, kSrow = 280, kMagic = 344;
 
 struct Datatype {
