@@ -3,7 +3,8 @@
 A 64^3 gyroid (`isotrack field gyroid:64 --out`, its samples read with numpy from
 the raw NRRD, plus a ramp along x so that no axis swap or flip goes unseen) is written by vtkXMLImageDataWriter as ASCII, inline base64,
 appended raw and appended base64, uncompressed and zlib, with UInt32 and UInt64
-headers, and as int16 and float64; `isotrack extract --method all --json` must
+headers, as int16 and float64, and in sizes of one short zlib block and of a
+partial last block; `isotrack extract --method all --json` must
 give the same triangles, vertices and exported PLY bytes as the NRRD of the same samples. A second
 array chosen with --array is checked against its NRRD, and VTK 9's Direction
 with a WholeExtent not starting at 0 against VTK's own index-to-world transform.
@@ -133,6 +134,18 @@ for dtype, scale in (("int16", 1000.0), ("float64", 1.0)):
     write_vti(f"{dtype}.vti", image([("g", samples)]), "appended", zlib=True, encode=False)
     if want is None or counts(f"{dtype}.vti", iso=iso) != want:
         failures.append(f"{dtype}.vti: the mesh differs from {dtype}.nrrd's")
+
+# zlib blocks of VTK's 32 KiB: a volume within one short block, and one whose last
+# block is partial.
+for nz, ny, nx in ((20, 20, 20), (30, 40, 50)):
+    part = np.ascontiguousarray(gyroid[:nz, :ny, :nx])
+    name = f"part_{nx}x{ny}x{nz}"
+    write_nrrd(f"{name}.nrrd", part)
+    want = counts(f"{name}.nrrd")
+    for mode, encode in (("binary", True), ("appended", False)):
+        write_vti(f"{name}_{mode}.vti", image([("g", part)]), mode, zlib=True, encode=encode)
+        if want is None or counts(f"{name}_{mode}.vti") != want:
+            failures.append(f"{name}_{mode}.vti: the mesh differs from {name}.nrrd's")
 
 # Two arrays: the first scalar one by default, the other by --array; a 3-component
 # array first is passed over.
