@@ -176,13 +176,14 @@ void printSuggestedIsovalue(const std::optional<IsovalueSuggestion>& suggestion)
         std::printf("  suggested isovalue: %.10g (%s)\n", suggestion->value, isovalueRuleName(suggestion->rule));
 }
 
-// A .pvd collection or a 4D NIfTI: its steps; nothing for other files.
+// A .pvd collection, a 4D NIfTI or numbered files: its steps; nothing for one volume.
 std::optional<TimeSeries> timeSeries(const InfoOptions& options) {
     if (!options.raw.dims.empty()) return std::nullopt;
     const auto format = volumeFormatOf(options.path);
-    if (format != VolumeFormat::VtkCollection && format != VolumeFormat::Nifti) return std::nullopt;
+    if (format == VolumeFormat::Dicom) return std::nullopt;
     TimeSeries series = readTimeSeries(options.path);
-    if (format == VolumeFormat::Nifti && series.steps.size() == 1) return std::nullopt;
+    const bool numbered = series.steps.front().file != options.path;
+    if (format != VolumeFormat::VtkCollection && !numbered && series.steps.size() == 1) return std::nullopt;
     return series;
 }
 

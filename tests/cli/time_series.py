@@ -1,10 +1,11 @@
-"""Time series: a ParaView .pvd collection of VTK-written .vti files and a 4D NIfTI.
+"""Time series: a ParaView .pvd collection of VTK-written .vti files, a 4D NIfTI, numbered files.
 
 Each step is a 64^3 gyroid plus a ramp along x that grows with the step, so that
 every step's surface differs. `isotrack info` must list the steps with their time
 values and files; `extract --time STEP` must export byte for byte the mesh that
 extracting that step's own file gives: the step's .vti for the collection, the 3D
-NIfTI of that volume (written by nibabel on its own) for the 4D one. A step past
+NIfTI of that volume (written by nibabel on its own) for the 4D one and for the
+series those 3D files make as a printf pattern ("three_%d.nii"). A step past
 the end is one line naming the file.
 
 Usage: /usr/bin/python3 time_series.py ISOTRACK WORK_DIR  (exit 77 without VTK)
@@ -117,6 +118,18 @@ for name in ("four.nii", "four.nii.gz"):
             failures.append(f"{name} --time {t}: the mesh differs from three_{t}.nii's")
     if mesh(name) != mesh("three_0.nii"):
         failures.append(f"{name}: without --time the mesh is not step 0's")
+
+# The 3D files as a numbered series: a printf pattern, steps from 0, time = number.
+out = run("info", "--volume", "three_%d.nii", "--json")
+if out is not None:
+    got = [(s["time"], s["file"]) for s in json.loads(out)["steps"]]
+    if got != [(float(t), f"three_{t}.nii") for t in range(5)]:
+        failures.append(f"three_%d.nii: info lists {got}")
+if mesh("three_%d.nii", "--time", "3") != mesh("three_3.nii"):
+    failures.append("three_%d.nii --time 3: the mesh differs from three_3.nii's")
+done = subprocess.run([ISOTRACK, "extract", "--volume", "none_%04d.nii"], capture_output=True, text=True)
+if done.returncode != 1 or "none_%04d.nii: no file matches the pattern" not in done.stderr:
+    failures.append(f"none_%04d.nii: exit {done.returncode}: {done.stderr.strip()}")
 
 # Steps past the end: exit 1, one line naming the file and the steps there are.
 for name, steps_text in (("series.pvd", "3 steps (0..2)"), ("four.nii", "5 steps (0..4)"), ("g.nrrd", "1 step")):

@@ -1,14 +1,17 @@
-// Time series: ParaView collections (.pvd), 4D NIfTI, and single volumes as one step.
+// Time series: ParaView collections (.pvd), 4D NIfTI, numbered files, and single volumes as one step.
 #include "isotrack/time_series.h"
 
 #include <expat.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <memory>
+#include <optional>
+#include <system_error>
 #include <type_traits>
 
 #include "io_common.h"
@@ -115,9 +118,70 @@ TimeSeries readCollection(const std::string& path) {
     return TimeSeries{path, std::move(c.steps)};
 }
 
+// A printf pattern of one integer ("step_%04d.nrrd": prefix, zero padding, width,
+// suffix); "%%" is a literal '%'. nullopt for a path without exactly one.
+struct NumberPattern {
+    std::string prefix, suffix;
+    bool zeros = false;
+    int width = 0;
+    std::string name(std::size_t i) const {
+        std::string digits = std::to_string(i);
+        if (int(digits.size()) < width) digits.insert(0, std::size_t(width) - digits.size(), zeros ? '0' : ' ');
+        return prefix + digits + suffix;
+    }
+};
+
+std::optional<NumberPattern> numberPattern(const std::string& path) {
+    NumberPattern pattern;
+    bool found = false;
+    for (std::size_t i = 0; i < path.size(); ++i) {
+        std::string& out = found ? pattern.suffix : pattern.prefix;
+        if (path[i] != '%') {
+            out += path[i];
+            continue;
+        }
+        if (i + 1 < path.size() && path[i + 1] == '%') {
+            out += '%', ++i;
+            continue;
+        }
+        if (found) return std::nullopt;
+        std::size_t j = i + 1;
+        if (j < path.size() && path[j] == '0') pattern.zeros = true, ++j;
+        while (j < path.size() && std::isdigit(static_cast<unsigned char>(path[j])) && pattern.width < 100)
+            pattern.width = pattern.width * 10 + (path[j++] - '0');
+        if (j >= path.size() || path[j] != 'd') return std::nullopt;
+        found = true;
+        i = j;
+    }
+    if (!found) return std::nullopt;
+    return pattern;
+}
+
+bool isFile(const std::string& path) {
+    std::error_code error;
+    return std::filesystem::is_regular_file(path, error);
+}
+
+// Files numbered from 0 (or 1) on, to the first number missing; the time is the number.
+TimeSeries readNumbered(const std::string& path, const NumberPattern& pattern) {
+    std::size_t first = isFile(pattern.name(0)) ? 0 : 1;
+    if (!isFile(pattern.name(first)))
+        throw FormatError(path + ": no file matches the pattern: neither \"" + printable(pattern.name(0)) +
+                          "\" nor \"" + printable(pattern.name(1)) + "\" is a file");
+    TimeSeries series{path, {}};
+    for (std::size_t i = first; isFile(pattern.name(i)); ++i) {
+        if (series.steps.size() == kMaxSteps)
+            throw FormatError(path + ": more than " + std::to_string(kMaxSteps) + " numbered files");
+        series.steps.push_back(TimeStep{double(i), pattern.name(i)});
+    }
+    return series;
+}
+
 }  // namespace
 
 TimeSeries readTimeSeries(const std::string& path) {
+    if (!isFile(path))
+        if (const auto pattern = numberPattern(path)) return readNumbered(path, *pattern);
     const auto format = volumeFormatOf(path);
     if (format == VolumeFormat::VtkCollection) return readCollection(path);
     TimeSeries series{path, {}};
