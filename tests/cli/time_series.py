@@ -1,15 +1,17 @@
-"""Time series: a ParaView .pvd collection of VTK-written .vti files, a 4D NIfTI, numbered files.
+"""Time series: a .pvd collection of VTK-written .vti files, 4D NIfTI and NRRD, numbered files.
 
 Each step is a 64^3 gyroid plus a ramp along x that grows with the step, so that
 every step's surface differs. `isotrack info` must list the steps with their time
 values and files; `extract --time STEP` must export byte for byte the mesh that
 extracting that step's own file gives: the step's .vti for the collection, the 3D
 NIfTI of that volume (written by nibabel on its own) for the 4D one and for the
-series those 3D files make as a printf pattern ("three_%d.nii"). A step past
+series those 3D files make as a printf pattern ("three_%d.nii"), the 3D NRRD of
+that step for a NRRD with a fourth (time) axis, raw and gzip. A step past
 the end is one line naming the file.
 
 Usage: /usr/bin/python3 time_series.py ISOTRACK WORK_DIR  (exit 77 without VTK)
 """
+import gzip
 import json
 import os
 import shutil
@@ -118,6 +120,31 @@ for name in ("four.nii", "four.nii.gz"):
             failures.append(f"{name} --time {t}: the mesh differs from three_{t}.nii's")
     if mesh(name) != mesh("three_0.nii"):
         failures.append(f"{name}: without --time the mesh is not step 0's")
+
+# The same steps as one NRRD with a fourth (time) axis, raw and gzip, against the
+# 3D NRRD of each step; a component axis first is refused.
+def nrrd_head(sizes, extra, encoding):
+    return (f"NRRD0004\ntype: float\ndimension: {len(sizes)}\nsizes: {' '.join(map(str, sizes))}\n"
+            f"endian: little\nencoding: {encoding}\n{extra}\n").encode()
+
+
+stack = np.stack(steps).astype("<f4")  # [t, z, y, x]
+four_d = "kinds: domain domain domain time\nspace directions: (1,0,0) (0,1,0) (0,0,1) none\n"
+open("four.nrrd", "wb").write(nrrd_head((N, N, N, 5), four_d, "raw") + stack.tobytes())
+open("four_gz.nrrd", "wb").write(nrrd_head((N, N, N, 5), four_d, "gzip") + gzip.compress(stack.tobytes(), 1))
+open("vector.nrrd", "wb").write(nrrd_head((3, N, N, 5), "kinds: vector domain domain domain\n", "raw"))
+for t in range(5):
+    open(f"nrrd_{t}.nrrd", "wb").write(nrrd_head((N, N, N), "", "raw") + stack[t].tobytes())
+for name in ("four.nrrd", "four_gz.nrrd"):
+    out = run("info", "--volume", name, "--json")
+    if out is not None and [s["time"] for s in json.loads(out)["steps"]] != [0.0, 1.0, 2.0, 3.0, 4.0]:
+        failures.append(f"{name}: info does not list 5 steps at times 0..4")
+    for t in (0, 2, 4):
+        if mesh(name, "--time", str(t)) != mesh(f"nrrd_{t}.nrrd"):
+            failures.append(f"{name} --time {t}: the mesh differs from nrrd_{t}.nrrd's")
+done = subprocess.run([ISOTRACK, "extract", "--volume", "vector.nrrd"], capture_output=True, text=True)
+if done.returncode != 1 or 'field "kinds"' not in done.stderr or done.stderr.count("\n") != 1:
+    failures.append(f"vector.nrrd: exit {done.returncode}: {done.stderr.strip()}")
 
 # The 3D files as a numbered series: a printf pattern, steps from 0, time = number.
 out = run("info", "--volume", "three_%d.nii", "--json")

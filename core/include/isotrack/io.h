@@ -41,7 +41,12 @@ Volume loadVolume(const std::string& path);
 // from "spacings:" or the lengths of "space directions:", the direction from the
 // vectors themselves; origin from "space origin:". "space:" RAS or LAS is turned
 // into LPS; LPS, a space without anatomical meaning, or none is taken as given.
-Volume loadNrrd(const std::string& path);
+// "dimension: 4" is a 3D time series, the time axis last (kinds, when given:
+// three domain or space, then time, list or domain; "space directions" ends in
+// none): `step` picks the 3D volume, the t-th after the data's start.
+Volume loadNrrd(const std::string& path, std::size_t step = 0);
+// The fourth axis's size, 1 for a 3D file.
+std::size_t nrrdSteps(const std::string& path);
 
 // Attached header, raw, little endian; keeps spacing and origin exactly. A volume
 // with a direction other than the identity is written with "space:

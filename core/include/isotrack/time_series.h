@@ -4,7 +4,8 @@
 //
 // A ParaView collection (.pvd: <Collection><DataSet timestep=".." file=".."/>)
 // has one step per DataSet, its file relative to the .pvd, in the order of their
-// time values; a 4D NIfTI has dim[4] steps (loadNifti). A path that is not a file
+// time values; a 4D NIfTI has dim[4] steps (loadNifti), a 4D NRRD its last
+// axis's size (loadNrrd, each at its index as time). A path that is not a file
 // and holds one printf integer ("step_%04d.nrrd"; "%%" is a '%') names numbered
 // files: from 0 (or 1 when there is no 0) to the first number missing, each at
 // its number as time. Any other volume file is one step at time 0, the file itself.

@@ -187,6 +187,9 @@ TimeSeries readTimeSeries(const std::string& path) {
     TimeSeries series{path, {}};
     if (format == VolumeFormat::Nifti) {
         for (const double time : niftiStepTimes(path)) series.steps.push_back(TimeStep{time, path});
+    } else if (format == VolumeFormat::Nrrd) {
+        const std::size_t steps = nrrdSteps(path);
+        for (std::size_t t = 0; t < steps; ++t) series.steps.push_back(TimeStep{double(t), path});
     } else {
         series.steps.push_back(TimeStep{0.0, path});
     }
@@ -203,6 +206,7 @@ Volume loadTimeStep(const TimeSeries& series, std::size_t step, const std::strin
     if (!array.empty() && format != VolumeFormat::VtkImageData)
         throw InputError(file + ": an array name (--array) is only for .vti files");
     if (format == VolumeFormat::Nifti && file == series.path) return loadNifti(file, step);
+    if (format == VolumeFormat::Nrrd && file == series.path) return loadNrrd(file, step);
     if (file == series.path) return format == VolumeFormat::VtkImageData ? loadVti(file, array) : loadVolume(file);
     // A collection's step: its message names the collection too.
     const std::string where = series.path + ": step " + std::to_string(step) + ": ";
