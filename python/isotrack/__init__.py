@@ -318,10 +318,10 @@ def steps(path):
 
     A .pvd collection has one step per DataSet, in the order of their timestep
     values; a 4D NIfTI one per 3D volume, at toffset + t * pixdim[4] (t when
-    pixdim[4] is 0); a 4D NRRD one per index of its last (time) axis; numbered files, given as a printf pattern such as
-    "step_%04d.nrrd", one per number from 0 (or 1), at that number; any other
-    volume file one step at time 0. load(path,
-    time=i) reads step i.
+    pixdim[4] is 0); a 4D NRRD one per index t of its last (time) axis, at t;
+    numbered files, given as a printf pattern such as "step_%04d.nrrd", one per
+    number from 0 (or 1), at that number; any other volume file one step at
+    time 0. load(path, time=i) reads step i.
 
     Raises:
         OSError: the file cannot be read or is malformed.
