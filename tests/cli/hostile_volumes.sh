@@ -71,6 +71,8 @@ open("bad_base64.vti", "wb").write(vti('<DataArray type="Int16" Name="s" format=
 block = zlib.compress(samples)
 lying = struct.pack("<4I", 1, 1 << 30, 0, len(block)) + block
 open("lying_zlib.vti", "wb").write(vti(appended, appended=lying, compressor="vtkZLibDataCompressor"))
+short = struct.pack("<4I", 1, 32768, 48, len(block)) + block
+open("cut_zlib.vti", "wb").write(vti(appended, appended=short, compressor="vtkZLibDataCompressor")[:-50])
 open("huge_extent.vti", "wb").write(vti(appended, extent="0 999999 0 999999 0 999999",
                                         appended=struct.pack("<I", 48) + samples))
 open("nested.vti", "wb").write(vti(appended, nest="<a>" * 100 + "</a>" * 100))
@@ -132,7 +134,7 @@ for case in "truncated.dcm|declares 96 bytes, 34 remain" "no_pixels.dcm|no pixel
 done
 for case in "truncated.vti|truncated" "bad_base64.vti|not valid base64" \
             "lying_zlib.vti|compression header says 1 blocks of 1073741824 bytes" \
-            "huge_extent.vti|WholeExtent" "nested.vti|nested deeper than 8" \
+            "cut_zlib.vti|truncated" "huge_extent.vti|WholeExtent" "nested.vti|nested deeper than 8" \
             "no_array.vti|no one-component PointData array" "lz4.vti|vtkLZ4DataCompressor" \
             "missing_step.pvd|cannot read" "self.pvd|is another .pvd" "bad_time.pvd|not a finite number" \
             "empty.pvd|no DataSet" "nested.pvd|nested deeper than 8"; do

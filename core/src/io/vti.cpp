@@ -214,6 +214,7 @@ private:
     Volume readAscii() const;
     Volume readBinary(const std::vector<unsigned char>& bytes) const;
     Volume readAppended() const;
+    std::vector<unsigned char> compressedRaw(std::FILE* f, std::uint64_t left) const;
     std::uint64_t word(const unsigned char* p) const;
     std::string arrayField() const { return "DataArray " + printable(head_.chosen->name); }
 
@@ -401,6 +402,28 @@ Volume VtiReader::readBinary(const std::vector<unsigned char>& bytes) const {
     return volume;
 }
 
+// Appended raw zlib blocks: the header, then only as many bytes as its block sizes sum to.
+std::vector<unsigned char> VtiReader::compressedRaw(std::FILE* f, std::uint64_t left) const {
+    const std::uint64_t w = wordBytes_;
+    std::vector<unsigned char> bytes(std::size_t(std::min<std::uint64_t>(left, 3 * w)));
+    bytes.resize(std::fread(bytes.data(), 1, bytes.size(), f));
+    if (bytes.size() < 3 * w) return bytes;  // readBinary says what is missing
+    const std::uint64_t count = word(bytes.data());
+    if (count > (left - 3 * w) / w) return bytes;
+    bytes.resize(std::size_t((3 + count) * w));
+    bytes.resize(3 * w + std::fread(bytes.data() + 3 * w, 1, std::size_t(count * w), f));
+    if (bytes.size() < (3 + count) * w) return bytes;
+    std::uint64_t total = (3 + count) * w;
+    for (std::uint64_t b = 0; b < count; ++b) {
+        total += word(bytes.data() + (3 + b) * w);
+        if (total > left) return bytes;
+    }
+    const std::size_t header = bytes.size();
+    bytes.resize(std::size_t(total));
+    bytes.resize(header + std::fread(bytes.data() + header, 1, bytes.size() - header, f));
+    return bytes;
+}
+
 Volume VtiReader::readAppended() const {
     const std::string field = arrayField();
     const auto offset = parseInteger(head_.chosen->offset);
@@ -435,11 +458,12 @@ Volume VtiReader::readAppended() const {
         volume.setDirection(geometry_.direction);
         return volume;
     }
-    // Compressed or base64: the rest of the file, which the sizes in the header then bound.
-    std::vector<unsigned char> rest(std::size_t(fileSize_ - at));
     std::fseek(f.get(), long(at), SEEK_SET);
+    const std::uint64_t left = fileSize_ - at;
+    if (head_.appendedEncoding == "raw") return readBinary(compressedRaw(f.get(), left));
+    // Base64: the rest of the file, which the sizes in the header then bound.
+    std::vector<unsigned char> rest(static_cast<std::size_t>(left));
     rest.resize(std::fread(rest.data(), 1, rest.size(), f.get()));
-    if (head_.appendedEncoding == "raw") return readBinary(rest);
     if (head_.appendedEncoding != "base64")
         fail("AppendedData", "encoding \"" + printable(head_.appendedEncoding) + "\" is not raw or base64");
     std::size_t end = 0;
