@@ -16,6 +16,7 @@
 #include <zlib.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -271,7 +272,10 @@ void VtiReader::readGeometry() {
     Dims& dims = geometry_.dims;
     for (int a = 0; a < 3; ++a) {
         const double lo = extent[2 * a], hi = extent[2 * a + 1];
-        if (lo != double((long long)lo) || hi != double((long long)hi) || hi < lo || hi - lo + 1 > kMaxDimension)
+        // Whole numbers within an int's range (a cast of a larger one is undefined), then the span.
+        const bool whole = std::fabs(lo) < 2147483648.0 && std::fabs(hi) < 2147483648.0 && lo == std::floor(lo) &&
+                           hi == std::floor(hi);
+        if (!whole || hi < lo || hi - lo + 1 > kMaxDimension)
             fail("WholeExtent", "expected 3 integer ranges of at most " + std::to_string(kMaxDimension) +
                                     " points, got \"" + printable(*head_.wholeExtent) + "\"");
         dims[a] = int(hi - lo + 1);
