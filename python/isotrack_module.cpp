@@ -36,6 +36,7 @@
 #include "isotrack/orientation.h"
 #include "isotrack/tables.h"
 #include "isotrack/threads.h"
+#include "isotrack/time_series.h"
 #include "isotrack/tracking.h"
 #include "isotrack/volume.h"
 #include "mesh_output.h"
@@ -253,12 +254,13 @@ py::object trackPy(const py::array& array, double level, const Geometry& geometr
     return surfaceList(std::move(surfaces), geometry.zyx())[py::int_(0)];
 }
 
-// (samples, spacing, origin, direction columns), isotrack's (x, y, z) and LPS.
-py::tuple loadPy(const std::string& path) {
+// (samples, spacing, origin, direction columns), isotrack's (x, y, z) and LPS, of
+// time step `time` (0 for a single volume) and, for a .vti, PointData `array`.
+py::tuple loadPy(const std::string& path, std::size_t time, const std::string& array) {
     Volume volume;
     {
         py::gil_scoped_release unlocked;
-        volume = loadVolume(path);
+        volume = loadTimeStep(readTimeSeries(path), time, array);
     }
     const Dims dims = volume.dims();
     const Vec3d spacing = volume.spacing(), origin = volume.origin();
@@ -570,7 +572,15 @@ PYBIND11_MODULE(_isotrack, m) {
     m.def("edge_ids", &edgeIdsPy, py::arg("edges"), py::arg("shape"));
     m.def("edges_of_ids", &edgesOfIdsPy, py::arg("ids"), py::arg("shape"));
     m.def("nearest_edge", &nearestEdgePy, py::arg("samples"), py::arg("level"), py::arg("geometry"), py::arg("point"));
-    m.def("load", &loadPy, py::arg("path"));
+    m.def("load", &loadPy, py::arg("path"), py::arg("time"), py::arg("array"));
+    m.def(
+        "steps",
+        [](const std::string& path) {
+            std::vector<std::pair<double, std::string>> steps;
+            for (const TimeStep& step : readTimeSeries(path).steps) steps.emplace_back(step.time, step.file);
+            return steps;
+        },
+        py::arg("path"));
     m.def("frame_affine", &frameAffinePy, py::arg("spacing"), py::arg("origin"), py::arg("direction"),
           py::arg("frame"));
     m.def("write_ply", &writePy<writePlyMesh>, py::arg("surface"), py::arg("path"));

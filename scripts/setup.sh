@@ -6,7 +6,7 @@ repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
 packages=(cmake g++ make pkg-config libglfw3-dev libglm-dev libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri catch2 libstb-dev zlib1g-dev
           xvfb xauth libcli11-dev nlohmann-json3-dev libbenchmark-dev invesalius-examples
-          clang clang-format-14 libclang-rt-14-dev libgdcm-dev python3-pydicom libmeshoptimizer-dev
+          clang clang-format-14 libclang-rt-14-dev libgdcm-dev libexpat1-dev python3-pydicom libmeshoptimizer-dev
           pybind11-dev python3-dev python3-numpy python3-pytest python3-skimage python3-nibabel
           python3-scipy python3-dask python3-distributed python3-zarr)
 missing=()

@@ -19,6 +19,7 @@
 #include "isotrack/io.h"
 #include "isotrack/isovalue.h"
 #include "isotrack/orientation.h"
+#include "isotrack/time_series.h"
 #include "isotrack/volume.h"
 
 namespace isotrack::cli {
@@ -175,6 +176,32 @@ void printSuggestedIsovalue(const std::optional<IsovalueSuggestion>& suggestion)
         std::printf("  suggested isovalue: %.10g (%s)\n", suggestion->value, isovalueRuleName(suggestion->rule));
 }
 
+// A .pvd collection, a 4D NIfTI or numbered files: its steps; nothing for one volume.
+std::optional<TimeSeries> timeSeries(const InfoOptions& options) {
+    if (!options.raw.dims.empty()) return std::nullopt;
+    const auto format = volumeFormatOf(options.path);
+    if (format == VolumeFormat::Dicom) return std::nullopt;
+    TimeSeries series = readTimeSeries(options.path);
+    const bool numbered = series.steps.front().file != options.path;
+    if (format != VolumeFormat::VtkCollection && !numbered && series.steps.size() == 1) return std::nullopt;
+    return series;
+}
+
+void addStepsJson(const TimeSeries& series, std::size_t shown, nlohmann::json& j) {
+    nlohmann::json steps = nlohmann::json::array();
+    for (std::size_t i = 0; i < series.steps.size(); ++i)
+        steps.push_back({{"index", i}, {"time", series.steps[i].time}, {"file", series.steps[i].file}});
+    j["steps"] = steps;
+    j["time_step"] = shown;
+}
+
+void printSteps(const TimeSeries& series, std::size_t shown) {
+    std::printf("  steps     %zu time steps (shown: step %zu; --time STEP reads another)\n", series.steps.size(),
+                shown);
+    for (std::size_t i = 0; i < series.steps.size(); ++i)
+        std::printf("  %6zu    time %.10g  %s\n", i, series.steps[i].time, series.steps[i].file.c_str());
+}
+
 int runInfo(const InfoOptions& options) {
     Volume volume;
     std::optional<DicomVolume> dicom;
@@ -191,6 +218,7 @@ int runInfo(const InfoOptions& options) {
     } else {
         volume = loadVolumeFile(options.path, options.raw);
     }
+    const std::optional<TimeSeries> series = timeSeries(options);
     const bool readValues = options.values || !volume.mappedFile() || volume.byteSize() <= kMappedValueBytes;
     Histogram h;
     if (readValues)
@@ -206,11 +234,13 @@ int runInfo(const InfoOptions& options) {
             j["series"] = seriesJson(dicom->contents, dicom->series);
             addSkippedJson(j, dicom->contents);
         }
+        if (series) addStepsJson(*series, options.raw.time, j);
         std::printf("%s\n", j.dump().c_str());
     } else {
         printInfo(options, volume, h);
         printSuggestedIsovalue(suggestion);
         if (dicom) printSeries(dicom->contents, dicom->series);
+        if (series) printSteps(*series, options.raw.time);
     }
     return 0;
 }
@@ -222,7 +252,8 @@ RunCommand addInfoCommand(CLI::App& app) {
     CLI::App* command = app.add_subcommand("info", "Describe a volume file: format, size, type, geometry, values");
     auto* volume = command
                        ->add_option("--volume", options->path,
-                                    "Volume file (.nrrd .nhdr .nii .nii.gz .mhd .mha .vtk .dcm, a DICOM folder or "
+                                    "Volume file (.nrrd .nhdr .nii .nii.gz .mhd .mha .vtk .vti .pvd .dcm, a DICOM "
+                                    "folder or "
                                     "DICOMDIR; raw with --dims)")
                        ->required();
     addRawOptions(*command, options->raw, volume);

@@ -11,6 +11,7 @@
 #include "isotrack/fields.h"
 #include "isotrack/io.h"
 #include "isotrack/source.h"
+#include "isotrack/time_series.h"
 
 namespace isotrack::cli {
 
@@ -55,6 +56,17 @@ void addRawOptions(CLI::App& command, RawOptions& raw, CLI::Option* volume) {
                     "the largest that forms a volume)")
         ->needs(volume)
         ->excludes(dims);
+    command
+        .add_option("--array", raw.array,
+                    "VTK XML ImageData (.vti): the PointData array to read, by Name (default: the first with one "
+                    "component)")
+        ->needs(volume)
+        ->excludes(dims);
+    command
+        .add_option("--time", raw.time,
+                    "A time series (.pvd collection, 4D NIfTI): the step to read, by its index in `info` (default 0)")
+        ->needs(volume)
+        ->excludes(dims);
     dims->needs(volume);
     dims->needs(type);
     type->needs(dims);
@@ -65,9 +77,9 @@ void addRawOptions(CLI::App& command, RawOptions& raw, CLI::Option* volume) {
 void addSourceOptions(CLI::App& command, SourceOptions& options) {
     std::string names;
     for (const FieldInfo& field : builtinFields()) names += std::string(names.empty() ? "" : ", ") + field.name;
-    auto* volume = command.add_option(
-        "--volume", options.volumePath,
-        "Volume file (.nrrd .nhdr .nii .nii.gz .mhd .mha .vtk .dcm, a DICOM folder or DICOMDIR; raw with --dims)");
+    auto* volume = command.add_option("--volume", options.volumePath,
+                                      "Volume file (.nrrd .nhdr .nii .nii.gz .mhd .mha .vtk .vti .pvd .dcm, a DICOM "
+                                      "folder or DICOMDIR; raw with --dims)");
     auto* field = command.add_option("--field", options.fieldSpec, "Built-in field NAME[:N] (" + names + ")");
     volume->excludes(field);
     field->excludes(volume);
@@ -93,7 +105,7 @@ RawLayout rawLayout(const RawOptions& raw) {
 
 Volume loadVolumeFile(const std::string& path, const RawOptions& raw) {
     if (!raw.series.empty()) return loadDicom(path, raw.series);
-    if (raw.dims.empty()) return loadVolume(path);
+    if (raw.dims.empty()) return loadTimeStep(readTimeSeries(path), raw.time, raw.array);
     return loadRaw(path, rawLayout(raw));
 }
 
@@ -115,6 +127,8 @@ Source loadSource(const SourceOptions& options) {
         spec.text = options.volumePath;
         if (!options.raw.dims.empty()) spec.raw = rawLayout(options.raw);
         spec.series = options.raw.series;
+        spec.array = options.raw.array;
+        spec.time = options.raw.time;
     }
     LoadedSource loaded;
     try {

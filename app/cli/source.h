@@ -26,7 +26,9 @@ struct RawOptions {
     std::string type;
     std::vector<double> spacing;
     std::string endian = "little";
-    std::string series;  // DICOM: --series UID|N, empty for the largest that forms a volume
+    std::string series;    // DICOM: --series UID|N, empty for the largest that forms a volume
+    std::string array;     // .vti: --array NAME, empty for the first one-component PointData array
+    std::size_t time = 0;  // .pvd, 4D NIfTI: --time STEP, the step's index
 };
 
 struct SourceOptions {

@@ -235,7 +235,8 @@ int runViewer(const ViewerOptions& options) {
         if (file) std::fclose(file);
         if (!options.raw && !volumeFormatOf(options.volumePath)) {
             throw InputError("--volume " + options.volumePath +
-                             ": unknown volume format (the viewer reads .nrrd .nhdr .nii .nii.gz .mhd .mha .vtk, "
+                             ": unknown volume format (the viewer reads .nrrd .nhdr .nii .nii.gz .mhd .mha .vtk .vti, "
+                             ".pvd (its first step), "
                              "DICOM: .dcm, a folder or DICOMDIR; or raw samples with --dims and --type)");
         }
     }

@@ -14,7 +14,8 @@ Two kinds of input, two kinds of coordinates:
 
 Functions: marching_cubes (a drop-in for skimage.measure.marching_cubes),
 track (the one surface through a seed), surfaces (every connected surface),
-load (NRRD, NIfTI, MetaImage, VTK, DICOM) and write_ply, write_obj, write_stl.
+load (NRRD, NIfTI, MetaImage, VTK, DICOM; time steps of .pvd and 4D NIfTI, listed by
+steps) and write_ply, write_obj, write_stl.
 Bad input raises ValueError (TypeError for an argument of the wrong kind);
 unreadable files and write failures raise OSError.
 """
@@ -30,7 +31,7 @@ from . import _isotrack
 
 Surface.__module__ = "isotrack"
 
-__all__ = ["Volume", "Surface", "marching_cubes", "track", "surfaces", "load", "open", "write_ply", "write_obj", "write_stl"]
+__all__ = ["Volume", "Surface", "marching_cubes", "track", "surfaces", "load", "open", "steps", "write_ply", "write_obj", "write_stl"]
 
 _FRAMES = _isotrack.FRAMES  # core's names (isotrack/orientation.h, tables.h, extract.h)
 _TABLES = _isotrack.TABLES
@@ -329,11 +330,12 @@ def surfaces(
 surfaces.__doc__ += _PROCESSING_DOC
 
 
-def load(path, frame="lps"):
+def load(path, frame="lps", *, time=0, array=None):
     """Reads a volume with isotrack's loaders, with its geometry.
 
-    Formats by extension: .nrrd .nhdr, .nii .nii.gz, .mhd .mha, .vtk, and DICOM
-    (a folder, a DICOMDIR or a multi-frame file), as the command line reads them.
+    Formats by extension: .nrrd .nhdr, .nii .nii.gz, .mhd .mha, .vtk, .vti, a
+    .pvd collection, and DICOM (a folder, a DICOMDIR or a multi-frame file), as
+    the command line reads them.
     Uncompressed samples in the machine's byte order (raw NRRD, .nii, MetaImage
     with a raw data file) are mapped, not read: see open().
 
@@ -342,6 +344,10 @@ def load(path, frame="lps"):
         frame: "lps" (DICOM and ITK's world, isotrack's default), "ras"
             (nibabel's and NIfTI's), or "voxel" (sample indices): the
             coordinates of the Volume's affine and of every mesh made from it.
+        time: a time series (.pvd collection, 4D NIfTI): the step to read, by
+            its index in steps(path); 0, the first, by default.
+        array: a .vti file: the PointData array to read, by name (default: the
+            first with one component).
 
     Returns:
         A Volume: samples (no copy), spacing, origin, direction, affine, frame.
@@ -357,11 +363,30 @@ def load(path, frame="lps"):
         raise TypeError(f"path: expected a path, got {_inputs.shown(path)}") from None
     if not isinstance(name, str):
         name = os.fsdecode(name)
-    samples, spacing, origin, direction = _isotrack.load(name)
+    time = _inputs.integer(time, "time", 0, 2**63 - 1)
+    if array is not None and not isinstance(array, str):
+        raise TypeError(f"array: expected a name, got {_inputs.shown(array)}")
+    samples, spacing, origin, direction = _isotrack.load(name, time, array or "")
     return Volume(samples, (spacing, origin, direction), frame, name)
 
 
-def open(path, frame="lps"):  # isotrack.open; this module never calls the builtin
+def steps(path):
+    """The time values of a time series' steps, step 0 first.
+
+    A .pvd collection has one step per DataSet, in the order of their timestep
+    values; a 4D NIfTI one per 3D volume, at toffset + t * pixdim[4] (t when
+    pixdim[4] is 0); a 4D NRRD one per index t of its last (time) axis, at t;
+    numbered files, given as a printf pattern such as "step_%04d.nrrd", one per
+    number from 0 (or 1), at that number; any other volume file one step at
+    time 0. load(path, time=i) reads step i.
+
+    Raises:
+        OSError: the file cannot be read or is malformed.
+    """
+    return [time for time, _ in _isotrack.steps(os.fspath(path))]
+
+
+def open(path, frame="lps", *, time=0, array=None):  # isotrack.open; this module never calls the builtin
     """A volume whose samples stay in their file: nothing is read until used.
 
     The samples of uncompressed files in the machine's byte order (raw NRRD,
@@ -372,7 +397,7 @@ def open(path, frame="lps"):  # isotrack.open; this module never calls the built
     they would not fit. A file truncated or removed while in use makes the next
     extraction raise OSError naming it. Otherwise the same as load().
     """
-    return load(path, frame)
+    return load(path, frame, time=time, array=array)
 
 
 def _writer(write, what):

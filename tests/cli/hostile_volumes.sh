@@ -52,6 +52,43 @@ open("mixed_series/a.dcm", "wb").write(good)
 position = b"1\\2\\3"
 open("mixed_series/b.dcm", "wb").write(bigger.replace(position, b"1\\2\\4"))
 PY
+# VTK XML ImageData: truncated raw data, bad base64, a zlib header whose sizes lie,
+# a huge WholeExtent, a Piece file with elements nested without end, an array
+# that is not there, and an unknown compressor.
+/usr/bin/python3 - <<'PY'
+import base64, struct, zlib
+def vti(data_array, extent="0 3 0 2 0 1", appended=b"", compressor="", nest=""):
+    head = ('<?xml version="1.0"?>\n<VTKFile type="ImageData" version="1.0" byte_order="LittleEndian" '
+            'header_type="UInt32"' + (f' compressor="{compressor}"' if compressor else "") + '>\n'
+            f'<ImageData WholeExtent="{extent}" Origin="0 0 0" Spacing="1 1 1">\n'
+            f'<Piece Extent="{extent}">{nest}<PointData>{data_array}</PointData></Piece>\n</ImageData>\n')
+    tail = (b'<AppendedData encoding="raw">\n_' + appended + b'\n</AppendedData>\n' if appended else b"")
+    return head.encode() + tail + b"</VTKFile>\n"
+samples = struct.pack("<24h", *range(24))
+appended = '<DataArray type="Int16" Name="s" format="appended" offset="0"/>'
+open("truncated.vti", "wb").write(vti(appended, appended=struct.pack("<I", 48) + samples[:30])[:-40])
+open("bad_base64.vti", "wb").write(vti('<DataArray type="Int16" Name="s" format="binary">AAAA*!!!</DataArray>'))
+block = zlib.compress(samples)
+lying = struct.pack("<4I", 1, 1 << 30, 0, len(block)) + block
+open("lying_zlib.vti", "wb").write(vti(appended, appended=lying, compressor="vtkZLibDataCompressor"))
+short = struct.pack("<4I", 1, 32768, 48, len(block)) + block
+open("cut_zlib.vti", "wb").write(vti(appended, appended=short, compressor="vtkZLibDataCompressor")[:-50])
+open("huge_extent.vti", "wb").write(vti(appended, extent="0 999999 0 999999 0 999999",
+                                        appended=struct.pack("<I", 48) + samples))
+open("nested.vti", "wb").write(vti(appended, nest="<a>" * 100 + "</a>" * 100))
+open("no_array.vti", "wb").write(vti('<DataArray type="Float32" Name="v" NumberOfComponents="3" format="ascii">'
+                                      '</DataArray>'))
+open("lz4.vti", "wb").write(vti(appended, appended=lying, compressor="vtkLZ4DataCompressor"))
+# ParaView collections: a missing step file, a .pvd naming a .pvd (itself), a bad
+# timestep, no DataSet, and elements nested without end.
+def pvd(body):
+    return f'<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1"><Collection>{body}</Collection></VTKFile>\n'
+open("missing_step.pvd", "w").write(pvd('<DataSet timestep="0" file="gone.vti"/>'))
+open("self.pvd", "w").write(pvd('<DataSet timestep="0" file="self.pvd"/>'))
+open("bad_time.pvd", "w").write(pvd('<DataSet timestep="soon" file="truncated.vti"/>'))
+open("empty.pvd", "w").write(pvd(""))
+open("nested.pvd", "w").write(pvd("<a>" * 100 + "</a>" * 100))
+PY
 
 failures=0
 check() {  # check FILE [extra isotrack args...]
@@ -79,7 +116,8 @@ check() {  # check FILE [extra isotrack args...]
 }
 
 for f in truncated.nrrd zero_dims.nrrd absurd.nrrd unknown_type.nrrd corrupt_gzip.nrrd missing_data.nhdr \
-         random.nii random.nii.gz short.mha truncated_ascii.vtk all_nan.nrrd folder.nrrd scan.dcm absent.vtk; do
+         random.nii random.nii.gz short.mha truncated_ascii.vtk all_nan.nrrd folder.nrrd scan.dcm absent.vtk \
+         absent.vti; do
     check "$f"
 done
 # The DICOM cases also say what is wrong.
@@ -87,6 +125,19 @@ for case in "truncated.dcm|declares 96 bytes, 34 remain" "no_pixels.dcm|no pixel
             "lying_length.dcm|declares 2147483632 bytes" "absurd.dcm|65535 x 65535 x 1 samples need" \
             "mixed_series|mixed sizes in one series" \
             "implicit_meta_group.dcm|the DICOM library failed on it (it crashed: Aborted)"; do
+    expect=${case#*|}
+    check "${case%%|*}"
+    if ! grep -q "$expect" stderr.txt; then
+        echo "FAIL ${case%%|*}: stderr lacks \"$expect\": $(cat stderr.txt)"
+        failures=$((failures + 1))
+    fi
+done
+for case in "truncated.vti|truncated" "bad_base64.vti|not valid base64" \
+            "lying_zlib.vti|compression header says 1 blocks of 1073741824 bytes" \
+            "cut_zlib.vti|truncated" "huge_extent.vti|WholeExtent" "nested.vti|nested deeper than 8" \
+            "no_array.vti|no one-component PointData array" "lz4.vti|vtkLZ4DataCompressor" \
+            "missing_step.pvd|cannot read" "self.pvd|is another .pvd" "bad_time.pvd|not a finite number" \
+            "empty.pvd|no DataSet" "nested.pvd|nested deeper than 8"; do
     expect=${case#*|}
     check "${case%%|*}"
     if ! grep -q "$expect" stderr.txt; then

@@ -18,14 +18,19 @@ struct VolumeSource {
     std::string text;              // Field: "NAME[:N]" (parseFieldSpec); File: its path
     std::optional<RawLayout> raw;  // File: read as raw samples in this layout, not by its extension
     std::string series;            // File: the DICOM series to read (UID or number), not the largest
+    std::string array;             // File (.vti): the PointData array to read, not the first scalar one
+    std::size_t time = 0;          // File (.pvd, 4D NIfTI): the time step to read (isotrack/time_series.h)
 
-    static VolumeSource field(std::string spec) { return VolumeSource{Kind::Field, std::move(spec), std::nullopt, ""}; }
-    static VolumeSource file(std::string path, std::optional<RawLayout> raw = std::nullopt) {
-        return VolumeSource{Kind::File, std::move(path), std::move(raw), ""};
+    static VolumeSource field(std::string spec) {
+        return VolumeSource{Kind::Field, std::move(spec), std::nullopt, "", "", 0};
     }
-    // The same data: kind, text, series, and whether (not how) it is read as raw samples.
+    static VolumeSource file(std::string path, std::optional<RawLayout> raw = std::nullopt) {
+        return VolumeSource{Kind::File, std::move(path), std::move(raw), "", "", 0};
+    }
+    // The same data: kind, text, series, array, time, and whether (not how) it is read as raw samples.
     friend bool operator==(const VolumeSource& a, const VolumeSource& b) {
-        return a.kind == b.kind && a.text == b.text && a.raw.has_value() == b.raw.has_value() && a.series == b.series;
+        return a.kind == b.kind && a.text == b.text && a.raw.has_value() == b.raw.has_value() && a.series == b.series &&
+               a.array == b.array && a.time == b.time;
     }
     friend bool operator!=(const VolumeSource& a, const VolumeSource& b) { return !(a == b); }
 };

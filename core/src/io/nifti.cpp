@@ -8,6 +8,7 @@
 #include <cstring>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "io_common.h"
 #include "isotrack/errors.h"
@@ -24,8 +25,8 @@ constexpr std::size_t kHeaderBytes = 348;
 
 // Offsets into the header, from nifti1.h.
 constexpr std::size_t kSizeofHdr = 0, kDim = 40, kDatatype = 70, kBitpix = 72, kPixdim = 76, kVoxOffset = 108,
-                      kSclSlope = 112, kSclInter = 116, kQformCode = 252, kSformCode = 254, kQuatern = 256,
-                      kQoffset = 268, kSrow = 280, kMagic = 344;
+                      kSclSlope = 112, kSclInter = 116, kToffset = 136, kQformCode = 252, kSformCode = 254,
+                      kQuatern = 256, kQoffset = 268, kSrow = 280, kMagic = 344;
 
 struct Datatype {
     int code;
@@ -91,7 +92,12 @@ std::string matrixText(const Mat3d& columns) {
 class NiftiReader : public VolumeReader {
 public:
     NiftiReader(std::string path, const unsigned char* bytes);
-    Volume read(bool gzip);
+    Volume read(bool gzip, std::size_t step);
+    // dim[4] when dim[0] >= 4, else 1; step t is at toffset + t * pixdim[4] (t when pixdim[4] is 0).
+    std::size_t steps() const { return steps_; }
+    double stepTime(std::size_t step) const {
+        return stepOffset_ + double(step) * (stepSize_ != 0.0 ? stepSize_ : 1.0);
+    }
 
 private:
     void readDims(const HeaderBytes& h);
@@ -102,6 +108,8 @@ private:
 
     SampleData data_;
     double slope_ = 0.0, inter_ = 0.0;
+    std::size_t steps_ = 1;
+    double stepSize_ = 0.0, stepOffset_ = 0.0;
 };
 
 NiftiReader::NiftiReader(std::string path, const unsigned char* bytes) : VolumeReader(std::move(path), "dim") {
@@ -122,6 +130,12 @@ NiftiReader::NiftiReader(std::string path, const unsigned char* bytes) : VolumeR
     if (magic != std::string("n+1\0", 4)) fail("magic", "expected \"n+1\", got \"" + printable(magic) + "\"");
 
     readDims(h);
+    if (steps_ > 1) {
+        stepSize_ = double(h.f32(kPixdim + 16));
+        stepOffset_ = double(h.f32(kToffset));
+        if (!std::isfinite(stepSize_)) stepSize_ = 0.0;
+        if (!std::isfinite(stepOffset_)) stepOffset_ = 0.0;
+    }
     readType(h);
     readGeometry(h);
     readScaling(h);
@@ -142,8 +156,13 @@ void NiftiReader::readDims(const HeaderBytes& h) {
         text += (i ? " " : "") + std::to_string(dim[i]);
     }
     if (dim[0] < 3 || dim[0] > 7) fail("dim", "expected 3 dimensions (dim[0] 3..7), got dim = " + text);
-    for (int i = 4; i <= dim[0]; ++i)
-        if (dim[i] != 1) fail("dim", "only 3D volumes are supported, got dim = " + text);
+    // A fourth dimension is time: each step is one 3D volume after the other.
+    if (dim[0] >= 4) {
+        if (dim[4] < 1) fail("dim", "dimensions must be positive, got dim = " + text);
+        steps_ = std::size_t(dim[4]);
+    }
+    for (int i = 5; i <= dim[0]; ++i)
+        if (dim[i] != 1) fail("dim", "only 3D volumes and 3D time series are supported, got dim = " + text);
     for (std::size_t a = 0; a < 3; ++a) {
         if (dim[a + 1] < 1) fail("dim", "dimensions must be positive, got dim = " + text);
         geometry_.dims[a] = dim[a + 1];
@@ -231,7 +250,14 @@ void scaleInto(const T* in, float* out, std::size_t n, double slope, double inte
     for (std::size_t k = 0; k < n; ++k) out[k] = static_cast<float>(slope * double(in[k]) + inter);
 }
 
-Volume NiftiReader::read(bool gzip) {
+Volume NiftiReader::read(bool gzip, std::size_t step) {
+    if (step >= steps_)
+        fail("dim", "no time step " + std::to_string(step) + ": the file has " + std::to_string(steps_) +
+                        (steps_ == 1 ? " step (0)" : " steps (0.." + std::to_string(steps_ - 1) + ")"));
+    // Step t follows t whole 3D volumes; sampleBytes has checked each against the limit.
+    const std::uint64_t stepBytes = sampleBytes(geometry_);
+    if (std::uint64_t(step) > (std::uint64_t(1) << 62) / stepBytes) fail("dim", "time step out of range");
+    data_.skip += std::uint64_t(step) * stepBytes;
     if (gzip) {
         data_.compression = Compression::Gzip;
     } else if (const std::uint64_t size = fileSizeOf(path(), path()); data_.skip > size) {
@@ -254,11 +280,21 @@ Volume NiftiReader::read(bool gzip) {
 
 }  // namespace
 
-Volume loadNifti(const std::string& path) {
+Volume loadNifti(const std::string& path, std::size_t step) {
     const bool gzip = lowerExtension(path) == ".nii.gz";
     unsigned char bytes[kHeaderBytes];
     readHeaderBytes(path, gzip, bytes);
-    return NiftiReader(path, bytes).read(gzip);
+    return NiftiReader(path, bytes).read(gzip, step);
+}
+
+std::vector<double> niftiStepTimes(const std::string& path) {
+    const bool gzip = lowerExtension(path) == ".nii.gz";
+    unsigned char bytes[kHeaderBytes];
+    readHeaderBytes(path, gzip, bytes);
+    const NiftiReader reader(path, bytes);
+    std::vector<double> times;
+    for (std::size_t t = 0; t < reader.steps(); ++t) times.push_back(reader.stepTime(t));
+    return times;
 }
 
 }  // namespace isotrack

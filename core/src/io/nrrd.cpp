@@ -167,7 +167,12 @@ class NrrdReader : public VolumeReader {
 public:
     NrrdReader(std::string path, Header header) : VolumeReader(std::move(path), "sizes"), header_(std::move(header)) {}
 
-    Volume read(std::FILE* headerFile);
+    Volume read(std::FILE* headerFile, std::size_t step);
+    // The fourth axis's size for "dimension: 4", else 1.
+    std::size_t steps() {
+        parseGeometry();
+        return steps_;
+    }
 
 private:
     const std::string* find(const std::string& field) const {
@@ -182,9 +187,46 @@ private:
     Mat3d toLps(const Mat3d& m) const { return {toLps(m[0]), toLps(m[1]), toLps(m[2])}; }
     std::uint64_t skipLines(long long lines, const SampleData& data, std::FILE* headerFile) const;
 
+    void parseTimeAxis(std::vector<std::string>& sizeWords);
+
     Header header_;
     Vec3d toLps_{1, 1, 1};  // signs that take "space" to LPS
+    std::size_t steps_ = 1;
+    bool parsed_ = false;
 };
+
+// "dimension: 4": the last axis is time (kinds, when given, say so: time, list or
+// domain, and the first three domain or space); its entry of "space directions"
+// is "none", of "spacings" anything. Removes it from `sizeWords`.
+void NrrdReader::parseTimeAxis(std::vector<std::string>& sizeWords) {
+    const auto steps = sizeWords.size() == 4 ? parseInteger(sizeWords[3]) : std::nullopt;
+    if (!steps || *steps < 1 || *steps > (1LL << 31))
+        fail("sizes", "expected 4 positive integers for dimension 4, got \"" + printable(*find("sizes")) + "\"");
+    steps_ = std::size_t(*steps);
+    sizeWords.pop_back();
+    if (const std::string* kinds = find("kinds")) {
+        const std::vector<std::string> words = splitWords(lowerCase(*kinds));
+        bool ok = words.size() == 4 && (words[3] == "time" || words[3] == "list" || words[3] == "domain");
+        for (std::size_t a = 0; ok && a < 3; ++a) ok = words[a] == "domain" || words[a] == "space";
+        if (!ok)
+            fail("kinds",
+                 "a 4D volume needs three space axes and time last (e.g. \"domain domain domain time\"), got \"" +
+                     printable(*kinds) + "\"");
+    }
+    if (auto it = header_.fields.find("space directions"); it != header_.fields.end()) {
+        const std::size_t none = it->second.rfind("none");
+        if (none == std::string::npos || joinWords(it->second.substr(none)) != "none")
+            fail("space directions", "the time axis's entry must be \"none\", got \"" + printable(it->second) + "\"");
+        it->second.erase(none);
+    }
+    if (auto it = header_.fields.find("spacings"); it != header_.fields.end()) {
+        std::vector<std::string> words = splitWords(it->second);
+        if (words.size() == 4) words.pop_back();
+        std::string text;
+        for (const std::string& w : words) text += (text.empty() ? "" : " ") + w;
+        it->second = text;
+    }
+}
 
 // The anatomical spaces isotrack knows; others (scanner-xyz, 3D-right-handed...)
 // and no "space" at all are taken as given.
@@ -212,8 +254,11 @@ long long NrrdReader::skipField(const std::string& field, long long minimum) con
 
 void NrrdReader::parseGeometry() {
     parseSpace();
+    if (parsed_) return;
+    parsed_ = true;
     const std::string& dimension = require("dimension");
-    if (dimension != "3") fail("dimension", "expected 3, got \"" + printable(dimension) + "\"");
+    if (dimension != "3" && dimension != "4")
+        fail("dimension", "expected 3 (or 4, time last), got \"" + printable(dimension) + "\"");
 
     const std::string& typeText = require("type");
     const auto* t = std::find_if(std::begin(kTypeNames), std::end(kTypeNames),
@@ -224,7 +269,9 @@ void NrrdReader::parseGeometry() {
     geometry_.type = t->type;
 
     const std::string& sizesText = require("sizes");
-    const auto sizes = parseDims(splitWords(sizesText));
+    std::vector<std::string> sizeWords = splitWords(sizesText);
+    if (dimension == "4") parseTimeAxis(sizeWords);
+    const auto sizes = parseDims(sizeWords);
     if (!sizes) fail("sizes", "expected 3 positive integers, got \"" + printable(sizesText) + "\"");
     geometry_.dims = *sizes;
 
@@ -271,8 +318,13 @@ std::uint64_t NrrdReader::skipLines(long long lines, const SampleData& data, std
     return offset;
 }
 
-Volume NrrdReader::read(std::FILE* headerFile) {
+Volume NrrdReader::read(std::FILE* headerFile, std::size_t step) {
     parseGeometry();
+    if (step >= steps_)
+        fail("sizes", "no time step " + std::to_string(step) + ": the file has " + std::to_string(steps_) +
+                          (steps_ == 1 ? " step (0)" : " steps (0.." + std::to_string(steps_ - 1) + ")"));
+    const std::uint64_t stepBytes = sampleBytes(geometry_);
+    if (std::uint64_t(steps_) > kMaxVolumeBytes / stepBytes) fail("sizes", "the time steps exceed the volume limit");
     const std::string encoding = require("encoding");
     const bool gzip = encoding == "gzip" || encoding == "gz";
     if (!gzip && encoding != "raw")
@@ -309,24 +361,35 @@ Volume NrrdReader::read(std::FILE* headerFile) {
     if (byteSkip == -1) {
         // The samples are the last bytes of the file.
         const std::uint64_t size = fileSizeOf(data.path, dataWhere(geometry_, data));
-        const std::uint64_t needed = sampleBytes(geometry_);
+        const std::uint64_t needed = stepBytes * steps_;
         if (size >= needed) data.offset = std::max(data.offset, size - needed);
     } else if (gzip) {
         data.skip = std::uint64_t(byteSkip);  // counts decompressed bytes
     } else {
         data.offset += std::uint64_t(byteSkip);
     }
-    // Raw data may be followed by anything; a gzip stream must hold the samples exactly.
-    data.trailingBytesAllowed = !gzip;
+    // Step t follows t whole volumes.
+    if (gzip)
+        data.skip += step * stepBytes;
+    else
+        data.offset += step * stepBytes;
+    // Raw data may be followed by anything; a gzip stream must hold the samples exactly (its last step).
+    data.trailingBytesAllowed = !gzip || step + 1 < steps_;
     return readVolume(data);
 }
 
 }  // namespace
 
-Volume loadNrrd(const std::string& path) {
+Volume loadNrrd(const std::string& path, std::size_t step) {
     FilePtr f = openForReading(path);
     Header header = readHeader(f.get(), path);
-    return NrrdReader(path, std::move(header)).read(f.get());
+    return NrrdReader(path, std::move(header)).read(f.get(), step);
+}
+
+std::size_t nrrdSteps(const std::string& path) {
+    FilePtr f = openForReading(path);
+    Header header = readHeader(f.get(), path);
+    return NrrdReader(path, std::move(header)).steps();
 }
 
 void writeNrrd(const Volume& volume, const std::string& path) {

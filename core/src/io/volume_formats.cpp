@@ -5,13 +5,14 @@
 #include "isotrack/dicom.h"
 #include "isotrack/errors.h"
 #include "isotrack/io.h"
+#include "isotrack/time_series.h"
 
 namespace isotrack {
 
 namespace {
 
 constexpr const char* kHeaderExtensions =
-    ".nrrd, .nhdr, .nii, .nii.gz, .mhd, .mha, .vtk, .dcm, a DICOM folder or DICOMDIR";
+    ".nrrd, .nhdr, .nii, .nii.gz, .mhd, .mha, .vtk, .vti, .pvd, .dcm, a DICOM folder or DICOMDIR";
 
 // Headerless samples: the layout the caller gives is the whole header.
 class RawReader : public detail::VolumeReader {
@@ -45,6 +46,8 @@ const char* volumeFormatName(VolumeFormat format) {
         case VolumeFormat::Nifti: return "NIfTI-1";
         case VolumeFormat::MetaImage: return "MetaImage";
         case VolumeFormat::VtkLegacy: return "VTK legacy";
+        case VolumeFormat::VtkImageData: return "VTK XML ImageData";
+        case VolumeFormat::VtkCollection: return "ParaView collection";
         case VolumeFormat::Raw: return "raw";
         case VolumeFormat::Dicom: return "DICOM";
     }
@@ -57,6 +60,8 @@ std::optional<VolumeFormat> volumeFormatOf(const std::string& path) {
     if (ext == ".nii" || ext == ".nii.gz") return VolumeFormat::Nifti;
     if (ext == ".mhd" || ext == ".mha") return VolumeFormat::MetaImage;
     if (ext == ".vtk") return VolumeFormat::VtkLegacy;
+    if (ext == ".vti") return VolumeFormat::VtkImageData;
+    if (ext == ".pvd") return VolumeFormat::VtkCollection;
     if (ext == ".raw") return VolumeFormat::Raw;
     if (isDicomPath(path)) return VolumeFormat::Dicom;
     return std::nullopt;
@@ -73,6 +78,8 @@ Volume loadVolume(const std::string& path) {
         case VolumeFormat::Nifti: return loadNifti(path);
         case VolumeFormat::MetaImage: return loadMetaImage(path);
         case VolumeFormat::VtkLegacy: return loadVtkLegacy(path);
+        case VolumeFormat::VtkImageData: return loadVti(path);
+        case VolumeFormat::VtkCollection: return loadTimeStep(readTimeSeries(path), 0);
         case VolumeFormat::Dicom: return loadDicom(path);
         case VolumeFormat::Raw: break;
     }

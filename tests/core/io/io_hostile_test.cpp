@@ -184,7 +184,7 @@ TEST_CASE("hostile NIfTI-1 files are refused", "[core][io][hostile]") {
     refuseHeader(
         "2d.nii", [](NiftiHeader& h) { h.dim[0] = 2; }, "\"dim\"");
     refuseHeader(
-        "4d.nii", [](NiftiHeader& h) { h.dim[0] = 4, h.dim[4] = 7; }, "only 3D");
+        "5d.nii", [](NiftiHeader& h) { h.dim[0] = 5, h.dim[4] = 7, h.dim[5] = 2; }, "only 3D");
     refuseHeader(
         "dim0.nii", [](NiftiHeader& h) { h.dim[0] = -3; }, "\"dim\"");
     refuseHeader(

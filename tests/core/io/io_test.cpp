@@ -185,7 +185,7 @@ TEST_CASE("NRRD loader refuses malformed files", "[core][io]") {
                       Catch::Contains("field \"encoding\"") && Catch::Contains("bzip2"));
     CHECK_THROWS_AS(load(withField(kHeader16, "encoding: raw", "encoding: zstd") + data), FormatError);
     CHECK_THROWS_WITH(load(withField(kHeader16, "dimension: 3", "dimension: 2") + data),
-                      Catch::Contains("field \"dimension\": expected 3, got \"2\""));
+                      Catch::Contains("field \"dimension\": expected 3 (or 4, time last), got \"2\""));
     CHECK_THROWS_AS(load(withField(kHeader16, "endian: little", "endian: middle") + data), FormatError);
     CHECK_THROWS_WITH(load(withField(kHeader16, "endian: little\n", "") + data), Catch::Contains("endian"));
     CHECK_THROWS_WITH(load(withField(kHeader16, "type: short\n", "") + data), Catch::Contains("\"type\""));

@@ -12,12 +12,12 @@
 using namespace isotrack;
 
 TEST_CASE("a field source: its canonical name and its own isovalue", "[core][source]") {
-    const LoadedSource loaded = loadSource({VolumeSource::Kind::Field, "blobs:24", {}, ""});
+    const LoadedSource loaded = loadSource({VolumeSource::Kind::Field, "blobs:24", {}, "", "", 0});
     CHECK(loaded.name == "blobs:24");
     CHECK(loaded.volume.dims() == Dims{24, 24, 24});
     REQUIRE(loaded.defaultIso);
     CHECK(*loaded.defaultIso == fieldDefaultIso("blobs"));
-    CHECK_THROWS_AS(loadSource({VolumeSource::Kind::Field, "nothing:24", {}, ""}), InputError);
+    CHECK_THROWS_AS(loadSource({VolumeSource::Kind::Field, "nothing:24", {}, "", "", 0}), InputError);
 }
 
 TEST_CASE("a file source: its path and the isovalue its histogram suggests", "[core][source]") {
@@ -30,12 +30,12 @@ TEST_CASE("a file source: its path and the isovalue its histogram suggests", "[c
     RawLayout layout;
     layout.dims = {2, 2, 2};
     layout.type = ScalarType::UInt8;
-    const LoadedSource loaded = loadSource({VolumeSource::Kind::File, path, layout, ""});
+    const LoadedSource loaded = loadSource({VolumeSource::Kind::File, path, layout, "", "", 0});
     CHECK(loaded.name == path);
     REQUIRE(loaded.defaultIso);
     CHECK(*loaded.defaultIso == suggestIsovalue(loaded.volume));
     CHECK(*loaded.defaultIso > 10.0);  // between the lowest and the highest sample
     CHECK(*loaded.defaultIso < 90.0);
     std::remove(path.c_str());
-    CHECK_THROWS(loadSource({VolumeSource::Kind::File, path, {}, ""}));
+    CHECK_THROWS(loadSource({VolumeSource::Kind::File, path, {}, "", "", 0}));
 }
