@@ -78,6 +78,12 @@ const char* attribute(const XML_Char** attrs, const char* name) {
     return nullptr;
 }
 
+// The attribute's value, or `fallback` when the element has none.
+std::string attributeOr(const XML_Char** attrs, const char* name, const char* fallback = "") {
+    const char* v = attribute(attrs, name);
+    return v ? v : fallback;
+}
+
 std::optional<std::string> optionalAttribute(const XML_Char** attrs, const char* name) {
     const char* v = attribute(attrs, name);
     return v ? std::optional<std::string>(v) : std::nullopt;
@@ -90,14 +96,10 @@ void stop(Head& head, const std::string& error) {
 
 void startPointArray(Head& head, const XML_Char** attrs) {
     DataArray array;
-    const char* name = attribute(attrs, "Name");
-    array.name = name ? name : "";
-    const char* type = attribute(attrs, "type");
-    array.type = type ? type : "";
-    const char* format = attribute(attrs, "format");
-    array.format = format ? format : "";
-    const char* offset = attribute(attrs, "offset");
-    array.offset = offset ? offset : "";
+    array.name = attributeOr(attrs, "Name");
+    array.type = attributeOr(attrs, "type");
+    array.format = attributeOr(attrs, "format");
+    array.offset = attributeOr(attrs, "offset");
     const char* comps = attribute(attrs, "NumberOfComponents");
     const bool scalar = !comps || std::string(comps) == "1";
     head.names += (head.names.empty() ? "\"" : ", \"") + printable(array.name, 40) + "\"";
@@ -120,14 +122,10 @@ void XMLCALL startElement(void* user, const XML_Char* name, const XML_Char** att
     if (parent.empty()) {
         if (element != "VTKFile")
             return stop(head, "not a VTK XML file: the root element is <" + printable(element) + ">");
-        const char* type = attribute(attrs, "type");
-        head.fileType = type ? type : "";
-        const char* order = attribute(attrs, "byte_order");
-        head.byteOrder = order ? order : "LittleEndian";
-        const char* header = attribute(attrs, "header_type");
-        head.headerType = header ? header : "UInt32";
-        const char* compressor = attribute(attrs, "compressor");
-        head.compressor = compressor ? compressor : "";
+        head.fileType = attributeOr(attrs, "type");
+        head.byteOrder = attributeOr(attrs, "byte_order", "LittleEndian");
+        head.headerType = attributeOr(attrs, "header_type", "UInt32");
+        head.compressor = attributeOr(attrs, "compressor");
     } else if (parent == "VTKFile" && element == "ImageData") {
         head.wholeExtent = optionalAttribute(attrs, "WholeExtent");
         head.origin = optionalAttribute(attrs, "Origin");
@@ -140,8 +138,7 @@ void XMLCALL startElement(void* user, const XML_Char* name, const XML_Char** att
         startPointArray(head, attrs);
     } else if (parent == "VTKFile" && element == "AppendedData") {
         head.appended = true;
-        const char* encoding = attribute(attrs, "encoding");
-        head.appendedEncoding = encoding ? encoding : "";
+        head.appendedEncoding = attributeOr(attrs, "encoding");
         head.appendedAt = std::uint64_t(XML_GetCurrentByteIndex(head.parser));
         XML_StopParser(head.parser, XML_FALSE);
     }
