@@ -95,7 +95,7 @@ double levelPy(const py::array& array, std::optional<double> level, bool withinR
     if (level && !withinRange) return *level;
     const std::array<double, 2> range = volume.range();
     if (!std::isfinite(range[0])) throw InputError("volume: no finite samples, give level");
-    if (!level) return suggestIsovalue(volume);
+    if (!level) return suggestIsovalue(volume, range);
     if (*level < range[0] || *level > range[1]) {
         std::ostringstream text;
         text << "Surface level must be within volume data range. (level " << *level << ", data " << range[0] << " to "

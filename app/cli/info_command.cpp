@@ -226,7 +226,7 @@ int runInfo(const InfoOptions& options) {
     else
         h.read = false;
     std::optional<IsovalueSuggestion> suggestion;
-    if (!h.empty()) suggestion = isovalueSuggestion(volume);
+    if (!h.empty()) suggestion = isovalueSuggestion(volume, {h.min, h.max});
     if (options.json) {
         nlohmann::json j = infoJson(options, volume, h);
         addSuggestedIsovalue(suggestion, j);

@@ -86,7 +86,7 @@ std::shared_ptr<LoadedVolume> loadForView(const VolumeSource& source, bool isoGi
     }
     loaded->range = loaded->volume.range();
     if (!std::isfinite(loaded->range[0])) throw InputError(source.text + ": no finite samples");
-    loaded->defaultIso = read.defaultIso ? *read.defaultIso : suggestIsovalue(loaded->volume);
+    loaded->defaultIso = read.defaultIso ? *read.defaultIso : suggestIsovalue(loaded->volume, loaded->range);
     loaded->histogram = histogramOf(loaded->volume, loaded->range);
     return loaded;
 }

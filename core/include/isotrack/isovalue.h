@@ -14,6 +14,7 @@
 //
 // Every front end opens a file at this value: `isotrack extract` and the other
 // commands without --iso, the viewer, Python; `isotrack info` prints it.
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -37,11 +38,15 @@ struct IsovalueSuggestion {
 
 // The suggested isovalue and the step that chose it.
 IsovalueSuggestion isovalueSuggestion(const Volume& volume);
+// The same, for a caller that has the volume's range() already: one pass fewer
+// over the samples (each is a full read of a mapped file).
+IsovalueSuggestion isovalueSuggestion(const Volume& volume, const std::array<double, 2>& range);
 // The same rule on a histogram already counted: `counts` in equal bins across [lo, hi].
 IsovalueSuggestion isovalueSuggestion(const std::vector<std::uint64_t>& counts, double lo, double hi);
 
 // isovalueSuggestion's value.
 double suggestIsovalue(const Volume& volume);
+double suggestIsovalue(const Volume& volume, const std::array<double, 2>& range);
 double suggestIsovalue(const std::vector<std::uint64_t>& counts, double lo, double hi);
 
 // Otsu's threshold: the bin boundary that maximises the between-class variance.

@@ -84,13 +84,18 @@ IsovalueSuggestion isovalueSuggestion(const std::vector<std::uint64_t>& counts, 
     return {binCentre(valley, n, lo, hi), IsovalueRule::HistogramValley};
 }
 
-IsovalueSuggestion isovalueSuggestion(const Volume& volume) {
-    const std::array<double, 2> range = volume.range();
+IsovalueSuggestion isovalueSuggestion(const Volume& volume) { return isovalueSuggestion(volume, volume.range()); }
+
+IsovalueSuggestion isovalueSuggestion(const Volume& volume, const std::array<double, 2>& range) {
     if (!(range[1] > range[0])) return {range[0], IsovalueRule::Constant};
     return isovalueSuggestion(sampleHistogram(volume, range, kBins), range[0], range[1]);
 }
 
 double suggestIsovalue(const Volume& volume) { return isovalueSuggestion(volume).value; }
+
+double suggestIsovalue(const Volume& volume, const std::array<double, 2>& range) {
+    return isovalueSuggestion(volume, range).value;
+}
 
 double suggestIsovalue(const std::vector<std::uint64_t>& counts, double lo, double hi) {
     return isovalueSuggestion(counts, lo, hi).value;

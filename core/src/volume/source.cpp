@@ -38,7 +38,7 @@ LoadedSource loadSource(const VolumeSource& source, DefaultIso defaultIso) {
     loaded.name = source.text;
     if (defaultIso == DefaultIso::Skip) return loaded;
     const auto range = loaded.volume.range();
-    if (std::isfinite(range[0])) loaded.defaultIso = suggestIsovalue(loaded.volume);
+    if (std::isfinite(range[0])) loaded.defaultIso = suggestIsovalue(loaded.volume, range);
     return loaded;
 }
 
