@@ -3,7 +3,7 @@
 
 #include <utility>
 
-#include "cancel.h"
+#include "extract/common/cancel.h"
 #include "isotrack/contour_tree.h"
 #include "isotrack/errors.h"
 #include "isotrack/marching_cubes.h"

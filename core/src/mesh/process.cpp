@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "extract/surface_measure.h"
+#include "extract/measure/surface_measure.h"
 #include "isotrack/errors.h"
 #include "isotrack/mesh_processing.h"
 

@@ -13,7 +13,7 @@
 // A chunk owns the x- and y-edges of its first slice but not of the slice after
 // its last slab: it writes placeholders for those, resolved from the next
 // chunk's first slice when the chunks are joined into one mesh.
-#include "trilinear_march.h"
+#include "extract/trilinear/trilinear_march.h"
 
 #include <algorithm>
 #include <array>
@@ -24,7 +24,7 @@
 #include <utility>
 #include <vector>
 
-#include "edge_vertex.h"
+#include "extract/common/edge_vertex.h"
 #include "isotrack/cube.h"
 #include "isotrack/trilinear.h"
 #include "support/parallel.h"

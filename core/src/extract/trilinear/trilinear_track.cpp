@@ -26,12 +26,12 @@
 
 #include <cmath>
 
-#include "edge_vertex.h"
+#include "extract/common/edge_vertex.h"
 #include "isotrack/cube.h"
 #include "isotrack/errors.h"
 #include "isotrack/trilinear.h"
-#include "sparse_blocks.h"
-#include "trilinear_march.h"
+#include "extract/common/sparse_blocks.h"
+#include "extract/trilinear/trilinear_march.h"
 
 namespace isotrack::detail {
 namespace {

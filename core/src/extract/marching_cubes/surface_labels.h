@@ -19,7 +19,7 @@
 #include "isotrack/continuation.h"
 #include "isotrack/mesh.h"
 #include "isotrack/tables.h"
-#include "labelled_march.h"
+#include "extract/marching_cubes/labelled_march.h"
 
 namespace isotrack::detail {
 

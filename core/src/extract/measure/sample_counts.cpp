@@ -6,7 +6,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "edge_vertex.h"
+#include "extract/common/edge_vertex.h"
 #include "isotrack/marching_cubes.h"
 #include "support/parallel.h"
 

@@ -11,7 +11,7 @@
 #include <cmath>
 #include <limits>
 
-#include "contour_tree_build.h"
+#include "extract/contour_tree/contour_tree_build.h"
 
 namespace isotrack::detail {
 namespace {

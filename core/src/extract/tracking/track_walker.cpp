@@ -21,7 +21,7 @@
 // between regions, which cells of several threads share, are claimed with a
 // compare-and-swap (track_together.cpp). The threads' parts are joined into one
 // mesh at the end.
-#include "track_walker.h"
+#include "extract/tracking/track_walker.h"
 
 #include <algorithm>
 #include <array>
@@ -30,12 +30,12 @@
 #include <stdexcept>
 #include <string>
 
-#include "edge_vertex.h"
+#include "extract/common/edge_vertex.h"
 #include "isotrack/continuation.h"
 #include "isotrack/cube.h"
 #include "isotrack/errors.h"
 #include "support/huge_pages.h"
-#include "walk_exchange.h"
+#include "extract/tracking/walk_exchange.h"
 
 namespace isotrack::detail {
 namespace {

@@ -20,7 +20,7 @@
 #include <thread>
 #include <utility>
 
-#include "contour_tree_build.h"
+#include "extract/contour_tree/contour_tree_build.h"
 #include "isotrack/errors.h"
 
 namespace isotrack::detail {

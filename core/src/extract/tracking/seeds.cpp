@@ -8,7 +8,7 @@
 
 #include "isotrack/errors.h"
 #include "isotrack/tracking.h"
-#include "track_walker.h"
+#include "extract/tracking/track_walker.h"
 
 namespace isotrack {
 

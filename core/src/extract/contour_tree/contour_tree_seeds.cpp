@@ -21,7 +21,7 @@
 #include <cmath>
 #include <unordered_set>
 
-#include "contour_tree_build.h"
+#include "extract/contour_tree/contour_tree_build.h"
 #include "isotrack/errors.h"
 #include "isotrack/tracking.h"
 #include "support/parallel.h"

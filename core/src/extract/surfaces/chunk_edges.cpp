@@ -3,7 +3,7 @@
 
 #include "isotrack/chunks.h"
 #include "isotrack/errors.h"
-#include "surface_measure.h"
+#include "extract/measure/surface_measure.h"
 
 namespace isotrack {
 

@@ -37,18 +37,18 @@
 #include <stdexcept>
 #include <vector>
 
-#include "cancel.h"
-#include "edge_slots.h"
-#include "edge_vertex.h"
+#include "extract/common/cancel.h"
+#include "extract/marching_cubes/edge_slots.h"
+#include "extract/common/edge_vertex.h"
 #include "isotrack/continuation.h"
 #include "isotrack/cube.h"
-#include "labelled_march.h"
+#include "extract/marching_cubes/labelled_march.h"
 #include "support/huge_pages.h"
 #include "support/parallel.h"
 #include "support/slice_release.h"
-#include "surface_labels.h"
-#include "surface_measure.h"
-#include "trilinear_march.h"
+#include "extract/marching_cubes/surface_labels.h"
+#include "extract/measure/surface_measure.h"
+#include "extract/trilinear/trilinear_march.h"
 
 namespace isotrack {
 namespace {

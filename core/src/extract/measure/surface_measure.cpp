@@ -1,6 +1,6 @@
 // measureSurface: a whole mesh's figures, with the measuring the walks and the
 // split of every surface do as they go (surface_measure.h).
-#include "surface_measure.h"
+#include "extract/measure/surface_measure.h"
 
 #include "isotrack/surface.h"
 

@@ -11,8 +11,8 @@
 
 #include "support/huge_pages.h"
 #include "support/parallel.h"
-#include "track_walker.h"
-#include "walk_exchange.h"
+#include "extract/tracking/track_walker.h"
+#include "extract/tracking/walk_exchange.h"
 
 namespace isotrack::detail {
 namespace {

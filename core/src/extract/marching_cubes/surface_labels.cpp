@@ -1,7 +1,7 @@
 // The lookups that let the labelled exhaustive pass join a cell piece's
 // vertices while looking up few of them (PieceUnions, derived from the
 // continuation table), and the joining of surfaces across a seam between chunks.
-#include "surface_labels.h"
+#include "extract/marching_cubes/surface_labels.h"
 
 #include "isotrack/continuation.h"
 #include "isotrack/cube.h"

@@ -20,13 +20,13 @@
 #include <numeric>
 #include <type_traits>
 
-#include "cancel.h"
+#include "extract/common/cancel.h"
 #include "isotrack/tracking.h"
-#include "labelled_march.h"
+#include "extract/marching_cubes/labelled_march.h"
 #include "support/huge_pages.h"
 #include "support/parallel.h"
-#include "surface_measure.h"
-#include "trilinear_march.h"
+#include "extract/measure/surface_measure.h"
+#include "extract/trilinear/trilinear_march.h"
 
 namespace isotrack {
 namespace {

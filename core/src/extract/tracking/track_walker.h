@@ -14,9 +14,9 @@
 #include "isotrack/tables.h"
 #include "isotrack/tracking.h"
 #include "isotrack/volume.h"
-#include "piece_queue.h"
-#include "sparse_blocks.h"
-#include "surface_measure.h"
+#include "extract/tracking/piece_queue.h"
+#include "extract/common/sparse_blocks.h"
+#include "extract/measure/surface_measure.h"
 
 namespace isotrack::detail {
 

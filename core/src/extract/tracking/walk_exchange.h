@@ -9,7 +9,7 @@
 #include <thread>
 #include <vector>
 
-#include "sparse_blocks.h"
+#include "extract/common/sparse_blocks.h"
 
 namespace isotrack::detail {
 

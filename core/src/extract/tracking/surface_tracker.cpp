@@ -6,8 +6,8 @@
 #include <memory>
 
 #include "isotrack/tracking.h"
-#include "track_walker.h"
-#include "trilinear_march.h"
+#include "extract/tracking/track_walker.h"
+#include "extract/trilinear/trilinear_march.h"
 
 namespace isotrack {
 

@@ -9,8 +9,8 @@
 
 #include "isotrack/continuation.h"
 #include "isotrack/tracking.h"
-#include "track_walker.h"
-#include "trilinear_march.h"
+#include "extract/tracking/track_walker.h"
+#include "extract/trilinear/trilinear_march.h"
 
 namespace isotrack {
 

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "sparse_blocks.h"
+#include "extract/common/sparse_blocks.h"
 
 namespace isotrack::detail {
 
