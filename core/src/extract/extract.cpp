@@ -1,9 +1,14 @@
 // extract: the one place that turns a method and its settings into surfaces.
+// The methods live in the rooms beside this file (marching_cubes, surfaces,
+// tracking, trilinear, contour_tree; measure and common serve them), each
+// described at the top of its main header.
 #include "isotrack/extract.h"
 
 #include <utility>
 
 #include "extract/common/cancel.h"
+#include "extract/marching_cubes/march.h"
+#include "extract/surfaces/all_surfaces.h"
 #include "isotrack/contour_tree.h"
 #include "isotrack/errors.h"
 #include "isotrack/marching_cubes.h"

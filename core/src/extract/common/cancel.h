@@ -1,27 +1,16 @@
 #pragma once
-// Abandoning an extraction between its passes (ExtractRequest::cancel), and
-// reporting how far its march has got (ExtractRequest::progress).
+// Room extract/common: what several extraction rooms share. edge_vertex.h
+// places the vertex of a crossed grid edge (every extractor, so that an edge
+// gives the same vertex whichever visits it), sparse_blocks.h keeps a walk's
+// per-surface storage (tracking and the trilinear walk), and this file checks
+// whether an extraction was abandoned (ExtractRequest::cancel). Uses only the
+// public headers (isotrack/...); no other room.
 #include <atomic>
-#include <vector>
-
-#include "isotrack/extract.h"
-#include "isotrack/mesh.h"
-#include "isotrack/surface.h"
-#include "isotrack/tables.h"
-#include "isotrack/volume.h"
 
 namespace isotrack::detail {
 
 inline bool cancelled(const std::atomic<bool>* cancel) {
     return cancel != nullptr && cancel->load(std::memory_order_relaxed);
 }
-
-// extractAllSurfaces, abandoned (returning no surface) when `cancel` is set
-// between the labelled pass and the split; its march reports to `progress`.
-std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableKind table, int threads,
-                                        const std::atomic<bool>* cancel, ExtractProgress* progress = nullptr);
-
-// marchingCubes, its march reporting to `progress` (consistent and classic tables).
-Mesh marchingCubes(const Volume& volume, double iso, TableKind table, int threads, ExtractProgress* progress);
 
 }  // namespace isotrack::detail

@@ -1,4 +1,11 @@
 #pragma once
+// Room extract/contour_tree: the contour tree (isotrack/contour_tree.h) and
+// its plot (isotrack/tree_layout.h): building it (contour_tree_build.cpp),
+// its arcs and their queries (contour_tree_arcs.cpp), simplifying it
+// (contour_tree_simplify.cpp), seeds and the surfaces of its arcs
+// (contour_tree_seeds.cpp, tracked through isotrack/tracking.h) and its layout
+// (contour_tree_layout.cpp). Uses support/ and the public headers only.
+//
 // The passes of computeContourTree, shared by its files.
 #include <cmath>
 #include <cstdint>

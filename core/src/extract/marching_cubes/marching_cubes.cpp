@@ -37,18 +37,18 @@
 #include <stdexcept>
 #include <vector>
 
-#include "extract/common/cancel.h"
-#include "extract/marching_cubes/edge_slots.h"
 #include "extract/common/edge_vertex.h"
-#include "isotrack/continuation.h"
-#include "isotrack/cube.h"
+#include "extract/marching_cubes/edge_slots.h"
 #include "extract/marching_cubes/labelled_march.h"
-#include "support/huge_pages.h"
-#include "support/parallel.h"
-#include "support/slice_release.h"
+#include "extract/marching_cubes/march.h"
 #include "extract/marching_cubes/surface_labels.h"
 #include "extract/measure/surface_measure.h"
 #include "extract/trilinear/trilinear_march.h"
+#include "isotrack/continuation.h"
+#include "isotrack/cube.h"
+#include "support/huge_pages.h"
+#include "support/parallel.h"
+#include "support/slice_release.h"
 
 namespace isotrack {
 namespace {

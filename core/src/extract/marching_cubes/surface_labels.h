@@ -16,10 +16,10 @@
 #include <cstdint>
 #include <vector>
 
+#include "extract/marching_cubes/labelled_march.h"
 #include "isotrack/continuation.h"
 #include "isotrack/mesh.h"
 #include "isotrack/tables.h"
-#include "extract/marching_cubes/labelled_march.h"
 
 namespace isotrack::detail {
 

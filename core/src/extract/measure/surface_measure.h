@@ -1,4 +1,11 @@
 #pragma once
+// Room extract/measure: the figures of surfaces (isotrack/surface.h): area,
+// bounds, enclosed volume and closedness as the walks and the split of every
+// surface measure them (this file, and measureSurface in surface_measure.cpp),
+// topology (surface_topology.cpp), and the counts over every sample that an
+// extraction is measured against (sample_counts.cpp, isotrack/marching_cubes.h).
+// Uses extract/common, support/ and the public headers.
+//
 // Measuring surfaces, shared by the tracker and by the labelled exhaustive pass.
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,9 @@
 // Global names of grid edges across a volume's chunks; see isotrack/chunks.h.
 #include <string>
 
+#include "extract/measure/surface_measure.h"
 #include "isotrack/chunks.h"
 #include "isotrack/errors.h"
-#include "extract/measure/surface_measure.h"
 
 namespace isotrack {
 

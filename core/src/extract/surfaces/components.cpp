@@ -21,12 +21,13 @@
 #include <type_traits>
 
 #include "extract/common/cancel.h"
-#include "isotrack/tracking.h"
 #include "extract/marching_cubes/labelled_march.h"
+#include "extract/measure/surface_measure.h"
+#include "extract/surfaces/all_surfaces.h"
+#include "extract/trilinear/trilinear_march.h"
+#include "isotrack/tracking.h"
 #include "support/huge_pages.h"
 #include "support/parallel.h"
-#include "extract/measure/surface_measure.h"
-#include "extract/trilinear/trilinear_march.h"
 
 namespace isotrack {
 namespace {

@@ -6,9 +6,9 @@
 #include <limits>
 #include <string>
 
+#include "extract/tracking/track_walker.h"
 #include "isotrack/errors.h"
 #include "isotrack/tracking.h"
-#include "extract/tracking/track_walker.h"
 
 namespace isotrack {
 

@@ -5,9 +5,9 @@
 #include <limits>
 #include <memory>
 
-#include "isotrack/tracking.h"
 #include "extract/tracking/track_walker.h"
 #include "extract/trilinear/trilinear_march.h"
+#include "isotrack/tracking.h"
 
 namespace isotrack {
 

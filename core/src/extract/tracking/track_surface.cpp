@@ -7,10 +7,10 @@
 #include <utility>
 #include <vector>
 
-#include "isotrack/continuation.h"
-#include "isotrack/tracking.h"
 #include "extract/tracking/track_walker.h"
 #include "extract/trilinear/trilinear_march.h"
+#include "isotrack/continuation.h"
+#include "isotrack/tracking.h"
 
 namespace isotrack {
 

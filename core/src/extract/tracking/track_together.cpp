@@ -9,10 +9,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "support/huge_pages.h"
-#include "support/parallel.h"
 #include "extract/tracking/track_walker.h"
 #include "extract/tracking/walk_exchange.h"
+#include "support/huge_pages.h"
+#include "support/parallel.h"
 
 namespace isotrack::detail {
 namespace {

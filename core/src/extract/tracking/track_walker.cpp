@@ -31,11 +31,11 @@
 #include <string>
 
 #include "extract/common/edge_vertex.h"
+#include "extract/tracking/walk_exchange.h"
 #include "isotrack/continuation.h"
 #include "isotrack/cube.h"
 #include "isotrack/errors.h"
 #include "support/huge_pages.h"
-#include "extract/tracking/walk_exchange.h"
 
 namespace isotrack::detail {
 namespace {

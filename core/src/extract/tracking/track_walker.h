@@ -1,4 +1,14 @@
 #pragma once
+// Room extract/tracking: piecewise continuation, one surface walked from a
+// seed edge through the cells it crosses (isotrack/tracking.h). track_walker.*
+// walks, piece_queue.h orders the pieces still to walk, track_together.cpp and
+// walk_exchange.h walk one surface on several threads, track_surface.cpp tracks
+// the surface through a seed and every surface by a scan, surface_tracker.cpp
+// grows one a budget at a time, seeds.cpp finds seed edges. Uses
+// extract/common, extract/measure (figures measured on the way),
+// extract/trilinear (the walk with the trilinear table), support/ and the
+// public headers.
+//
 // What the tracking units share: a walker (one thread's share of a walk), the
 // worker that walks for a volume's sample type, and the steps around a walk
 // (checking and queueing a seed, finishing the surface). The walk itself is in
@@ -10,13 +20,13 @@
 #include <string>
 #include <vector>
 
+#include "extract/common/sparse_blocks.h"
+#include "extract/measure/surface_measure.h"
+#include "extract/tracking/piece_queue.h"
 #include "isotrack/mesh.h"
 #include "isotrack/tables.h"
 #include "isotrack/tracking.h"
 #include "isotrack/volume.h"
-#include "extract/tracking/piece_queue.h"
-#include "extract/common/sparse_blocks.h"
-#include "extract/measure/surface_measure.h"
 
 namespace isotrack::detail {
 

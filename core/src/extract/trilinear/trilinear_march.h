@@ -1,4 +1,9 @@
 #pragma once
+// Room extract/trilinear: extraction with the trilinear table
+// (isotrack/trilinear.h, built in core/src/tables): the exhaustive pass
+// (trilinear_march.cpp) and the walk from a seed and every surface
+// (trilinear_track.cpp). Uses extract/common, support/ and the public headers.
+//
 // Exhaustive marching cubes with the trilinear table (isotrack/trilinear.h).
 #include <cstddef>
 #include <memory>

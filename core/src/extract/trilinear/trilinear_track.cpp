@@ -27,11 +27,11 @@
 #include <cmath>
 
 #include "extract/common/edge_vertex.h"
+#include "extract/common/sparse_blocks.h"
+#include "extract/trilinear/trilinear_march.h"
 #include "isotrack/cube.h"
 #include "isotrack/errors.h"
 #include "isotrack/trilinear.h"
-#include "extract/common/sparse_blocks.h"
-#include "extract/trilinear/trilinear_march.h"
 
 namespace isotrack::detail {
 namespace {
