@@ -23,7 +23,15 @@ class MappedFile;
 
 enum class ScalarType : std::uint8_t { UInt8, Int8, UInt16, Int16, UInt32, Int32, Float32, Float64 };
 
+// Every sample type, in the enum's order.
+constexpr std::array<ScalarType, 8> kScalarTypes = {ScalarType::UInt8,   ScalarType::Int8,   ScalarType::UInt16,
+                                                    ScalarType::Int16,   ScalarType::UInt32, ScalarType::Int32,
+                                                    ScalarType::Float32, ScalarType::Float64};
+
+// "uint8", "int8", ..., "float64": the names info, extract --json and raw --type use.
 const char* scalarTypeName(ScalarType type);
+// scalarTypeName's inverse; throws InputError naming the text and the valid names otherwise.
+ScalarType parseScalarType(const std::string& name);
 std::size_t scalarTypeSize(ScalarType type);
 
 // Largest sample count times size a Volume may describe (a sanity bound against

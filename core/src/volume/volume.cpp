@@ -27,6 +27,15 @@ const char* scalarTypeName(ScalarType type) {
     return "unknown";
 }
 
+ScalarType parseScalarType(const std::string& name) {
+    std::string names;
+    for (ScalarType type : kScalarTypes) {
+        if (name == scalarTypeName(type)) return type;
+        names += std::string(names.empty() ? "" : ", ") + scalarTypeName(type);
+    }
+    throw InputError("sample type \"" + name + "\": not one of " + names);
+}
+
 std::size_t scalarTypeSize(ScalarType type) {
     switch (type) {
         case ScalarType::UInt8:

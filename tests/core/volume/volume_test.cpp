@@ -31,6 +31,14 @@ TEST_CASE("scalar type names and sizes", "[core][volume]") {
     for (int i = 0; i < 8; ++i) CHECK(scalarTypeSize(kAllTypes[i]) == sizes[i]);
 }
 
+TEST_CASE("sample type names parse back to their types", "[core][volume]") {
+    for (ScalarType type : kScalarTypes) CHECK(parseScalarType(scalarTypeName(type)) == type);
+    CHECK(kScalarTypes.size() == static_cast<std::size_t>(ScalarType::Float64) + 1);
+    CHECK_THROWS_AS(parseScalarType("float16"), InputError);
+    CHECK_THROWS_AS(parseScalarType("UInt8"), InputError);
+    CHECK_THROWS_AS(parseScalarType(""), InputError);
+}
+
 TEST_CASE("volume is zero-filled with the requested geometry", "[core][volume]") {
     for (ScalarType type : kAllTypes) {
         Volume v({3, 4, 5}, type, {0.5, 1, 2}, {-1, 0, 10});
