@@ -22,7 +22,7 @@
 #include "cli/commands.h"
 #include "cli/source.h"
 #include "cli/timed_extraction.h"
-#include "cli/vocabulary.h"
+#include "command_line/vocabulary.h"
 #include "isotrack/continuation.h"
 #include "isotrack/errors.h"
 #include "isotrack/extract.h"
@@ -140,8 +140,8 @@ RunCommand addBenchCommand(CLI::App& app) {
     CLI::App* command =
         app.add_subcommand("bench", "Time several methods and thread counts in one process, interleaved (medians)");
     addSourceOptions(*command, options->source);
-    addTableOption(*command, options->table);
-    addMethodListOption(
+    command_line::addTableOption(*command, options->table);
+    command_line::addMethodListOption(
         *command, "--methods", {Method::Exhaustive, Method::Track, Method::All}, {kStream},
         [options](const std::vector<std::string>& names) {
             options->methods.clear();

@@ -23,7 +23,7 @@
 #include "cli/source.h"
 #include "cli/timed_extraction.h"
 #include "cli/tree_progress.h"
-#include "cli/vocabulary.h"
+#include "command_line/vocabulary.h"
 #include "isotrack/continuation.h"
 #include "isotrack/contour_tree.h"
 #include "isotrack/extract.h"
@@ -430,10 +430,11 @@ RunCommand addExtractCommand(CLI::App& app) {
     auto options = std::make_shared<ExtractOptions>();
     CLI::App* command = app.add_subcommand("extract", "Extract an isosurface and report or save it");
     addSourceOptions(*command, options->source);
-    addTableOption(*command, options->table);
-    addMethodOption(*command, options->method,
-                    "mc (default): every cell, one mesh; track: the one surface through --seed (required); all: every "
-                    "surface separately; tree: every surface, each from its contour-tree arc's seed");
+    command_line::addTableOption(*command, options->table);
+    command_line::addMethodOption(
+        *command, options->method,
+        "mc (default): every cell, one mesh; track: the one surface through --seed (required); all: every "
+        "surface separately; tree: every surface, each from its contour-tree arc's seed");
     command
         ->add_option("--min-persistence", options->minPersistence,
                      "With --method tree: leave out the surfaces of leaf branches less persistent than P")
@@ -467,8 +468,9 @@ RunCommand addExtractCommand(CLI::App& app) {
                      "Format of the --out-dir files: ply, obj or stl (default: --out's extension, else ply)")
         ->check(CLI::IsMember({"ply", "obj", "stl"}))
         ->needs(outDir);
-    addFrameOption(*command, options->frame,
-                   "Frame of the written meshes, --seed and bounds: lps (world, default), ras, or voxel (indices)");
+    command_line::addFrameOption(
+        *command, options->frame,
+        "Frame of the written meshes, --seed and bounds: lps (world, default), ras, or voxel (indices)");
     command->add_flag("--json", options->json, "Print one JSON object on stdout");
     command->add_option("--scheduler", options->scheduler,
                         "Run on Dask, one task per chunk: tcp://HOST:PORT, or local:N worker processes (a .zarr "

@@ -29,7 +29,7 @@ constexpr int kBarWidth = 40;
 
 struct InfoOptions {
     std::string path;
-    RawOptions raw;
+    command_line::RawOptions raw;
     int bins = 16;
     bool json = false;
     bool values = false;  // read the samples of a mapped volume of any size
@@ -75,7 +75,7 @@ std::string formatBytes(std::uint64_t bytes) {
     return buf;
 }
 
-std::string formatName(const std::string& path, const RawOptions& raw) {
+std::string formatName(const std::string& path, const command_line::RawOptions& raw) {
     if (!raw.dims.empty()) return std::string("raw (") + raw.endian + " endian)";
     const auto format = volumeFormatOf(path);
     return format ? volumeFormatName(*format) : "unknown";
@@ -256,7 +256,7 @@ RunCommand addInfoCommand(CLI::App& app) {
                                     "folder or "
                                     "DICOMDIR; raw with --dims)")
                        ->required();
-    addRawOptions(*command, options->raw, volume);
+    command_line::addRawOptions(*command, options->raw, volume);
     command->add_option("--bins", options->bins, "Histogram bins (default 16)")->check(CLI::Range(1, 256));
     command->add_flag("--json", options->json, "Print one JSON object on stdout");
     command->add_flag("--values", options->values,

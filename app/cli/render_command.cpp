@@ -15,7 +15,7 @@
 #include "cli/commands.h"
 #include "cli/source.h"
 #include "cli/timed_extraction.h"
-#include "cli/vocabulary.h"
+#include "command_line/vocabulary.h"
 #include "headless/headless_context.h"
 #include "isotrack/errors.h"
 #include "isotrack/extract.h"
@@ -213,14 +213,15 @@ RunCommand addRenderCommand(CLI::App& app) {
     CLI::App* command =
         app.add_subcommand("render", "Draw the isosurfaces into a PNG, headless (EGL or OSMesa, no display needed)");
     addSourceOptions(*command, options->source);
-    addMethodOption(*command, options->method,
-                    "mc (default): every cell as one surface; track: the surface through --seed (required); all: "
-                    "every surface, each in its own colour, largest first",
-                    {Method::Exhaustive, Method::Track, Method::All});
+    command_line::addMethodOption(
+        *command, options->method,
+        "mc (default): every cell as one surface; track: the surface through --seed (required); all: "
+        "every surface, each in its own colour, largest first",
+        {Method::Exhaustive, Method::Track, Method::All});
     command->add_option("--seed", options->seed,
                         "X,Y,Z: world point near the surface to track, required by --method track (and used by it "
                         "only)");
-    addTableOption(*command, options->table);
+    command_line::addTableOption(*command, options->table);
     command->add_option("--out", options->out, "The PNG file to write")->required();
     command->add_option("--size", options->size, "WIDTHxHEIGHT in pixels, each 1..8192 (default 640x480)");
     command->add_option("--camera", options->camera,

@@ -1,13 +1,16 @@
 #pragma once
 // The volume a command works on: a file (--volume) or a built-in field (--field),
 // and the isovalue (--iso, defaulting to the field's own, or to a file's suggested
-// isovalue: core's suggestIsovalue, the valley above the histogram's tallest peak).
-// A headerless file is read as raw samples when its layout is given with --dims.
+// isovalue: core's isovalueSuggestion, isotrack/isovalue.h, the valley above the
+// histogram's tallest peak, else Otsu's threshold). Loading is core's
+// (isotrack/source.h); a headerless file is read as raw samples when its layout
+// is given with --dims (command_line/raw_options.h).
 #include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "command_line/raw_options.h"
 #include "isotrack/dicom.h"
 #include "isotrack/orientation.h"
 #include "isotrack/volume.h"
@@ -19,36 +22,18 @@ class Option;
 
 namespace isotrack::cli {
 
-// --dims NX,NY,NZ --type T [--spacing SX,SY,SZ] [--endian little|big]; and for a
-// DICOM folder or DICOMDIR, --series UID|N.
-struct RawOptions {
-    std::vector<int> dims;  // empty: the file has a header, the extension picks the loader
-    std::string type;
-    std::vector<double> spacing;
-    std::string endian = "little";
-    std::string series;    // DICOM: --series UID|N, empty for the largest that forms a volume
-    std::string array;     // .vti: --array NAME, empty for the first one-component PointData array
-    std::size_t time = 0;  // .pvd, 4D NIfTI: --time STEP, the step's index
-};
-
 struct SourceOptions {
     std::string volumePath;
     std::string fieldSpec;
     std::optional<double> iso;
-    RawOptions raw;
+    command_line::RawOptions raw;
 };
 
 // Adds --volume, --field (exactly one required), --iso and the raw layout options to `command`.
 void addSourceOptions(CLI::App& command, SourceOptions& options);
 
-// Adds the raw layout options; they need `volume` (the --volume option).
-void addRawOptions(CLI::App& command, RawOptions& raw, CLI::Option* volume);
-
-// --type's name (scalarTypeName's) as a type; InputError for another.
-ScalarType rawScalarType(const std::string& name);
-
 // Reads the file: as raw samples when raw.dims is set, else by its extension.
-Volume loadVolumeFile(const std::string& path, const RawOptions& raw);
+Volume loadVolumeFile(const std::string& path, const command_line::RawOptions& raw);
 
 struct Source {
     Volume volume;

@@ -1,4 +1,4 @@
-#include "cli/vocabulary.h"
+#include "command_line/vocabulary.h"
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -8,7 +8,7 @@
 
 #include "isotrack/errors.h"
 
-namespace isotrack::cli {
+namespace isotrack::command_line {
 namespace {
 
 // CLI11's "{a,b,c}" after the option in --help.
@@ -95,4 +95,4 @@ CLI::Option* addFrameOption(CLI::App& command, WorldFrame& frame, const std::str
                           kWorldFrames.size()));
 }
 
-}  // namespace isotrack::cli
+}  // namespace isotrack::command_line

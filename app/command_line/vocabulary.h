@@ -19,7 +19,7 @@ class App;
 class Option;
 }  // namespace CLI
 
-namespace isotrack::cli {
+namespace isotrack::command_line {
 
 // "mc, track or all": names joined for help texts and messages.
 std::string listOfNames(const std::vector<std::string>& names);
@@ -40,4 +40,4 @@ CLI::Option* addTableOption(CLI::App& command, TableKind& table);
 // --frame lps|ras|voxel (any case).
 CLI::Option* addFrameOption(CLI::App& command, WorldFrame& frame, const std::string& help);
 
-}  // namespace isotrack::cli
+}  // namespace isotrack::command_line

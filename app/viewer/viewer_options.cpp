@@ -4,8 +4,8 @@
 #include <charconv>
 #include <cmath>
 
-#include "cli/source.h"
-#include "cli/vocabulary.h"
+#include "command_line/raw_options.h"
+#include "command_line/vocabulary.h"
 #include "isotrack/errors.h"
 #include "isotrack/fields.h"
 #include "viewer/viewer.h"
@@ -30,7 +30,7 @@ int parseSide(const std::string& text, const std::string& whole) {
 
 ViewerCommandLine addViewerOptions(CLI::App& app) {
     ViewerCommandLine commandLine{std::make_shared<ViewerOptions>(), std::make_shared<std::string>(),
-                                  std::make_shared<cli::RawOptions>()};
+                                  std::make_shared<command_line::RawOptions>()};
     ViewerOptions& o = *commandLine.options;
     CLI::Option_group* group =
         app.add_option_group("Viewer", "With no subcommand, isotrack opens the interactive viewer (needs a display)");
@@ -38,17 +38,17 @@ ViewerCommandLine addViewerOptions(CLI::App& app) {
     CLI::Option* field = group->add_option(
         "--field", o.fieldSpec, std::string("Open a built-in field NAME[:N] (default ") + kDefaultField + ")");
     volume->excludes(field);
-    cli::addRawOptions(*group, *commandLine.raw, volume);
+    command_line::addRawOptions(*group, *commandLine.raw, volume);
     group->add_option("--iso", o.iso,
                       "Isovalue (default: the field's own, or a file's suggested isovalue, as `isotrack info` "
                       "prints it)");
-    cli::addTableOption(*group, o.table);
+    command_line::addTableOption(*group, o.table);
     commandLine.method =
-        cli::addMethodOption(*group, o.method,
-                             "mc: exhaustive; track: surfaces you click; all: every surface (default); "
-                             "tree: every surface from the contour tree");
-    cli::addFrameOption(*group, o.frame,
-                        "Frame of exported meshes: lps (default, world), ras or voxel; the view stays in the grid");
+        command_line::addMethodOption(*group, o.method,
+                                      "mc: exhaustive; track: surfaces you click; all: every surface (default); "
+                                      "tree: every surface from the contour tree");
+    command_line::addFrameOption(
+        *group, o.frame, "Frame of exported meshes: lps (default, world), ras or voxel; the view stays in the grid");
     group->add_option("--script", o.script, "Run the commands in FILE, one per line, in the window");
     group->add_flag("--json", o.json, "On exit, print a JSON summary (surfaces, CPU and GPU bytes, frames)");
     group->add_option("--profile", o.profile, "Write a Chrome trace of every frame to FILE.json (opens in Perfetto)");
@@ -80,16 +80,9 @@ int runViewerCommand(const ViewerCommandLine& commandLine) {
         options.width = parseSide(size.substr(0, x), size);
         options.height = parseSide(size.substr(x + 1), size);
     }
-    const cli::RawOptions& raw = *commandLine.raw;
+    const command_line::RawOptions& raw = *commandLine.raw;
     options.series = raw.series;
-    if (!raw.dims.empty()) {
-        RawLayout layout;
-        for (std::size_t a = 0; a < 3; ++a) layout.dims[a] = raw.dims.at(a);
-        layout.type = cli::rawScalarType(raw.type);
-        if (!raw.spacing.empty()) layout.spacing = {raw.spacing.at(0), raw.spacing.at(1), raw.spacing.at(2)};
-        layout.bigEndian = raw.endian == "big";
-        options.raw = layout;
-    }
+    if (!raw.dims.empty()) options.raw = command_line::rawLayout(raw);
     return runViewer(options);
 }
 

@@ -8,7 +8,7 @@ namespace CLI {
 class App;
 class Option;
 }  // namespace CLI
-namespace isotrack::cli {
+namespace isotrack::command_line {
 struct RawOptions;
 }
 
@@ -18,9 +18,9 @@ struct ViewerOptions;
 
 struct ViewerCommandLine {
     std::shared_ptr<ViewerOptions> options;
-    std::shared_ptr<std::string> size;     // WIDTHxHEIGHT, parsed by run()
-    std::shared_ptr<cli::RawOptions> raw;  // --dims --type --spacing --endian
-    CLI::Option* method = nullptr;         // --method, to tell a method given from the default
+    std::shared_ptr<std::string> size;              // WIDTHxHEIGHT, parsed by run()
+    std::shared_ptr<command_line::RawOptions> raw;  // --dims --type --spacing --endian, --series
+    CLI::Option* method = nullptr;                  // --method, to tell a method given from the default
 };
 
 // Adds --volume, --field, --iso, --table, --method, --frame, --script, --json,
