@@ -147,8 +147,9 @@ def marching_cubes(
             exactly to float64, ValueError beyond 2**53) or copied (only the
             elements a strided view such as vol[::2] shows).
         level: the isovalue. None takes isotrack's suggested isovalue (the
-            valley above the histogram's tallest peak, the one the command line
-            and viewer open on; scikit-image takes the middle of the range). A
+            valley above the histogram's tallest peak, else Otsu's threshold;
+            the one the command line and viewer open on; scikit-image takes the
+            middle of the range). A
             level outside the finite samples' range raises ValueError, as
             scikit-image does.
         spacing: (z, y, x) distances between samples of a raw array (default

@@ -38,8 +38,9 @@ struct VolumeSource {
 struct LoadedSource {
     Volume volume;
     std::string name;  // Field: "NAME:N", the canonical name; File: its path
-    // Field: the field's own isovalue. File: suggestIsovalue's (isotrack/isovalue.h,
-    // the valley above the histogram's tallest peak), none when it has no finite sample.
+    // Field: the field's own isovalue. File: isovalueSuggestion's (isotrack/isovalue.h:
+    // the valley above the histogram's tallest peak, else Otsu's threshold), none when
+    // it has no finite sample.
     std::optional<double> defaultIso;
     // A DICOM file, folder or DICOMDIR: its series, the one read (dicomSeries)
     // and the files skipped, for the front end to report.
