@@ -27,6 +27,7 @@
 #include "isotrack/continuation.h"
 #include "isotrack/contour_tree.h"
 #include "isotrack/extract.h"
+#include "isotrack/follow.h"
 #include "isotrack/io.h"
 #include "isotrack/marching_cubes.h"
 #include "isotrack/mesh_processing.h"
@@ -113,7 +114,7 @@ std::pair<std::size_t, double> parseArcIso(const std::string& item) {
 }
 
 // --arc-iso I:V: surface I (its rank at --iso) at its own isovalue V, followed
-// along the contour tree (followArc); the other surfaces stay as they are.
+// along the contour tree (isotrack/follow.h); the other surfaces stay as they are.
 void applyArcIsovalues(const ExtractOptions& options, const Volume& volume, const ContourTree& tree,
                        std::vector<Surface>& surfaces, std::vector<double>& isovalues) {
     for (const std::string& item : options.arcIso) {
@@ -122,10 +123,9 @@ void applyArcIsovalues(const ExtractOptions& options, const Volume& volume, cons
             throw InputError("--arc-iso " + item + ": there is no surface " + std::to_string(index) + " (" +
                              std::to_string(surfaces.size()) + " at --iso)");
         }
-        const std::size_t arc = followArc(tree, *surfaces[index].stats.arc, iso);
-        if (arc == tree.arcs.size())
-            throw InputError("--arc-iso " + item + ": the surface vanishes before that isovalue");
-        surfaces[index] = trackArc(tree, volume, arc, iso);
+        std::optional<Surface> surface = surfaceAtOwnIsovalue(tree, volume, *surfaces[index].stats.arc, iso);
+        if (!surface) throw InputError("--arc-iso " + item + ": the surface vanishes before that isovalue");
+        surfaces[index] = std::move(*surface);
         isovalues[index] = iso;
     }
 }
