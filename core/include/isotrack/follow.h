@@ -45,6 +45,15 @@
 // isovalue keep their places. So the list does not reshuffle while the
 // isovalue moves.
 //
+// Time steps. The previous surfaces' arcs and own isovalues live on their own
+// volume's contour tree; with FollowRequest::nextStep (the volume is the next
+// time step's, not the same samples at another isovalue) they are not looked
+// up in the new volume's tree: every surface that is not tracked is matched by
+// footprint (a blob that moved less than its own size shares blocks with where
+// it was; one that moved further still holds the other's box centre), and own
+// isovalues lapse, as with another method. Seeds are followed as above: the
+// walk along the gradient finds the surface where the feature moved to.
+//
 // Two steps. extractNext does the volume's work (the extraction, the seeds,
 // the own isovalues: seconds on a large volume); continueSurfaces decides who
 // each surface is (no volume, milliseconds). followSurfaces does both. A front
@@ -177,6 +186,9 @@ struct FollowRequest {
     // Only the surfaces with an isovalue of their own are extracted again; the
     // others keep their meshes (and the common isovalue stays as it was).
     bool onlyOwnIsovalues = false;
+    // The volume is the next time step's (see "Time steps" above): arcs and own
+    // isovalues lapse, surfaces are matched by footprint.
+    bool nextStep = false;
     // When another thread sets it, the work stops at its next check (between
     // passes and seeds) and throws Cancelled.
     const std::atomic<bool>* cancel = nullptr;
@@ -188,6 +200,7 @@ struct NextExtraction {
     double iso = 0.0;
     Method method = Method::All;
     bool onlyOwnIsovalues = false;
+    bool nextStep = false;
     std::shared_ptr<const ContourTree> tree;  // method tree: the tree the surfaces' arcs are on
     // mc: the whole mesh first, then the seeds' surfaces; all and tree: every
     // surface, largest first (the ones own isovalues stand in for left out);

@@ -11,7 +11,13 @@ namespace {
 
 // Own isovalues live on the contour tree's arcs: with another method they lapse.
 bool keepsOwnIsovalue(const PreviousSurface& surface, const NextExtraction& extraction) {
+    if (extraction.nextStep) return false;  // another volume's arcs
     return surface.own.has_value() && (extraction.onlyOwnIsovalues || extraction.method == Method::Tree);
+}
+
+// The previous surfaces' arcs are on the extraction's tree: the same volume, method tree.
+bool sameTree(std::optional<double> previousIso, const NextExtraction& extraction) {
+    return extraction.tree && previousIso && extraction.method == Method::Tree && !extraction.nextStep;
 }
 
 // Kept in its place by its seed or its own isovalue, not matched by footprint or arc.
@@ -118,7 +124,7 @@ Untracked matchUntracked(const std::vector<PreviousSurface>& previous, std::opti
         after.push_back(&extraction.footprints[j]);
     }
     std::optional<std::vector<int>> byArc;  // method tree: exact, by the contour tree's arcs
-    if (extraction.tree && previousIso && extraction.method == Method::Tree) {
+    if (sameTree(previousIso, extraction)) {
         std::vector<std::optional<std::size_t>> oldArcs, newArcs;
         for (std::size_t i : u.previous) oldArcs.push_back(previous[i].arc);
         for (std::size_t j : u.fresh) newArcs.push_back(extraction.surfaces[j].stats.arc);
@@ -140,7 +146,7 @@ std::optional<std::uint32_t> mergedInto(const PreviousSurface& ended, std::optio
                                         const NextExtraction& extraction, const Untracked& u,
                                         const std::vector<PreviousSurface>& previous) {
     int best = -1;
-    if (extraction.tree && previousIso && extraction.method == Method::Tree && ended.arc) {
+    if (sameTree(previousIso, extraction) && ended.arc) {
         const std::size_t arc = followArc(*extraction.tree, *ended.arc, extraction.iso);
         for (std::size_t k = 0; k < u.fresh.size() && best < 0; ++k) {
             if (extraction.surfaces[u.fresh[k]].stats.arc == arc && u.match[k] >= 0) best = static_cast<int>(k);

@@ -55,7 +55,7 @@ void extractEvery(const FollowRequest& request, NextExtraction& out) {
 void followOwnIsovalues(const FollowRequest& request, NextExtraction& out) {
     const bool any = std::any_of(request.previous.begin(), request.previous.end(),
                                  [](const PreviousSurface& s) { return s.own.has_value(); });
-    if (!any || !treeMethod(request)) return;
+    if (!any || !treeMethod(request) || request.nextStep) return;  // another step's arcs: they lapse
     if (!out.tree) out.tree = treeFor(request);
     const ContourTree& tree = *out.tree;
     for (const PreviousSurface& previous : request.previous) {
@@ -121,6 +121,7 @@ NextExtraction extractNext(const FollowRequest& request) {
     out.iso = request.iso;
     out.method = request.method;
     out.onlyOwnIsovalues = request.onlyOwnIsovalues;
+    out.nextStep = request.nextStep;
     if (request.onlyOwnIsovalues) {
         followOwnIsovalues(request, out);
         return out;
