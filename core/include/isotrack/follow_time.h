@@ -8,8 +8,8 @@
 // step; this class only keeps the list between steps and hands out ids:
 //  - the first step's surfaces get ids 0, 1, ... in the extraction's order
 //    (largest first for all and tree); with method track the one tracked
-//    surface is id 0, from the seed (a world point: the crossed edge nearest
-//    it, as extract --method track takes it);
+//    surface is id 0, from the seed (the crossed edge nearest it, as extract
+//    --method track takes it);
 //  - a surface that continues one of the previous step keeps its id; the
 //    further parts of a split (split true) and surfaces born in this step get
 //    new ids, in order, never reused;
@@ -18,6 +18,8 @@
 //    surface it merged into, or Gone when it vanished, and then no longer;
 //  - a tracked surface keeps its seed (and its place, id 0) while it is Gone
 //    or Merged, so it comes back when its feature does.
+// Meshes leave in the frame asked for (LPS by default, as extract --frame);
+// area and enclosed volume are in world units, whatever the frame.
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -25,6 +27,7 @@
 
 #include "isotrack/extract.h"
 #include "isotrack/follow.h"
+#include "isotrack/orientation.h"
 #include "isotrack/surface.h"
 #include "isotrack/tables.h"
 #include "isotrack/volume.h"
@@ -38,8 +41,9 @@ struct TimeFollowOptions {
     Method method = Method::All;  // all, tree or track (mc gives no surfaces to follow)
     TableKind table = TableKind::Consistent;
     int threads = 1;
-    std::optional<Vec3d> seed;    // method track: a world point on the surface to follow
-    double minPersistence = 0.0;  // method tree: each step's tree simplified so
+    std::optional<Vec3d> seed;  // method track: a point on the surface to follow, in `frame`, at the first step
+    WorldFrame frame = WorldFrame::Lps;  // of the seed and of the meshes and bounds handed out
+    double minPersistence = 0.0;         // method tree: each step's tree simplified so
     std::size_t minSize = 0;
 };
 
@@ -52,7 +56,7 @@ struct StepSurface {
     Presence presence = Presence::Shown;
     std::optional<std::uint32_t> mergedInto;  // Merged: the surface that now holds it
     bool ended = false;                       // not followed past this step
-    std::optional<Surface> surface;           // Shown: its mesh (grid-world coordinates) and measures
+    std::optional<Surface> surface;           // Shown: its mesh and bounds in the frame, and its measures
 };
 
 struct StepSurfaces {

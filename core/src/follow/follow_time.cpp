@@ -15,6 +15,22 @@
 #include "isotrack/tracking.h"
 
 namespace isotrack {
+namespace {
+
+// The mesh, and the bounds reported with it, in the frame (after its footprint was taken).
+void toFrame(Surface& surface, const FrameTransform& transform) {
+    if (transform.identity()) return;
+    transformMesh(surface.mesh, transform);
+    SurfaceStats& stats = surface.stats;
+    for (std::size_t v = 0; v < surface.mesh.vertices.size(); ++v)
+        for (std::size_t a = 0; a < 3; ++a) {
+            const double c = surface.mesh.vertices[v].position[a];
+            stats.boundsMin[a] = v == 0 ? c : std::min(stats.boundsMin[a], c);
+            stats.boundsMax[a] = v == 0 ? c : std::max(stats.boundsMax[a], c);
+        }
+}
+
+}  // namespace
 
 SurfaceTimeline::SurfaceTimeline(TimeFollowOptions options) : options_(std::move(options)) {
     const Method method = options_.method;
@@ -49,7 +65,8 @@ StepSurfaces SurfaceTimeline::next(const Volume& volume, double time) {
     }
     if (step_ == 0 && options_.method == Method::Track) {
         // The crossed edge nearest the seed, as extract --method track takes it; its crossing is then followed.
-        const GridEdge edge = nearestCrossedEdge(volume, iso, *options_.seed);
+        const Vec3d seed = gridToFrame(volume, options_.frame).toGrid(*options_.seed);
+        const GridEdge edge = nearestCrossedEdge(volume, iso, seed);
         PreviousSurface tracked;
         tracked.id = nextId_++;
         tracked.seed = edgeCrossing(volume, iso, edge);
@@ -60,6 +77,7 @@ StepSurfaces SurfaceTimeline::next(const Volume& volume, double time) {
     request.previous = shown_;
     NextSurfaces next = followSurfaces(request, step_ > 0 ? std::optional<double>(iso) : std::nullopt);
 
+    const FrameTransform transform = gridToFrame(volume, options_.frame);
     StepSurfaces out;
     out.step = step_;
     out.time = time;
@@ -88,6 +106,7 @@ StepSurfaces SurfaceTimeline::next(const Volume& volume, double time) {
             surface.arc = n.surface->stats.arc;
             footprint = std::move(n.footprint);
             record.surface = std::move(n.surface);
+            toFrame(*record.surface, transform);
         }
         kept.push_back(surface);
         keptFootprints.push_back(std::move(footprint));
