@@ -4,7 +4,7 @@ Raw arrays are indexed (z, y, x) and their coordinates are (z, y, x); a Volume
 (isotrack.load) gives world (x, y, z) in its frame. See help(isotrack).
 """
 import os
-from typing import Any, List, Literal, Optional, Sequence, Tuple, Union, overload
+from typing import Any, Dict, Iterator, List, Literal, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -167,6 +167,25 @@ def load(
     path: Union[str, os.PathLike[str]], frame: Frame = "lps", *, time: int = 0, array: Optional[str] = None
 ) -> Volume: ...
 def steps(path: Union[str, os.PathLike[str]]) -> List[float]: ...
+def load_steps(
+    path: Union[str, os.PathLike[str]], frame: Frame = "lps", *, array: Optional[str] = None
+) -> Iterator[Tuple[float, Volume]]:
+    """Every step in turn as (time, Volume), the next read in the background."""
+def follow_through_time(
+    path: Union[str, os.PathLike[str]],
+    level: Optional[float] = None,
+    *,
+    method: Literal["all", "tree", "track"] = "all",
+    seed: Optional[Sequence[float]] = None,
+    frame: Frame = "lps",
+    array: Optional[str] = None,
+    table: Table = "consistent",
+    threads: int = 0,
+    min_persistence: float = 0.0,
+    min_size: int = 0,
+    surfaces: bool = False,
+) -> Dict[str, Any]:
+    """Every surface of every step with an id that lasts: the records of extract --all-times' track.json."""
 def open(
     path: Union[str, os.PathLike[str]], frame: Frame = "lps", *, time: int = 0, array: Optional[str] = None
 ) -> Volume:

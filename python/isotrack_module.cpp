@@ -36,10 +36,10 @@
 #include "isotrack/orientation.h"
 #include "isotrack/tables.h"
 #include "isotrack/threads.h"
-#include "isotrack/time_series.h"
 #include "isotrack/tracking.h"
 #include "isotrack/volume.h"
 #include "mesh_output.h"
+#include "time_module.h"
 
 namespace isotrack::python {
 namespace {
@@ -61,26 +61,6 @@ py::tuple namesOf(const List& list, NameOf nameOf) {
     py::tuple names(list.size());
     for (std::size_t i = 0; i < list.size(); ++i) names[i] = py::str(nameOf(list[i]));
     return names;
-}
-
-py::dtype dtypeOf(ScalarType type) {
-    switch (type) {
-        case ScalarType::UInt8: return py::dtype::of<std::uint8_t>();
-        case ScalarType::Int8: return py::dtype::of<std::int8_t>();
-        case ScalarType::UInt16: return py::dtype::of<std::uint16_t>();
-        case ScalarType::Int16: return py::dtype::of<std::int16_t>();
-        case ScalarType::UInt32: return py::dtype::of<std::uint32_t>();
-        case ScalarType::Int32: return py::dtype::of<std::int32_t>();
-        case ScalarType::Float32: return py::dtype::of<float>();
-        case ScalarType::Float64: break;
-    }
-    return py::dtype::of<double>();
-}
-
-// A Python-owned heap object (a mesh, a volume) that numpy arrays can take as their base.
-template <class T>
-py::capsule ownerOf(T&& value) {
-    return py::capsule(new T(std::forward<T>(value)), [](void* p) { delete static_cast<T*>(p); });
 }
 
 py::tuple triple(const Vec3d& v) { return py::make_tuple(v[0], v[1], v[2]); }
@@ -252,29 +232,6 @@ py::object trackPy(const py::array& array, double level, const Geometry& geometr
     }
     throwIfMappedDamaged(array);
     return surfaceList(std::move(surfaces), geometry.zyx())[py::int_(0)];
-}
-
-// (samples, spacing, origin, direction columns), isotrack's (x, y, z) and LPS, of
-// time step `time` (0 for a single volume) and, for a .vti, PointData `array`.
-py::tuple loadPy(const std::string& path, std::size_t time, const std::string& array) {
-    Volume volume;
-    {
-        py::gil_scoped_release unlocked;
-        volume = loadTimeStep(readTimeSeries(path), time, array);
-    }
-    const Dims dims = volume.dims();
-    const Vec3d spacing = volume.spacing(), origin = volume.origin();
-    const Mat3d direction = volume.direction();
-    const ScalarType type = volume.type();
-    py::capsule owner = ownerOf(std::move(volume));
-    const Volume& kept = *static_cast<const Volume*>(owner.get_pointer());
-    py::array samples(dtypeOf(type), {py::ssize_t(dims[2]), py::ssize_t(dims[1]), py::ssize_t(dims[0])},
-                      static_cast<const void*>(kept.bytes()), owner);
-    // Read-only: mapped samples live in a read-only map of the file (a write would
-    // crash), and a loaded volume is the file's, in memory or not.
-    samples.attr("setflags")(py::arg("write") = false);
-    return py::make_tuple(samples, triple(spacing), triple(origin),
-                          py::make_tuple(triple(direction[0]), triple(direction[1]), triple(direction[2])));
 }
 
 // The 4x4 matrix (rows) taking a sample's index (i, j, k, 1) to the frame, as core's gridToFrame does.
@@ -572,15 +529,7 @@ PYBIND11_MODULE(_isotrack, m) {
     m.def("edge_ids", &edgeIdsPy, py::arg("edges"), py::arg("shape"));
     m.def("edges_of_ids", &edgesOfIdsPy, py::arg("ids"), py::arg("shape"));
     m.def("nearest_edge", &nearestEdgePy, py::arg("samples"), py::arg("level"), py::arg("geometry"), py::arg("point"));
-    m.def("load", &loadPy, py::arg("path"), py::arg("time"), py::arg("array"));
-    m.def(
-        "steps",
-        [](const std::string& path) {
-            std::vector<std::pair<double, std::string>> steps;
-            for (const TimeStep& step : readTimeSeries(path).steps) steps.emplace_back(step.time, step.file);
-            return steps;
-        },
-        py::arg("path"));
+    addTimeFunctions(m);
     m.def("frame_affine", &frameAffinePy, py::arg("spacing"), py::arg("origin"), py::arg("direction"),
           py::arg("frame"));
     m.def("write_ply", &writePy<writePlyMesh>, py::arg("surface"), py::arg("path"));

@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "isotrack/mesh.h"
@@ -51,6 +52,12 @@ struct PySurface {
     Surface surface;
     bool zyx = true;
 };
+
+// A Python-owned heap object (a mesh, a volume) that numpy arrays can take as their base.
+template <class T>
+py::capsule ownerOf(T&& value) {
+    return py::capsule(new T(std::forward<T>(value)), [](void* p) { delete static_cast<T*>(p); });
+}
 
 // A mesh and its per-vertex values, kept alive by the arrays viewing them.
 struct MeshOutput {

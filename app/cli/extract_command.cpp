@@ -17,6 +17,7 @@
 #include "isotrack/errors.h"
 #include "isotrack/mapped_file.h"
 
+#include "cli/all_times.h"
 #include "cli/commands.h"
 #include "cli/dask_handoff.h"
 #include "cli/dicom_report.h"
@@ -27,6 +28,7 @@
 #include "isotrack/continuation.h"
 #include "isotrack/contour_tree.h"
 #include "isotrack/extract.h"
+#include "isotrack/follow.h"
 #include "isotrack/io.h"
 #include "isotrack/marching_cubes.h"
 #include "isotrack/mesh_processing.h"
@@ -57,6 +59,7 @@ struct ExtractOptions {
     std::string scheduler;            // a Dask scheduler: the extraction runs there (dask_handoff.h)
     bool cap = false;                 // close the surfaces the border cuts
     MeshProcessing processing;        // --smooth, --passband, --decimate, --decimate-error
+    bool allTimes = false;            // every step of a time series, surfaces followed (cli/all_times.h)
 };
 
 struct Extraction {
@@ -113,7 +116,7 @@ std::pair<std::size_t, double> parseArcIso(const std::string& item) {
 }
 
 // --arc-iso I:V: surface I (its rank at --iso) at its own isovalue V, followed
-// along the contour tree (followArc); the other surfaces stay as they are.
+// along the contour tree (isotrack/follow.h); the other surfaces stay as they are.
 void applyArcIsovalues(const ExtractOptions& options, const Volume& volume, const ContourTree& tree,
                        std::vector<Surface>& surfaces, std::vector<double>& isovalues) {
     for (const std::string& item : options.arcIso) {
@@ -122,10 +125,9 @@ void applyArcIsovalues(const ExtractOptions& options, const Volume& volume, cons
             throw InputError("--arc-iso " + item + ": there is no surface " + std::to_string(index) + " (" +
                              std::to_string(surfaces.size()) + " at --iso)");
         }
-        const std::size_t arc = followArc(tree, *surfaces[index].stats.arc, iso);
-        if (arc == tree.arcs.size())
-            throw InputError("--arc-iso " + item + ": the surface vanishes before that isovalue");
-        surfaces[index] = trackArc(tree, volume, arc, iso);
+        std::optional<Surface> surface = surfaceAtOwnIsovalue(tree, volume, *surfaces[index].stats.arc, iso);
+        if (!surface) throw InputError("--arc-iso " + item + ": the surface vanishes before that isovalue");
+        surfaces[index] = std::move(*surface);
         isovalues[index] = iso;
     }
 }
@@ -323,7 +325,40 @@ void checkExtractOptions(const ExtractOptions& options) {
                          tableKindName(options.table));
 }
 
+// --all-times: the options that apply to every step; the others are refused in one line.
+AllTimesOptions allTimesOptions(const ExtractOptions& options) {
+    const MeshProcessing& processing = options.processing;
+    if (!options.out.empty() || options.repeat != 1 || !options.scheduler.empty() || options.cap ||
+        processing.smooths() || processing.decimates() || options.largestArcs > 0 || !options.arcIso.empty())
+        throw InputError(
+            "--all-times writes one file per surface per step: not with --out, --repeat, --scheduler, --cap, "
+            "--smooth, --decimate, --largest-arcs or --arc-iso");
+    checkSourceOptions(options.source);
+    checkMethodSeed(options.method, options.seed);
+    if ((options.minPersistence > 0 || options.minSize > 0) && options.method != Method::Tree)
+        throw InputError(std::string("--min-persistence and --min-size need --method tree, not ") +
+                         methodName(options.method));
+    if (options.method == Method::Tree && options.table != TableKind::Consistent)
+        throw InputError(std::string("--method tree works with the consistent table only, not ") +
+                         tableKindName(options.table));
+    AllTimesOptions all;
+    all.source = options.source;
+    all.method = options.method;
+    all.table = options.table;
+    all.seed = options.seed;
+    all.threads = options.threads;
+    all.outDir = options.outDir;
+    all.extension = surfaceExtension(options);
+    all.frame = options.frame;
+    all.json = options.json;
+    all.minPersistence = options.minPersistence;
+    all.minSize = options.minSize;
+    checkAllTimesOptions(all);
+    return all;
+}
+
 int runExtract(const ExtractOptions& options) {
+    if (options.allTimes) return runAllTimes(allTimesOptions(options));
     checkExtractOptions(options);
     if (wantsDask(options.source.volumePath, options.scheduler)) {
         const DaskRequest dask{options.source.volumePath,
@@ -461,8 +496,10 @@ RunCommand addExtractCommand(CLI::App& app) {
     command->add_option(
         "--out", options->out,
         "Write the mesh to FILE: .ply (binary, with a per-face component for --method all), .obj or .stl");
-    auto* outDir = command->add_option("--out-dir", options->outDir,
-                                       "With --method all: write each surface to DIR/surface_000.EXT, largest first");
+    auto* outDir = command->add_option(
+        "--out-dir", options->outDir,
+        "With --method all or tree: write each surface to DIR/surface_000.EXT, largest first (with --all-times: "
+        "each step's, see there)");
     command
         ->add_option("--out-format", options->outFormat,
                      "Format of the --out-dir files: ply, obj or stl (default: --out's extension, else ply)")
@@ -472,6 +509,12 @@ RunCommand addExtractCommand(CLI::App& app) {
         *command, options->frame,
         "Frame of the written meshes, --seed and bounds: lps (world, default), ras, or voxel (indices)");
     command->add_flag("--json", options->json, "Print one JSON object on stdout");
+    command
+        ->add_flag("--all-times", options->allTimes,
+                   "Every step of a time series (--volume: .pvd, 4D NIfTI or NRRD, numbered files) at one --iso, "
+                   "surfaces followed from step to step (method all, tree or track): --out-dir DIR gets "
+                   "step_SSSS/surface_IIII.EXT (IIII the surface's id) and track.json")
+        ->excludes(command->get_option("--time"));
     command->add_option("--scheduler", options->scheduler,
                         "Run on Dask, one task per chunk: tcp://HOST:PORT, or local:N worker processes (a .zarr "
                         "--volume runs on Dask without it; docs/distributed.md)");

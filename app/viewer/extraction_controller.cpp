@@ -8,8 +8,7 @@ void ExtractionController::setSource(VolumeSource source) {
     iso_.reset();
 }
 
-void ExtractionController::submit(std::vector<SeedRequest> seeds, std::vector<FlexibleRequest> flexible,
-                                  bool onlyFlexible) {
+void ExtractionController::submit(std::vector<PreviousSurface> surfaces, bool onlyOwnIsovalues) {
     ExtractionRequest request;
     request.generation = ++generation_;
     request.source = source_;
@@ -20,9 +19,8 @@ void ExtractionController::submit(std::vector<SeedRequest> seeds, std::vector<Fl
     request.confirmed = confirmed(method_);
     if (!lastRequest_ || supersedes(request, *lastRequest_)) epoch_ = request.generation;
     lastRequest_ = request;
-    request.seeds = std::move(seeds);
-    request.flexible = std::move(flexible);
-    request.onlyFlexible = onlyFlexible;
+    request.surfaces = std::move(surfaces);
+    request.onlyOwnIsovalues = onlyOwnIsovalues;
     worker_.submit(std::move(request));
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // What the user asked to extract, and the worker that makes it so. The viewer
 // says what it wants (source, isovalue, table, method) and submits it with
-// every tracked surface's seed; take() hands back the newest finished result
+// its surfaces' seeds and own isovalues; take() hands back the newest finished result
 // that is still wanted. A request for another source, method or table makes
 // every result of an older request void (the worker cancels the work); one for
 // another isovalue or other seeds does not, so results keep arriving while the
@@ -37,9 +37,9 @@ public:
     void confirm(ui::Method method) { confirmed_.insert(method); }
     bool confirmed(ui::Method method) const { return confirmed_.count(method) != 0; }
 
-    // Sends what is wanted, with the tracked surfaces' seeds and the flexible
-    // surfaces' own isovalues; `onlyFlexible`: only those surfaces changed.
-    void submit(std::vector<SeedRequest> seeds, std::vector<FlexibleRequest> flexible = {}, bool onlyFlexible = false);
+    // Sends what is wanted, with the scene's surfaces (their seeds and own
+    // isovalues); `onlyOwnIsovalues`: only the surfaces with their own isovalue changed.
+    void submit(std::vector<PreviousSurface> surfaces, bool onlyOwnIsovalues = false);
     // The newest finished result that is not void, if one is waiting.
     std::optional<ExtractionResult> take();
 

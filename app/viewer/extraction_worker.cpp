@@ -46,11 +46,6 @@ InputError overBudgetWithoutIso(const LoadedVolume& volume, std::uint64_t memory
                       "--memory-budget");
 }
 
-bool meshHasEdge(const Mesh& mesh, const GridEdge& edge) {
-    return std::any_of(mesh.vertexEdges.begin(), mesh.vertexEdges.end(),
-                       [&](const PackedGridEdge& e) { return GridEdge(e) == edge; });
-}
-
 }  // namespace
 
 std::string displayName(const VolumeSource& source) {
@@ -113,7 +108,7 @@ void ExtractionWorker::submit(ExtractionRequest request) {
             finished_.reset();
         }
         // A flexible surface's request must not drop a waiting request for the whole scene.
-        if (request.onlyFlexible && pending_ && !pending_->onlyFlexible) request.onlyFlexible = false;
+        if (request.onlyOwnIsovalues && pending_ && !pending_->onlyOwnIsovalues) request.onlyOwnIsovalues = false;
         pending_ = std::move(request);
     }
     wake_.notify_all();
@@ -145,17 +140,17 @@ WorkerProgress ExtractionWorker::progress() const {
     if (!progress.busy) return progress;
     progress.what = running_ ? phase_ : "waiting";
     progress.seconds = running_ ? msSince(phaseStart_) / 1000.0 : 0.0;
-    const int total = seedsTotal_.load();
-    const std::uint64_t slabs = march_.slabsTotal.load(std::memory_order_relaxed);
+    const int total = follow_.seedsTotal.load();
+    const std::uint64_t slabs = follow_.march.slabsTotal.load(std::memory_order_relaxed);
     if (running_ && buildingTree_.load()) {
         progress.what = std::string("building the contour tree: ") + contourTreePhaseName(treeBuild_.phase.load());
         progress.fraction = float(treeBuild_.fraction());
     } else if (running_ && slabs > 0) {  // mc, all: how much of the volume has streamed past
-        const std::uint64_t done = std::min(march_.slabsDone.load(std::memory_order_relaxed), slabs);
+        const std::uint64_t done = std::min(follow_.march.slabsDone.load(std::memory_order_relaxed), slabs);
         progress.fraction = float(double(done) / double(slabs));
         if (done == slabs) progress.what += ": marched, finishing";
     } else if (total > 0) {
-        progress.fraction = float(seedsDone_.load()) / float(total);
+        progress.fraction = float(follow_.seedsDone.load()) / float(total);
     } else if (expectedMs_ > 0.0) {
         // The same extraction took expectedMs_ last time; never claim to be done.
         progress.fraction = static_cast<float>(std::min(0.95, progress.seconds * 1000.0 / expectedMs_));
@@ -184,7 +179,7 @@ void ExtractionWorker::run() {
             request = std::move(*pending_);
             pending_.reset();
             running_ = request;
-            running_->seeds.clear();
+            running_->surfaces.clear();
             cancel_ = false;
         }
         std::optional<ExtractionResult> result;
@@ -205,7 +200,6 @@ ExtractionResult ExtractionWorker::work(const ExtractionRequest& request) {
     result.generation = request.generation;
     result.table = request.table;
     result.method = request.method;
-    result.onlyFlexible = request.onlyFlexible;
     try {
         result.volume = volumeFor(request, result.loadMs);
         if (cancelling()) throw Cancelled{};
@@ -219,11 +213,7 @@ ExtractionResult ExtractionWorker::work(const ExtractionRequest& request) {
     } catch (const std::exception& e) {
         result.error = e.what();
     }
-    if (!result.error.empty()) {
-        result.surfaces.clear();
-        result.footprints.clear();
-        result.seeds.clear();
-    }
+    if (!result.error.empty()) result.next = NextExtraction{};
     result.finished = Clock::now();
     return result;
 }
@@ -237,7 +227,6 @@ std::shared_ptr<const LoadedVolume> ExtractionWorker::volumeFor(const Extraction
     cache_.reset();  // the old volume goes before the new one is read
     tree_.reset();
     simplified_.reset();
-    lastTree_.reset();
     treeLayout_.reset();
     fullLayout_.reset();
     simplifiedLayout_.reset();
@@ -247,13 +236,28 @@ std::shared_ptr<const LoadedVolume> ExtractionWorker::volumeFor(const Extraction
 }
 
 void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVolume& loaded, ExtractionResult& result) {
-    const std::string key = loaded.source.text + "|" + ui::methodName(request.method);
+    const std::string key = loaded.source.text + "|" + methodName(request.method);
     const auto known = lastMs_.find(key);
-    setPhase(ui::methodLabels(request.method).work, known != lastMs_.end() ? known->second : 0.0);
+    const double expectedMs = known != lastMs_.end() ? known->second : 0.0;
+    setPhase(ui::methodLabels(request.method).work, expectedMs);
     const Volume& volume = loaded.volume;
     const auto start = Clock::now();
-    if (request.onlyFlexible) {
-        trackFlexible(request, volume, result);
+    FollowRequest follow;
+    follow.volume = &volume;
+    follow.iso = result.iso;
+    follow.method = request.method;
+    follow.table = request.table;
+    follow.threads = threads_;
+    follow.previous = request.surfaces;
+    follow.onlyOwnIsovalues = request.onlyOwnIsovalues;
+    follow.cancel = &cancel_;
+    follow.progress = &follow_;
+    const bool tree = request.method == Method::Tree && request.table == TableKind::Consistent;
+    if (request.onlyOwnIsovalues) {
+        const bool any = std::any_of(request.surfaces.begin(), request.surfaces.end(),
+                                     [](const PreviousSurface& s) { return s.own.has_value(); });
+        if (tree && any) follow.tree = treeOf(volume, request.minPersistence);
+        result.next = extractNext(follow);
         result.extractMs = msSince(start);
         return;
     }
@@ -261,31 +265,12 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
         result.confirmBytes = loaded.mappedBytes;  // the viewer asks first; seeds wait too
         return;
     }
-    march_.slabsDone = 0;
-    march_.slabsTotal = 0;
-    if (request.method != Method::Track) {  // track: only the seeds' surfaces, below
-        ExtractRequest exhaustive;
-        exhaustive.method = request.method;
-        exhaustive.iso = result.iso;
-        exhaustive.table = request.table;
-        exhaustive.threads = threads_;
-        exhaustive.measure = true;
-        exhaustive.cancel = &cancel_;
-        exhaustive.progress = &march_;
-        if (request.method == Method::Tree && request.table == TableKind::Consistent) {
-            exhaustive.tree = &treeOf(volume, request.minPersistence);
-            result.tree = lastTree_;
-            result.treeLayout = treeLayout_;
-            setPhase(ui::methodLabels(request.method).work, known != lastMs_.end() ? known->second : 0.0);
-        }
-        result.surfaces = isotrack::extract(volume, exhaustive);
-        march_.slabsTotal = 0;
+    if (tree) {
+        follow.tree = treeOf(volume, request.minPersistence);
+        result.treeLayout = treeLayout_;
+        setPhase(ui::methodLabels(request.method).work, expectedMs);
     }
-    if (cancelling()) throw Cancelled{};
-    trackFlexible(request, volume, result);
-    trackSeeds(request, volume, result);
-    result.footprints.reserve(result.surfaces.size());
-    for (const Surface& surface : result.surfaces) result.footprints.push_back(footprintOf(surface.mesh));
+    result.next = extractNext(follow);
     result.extractMs = msSince(start);
     lastMs_[key] = result.extractMs;
 }
@@ -293,7 +278,7 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
 // The volume's contour tree, built once (the phase says so while it is built),
 // and its copy simplified by the last persistence asked for. Arcs keep their
 // numbers in the copy (pruned ones are only marked), so surfaces match across both.
-const ContourTree& ExtractionWorker::treeOf(const Volume& volume, double minPersistence) {
+std::shared_ptr<const ContourTree> ExtractionWorker::treeOf(const Volume& volume, double minPersistence) {
     if (!tree_) {
         setPhase("building the contour tree", lastMs_.count("tree") ? lastMs_["tree"] : 0.0);
         const auto start = Clock::now();
@@ -310,7 +295,7 @@ const ContourTree& ExtractionWorker::treeOf(const Volume& volume, double minPers
         fullLayout_ = std::make_shared<const TreeLayout>(layoutContourTree(*tree_, ui::kTreePlotBranches));
         lastMs_["tree"] = msSince(start);
     }
-    lastTree_ = tree_;
+    std::shared_ptr<const ContourTree> tree = tree_;
     if (minPersistence > 0.0) {
         if (!simplified_ || simplifiedBy_ != minPersistence) {
             simplified_.reset();
@@ -321,66 +306,10 @@ const ContourTree& ExtractionWorker::treeOf(const Volume& volume, double minPers
                 std::make_shared<const TreeLayout>(layoutContourTree(*simplified_, ui::kTreePlotBranches));
             simplifiedBy_ = minPersistence;
         }
-        lastTree_ = simplified_;
+        tree = simplified_;
     }
-    treeLayout_ = lastTree_ == simplified_ ? simplifiedLayout_ : fullLayout_;
-    return *lastTree_;
-}
-
-// Each seed is followed to the new isovalue; in `all` it names the surface that
-// holds its edge, otherwise its surface is tracked (once, however many seeds it holds).
-void ExtractionWorker::trackSeeds(const ExtractionRequest& request, const Volume& volume, ExtractionResult& result) {
-    seedsTotal_ = static_cast<int>(request.seeds.size());
-    seedsDone_ = 0;
-    const std::size_t exhaustive = result.surfaces.size();
-    for (const SeedRequest& wanted : request.seeds) {
-        if (cancelling()) throw Cancelled{};
-        ++seedsDone_;
-        SeedResult seed;
-        seed.surface = wanted.surface;
-        seed.seed = followSeed(volume, result.iso, wanted.point);
-        if (seed.seed) {
-            const GridEdge edge = seed.seed->edge;
-            const bool every = request.method == ui::Method::All || request.method == ui::Method::Tree;
-            const std::size_t from = every ? 0 : exhaustive;
-            for (std::size_t i = from; i < result.surfaces.size() && seed.index < 0; ++i) {
-                if (meshHasEdge(result.surfaces[i].mesh, edge)) seed.index = static_cast<int>(i);
-            }
-            if (seed.index < 0 && !every) {
-                result.surfaces.push_back(trackSurface(volume, result.iso, edge, request.table, threads_));
-                seed.index = static_cast<int>(result.surfaces.size() - 1);
-            }
-            if (seed.index < 0) seed.seed.reset();  // all: no surface holds it (cannot happen for a crossed edge)
-        }
-        result.seeds.push_back(seed);
-    }
-    seedsTotal_ = 0;
-}
-
-// Flexible surfaces (Carr & Snoeyink's flexible isosurfaces): each is followed
-// along the tree to its own isovalue and tracked from its arc's seed; the
-// surface it stands in for at the request's isovalue is left out of the rest.
-void ExtractionWorker::trackFlexible(const ExtractionRequest& request, const Volume& volume, ExtractionResult& result) {
-    if (request.flexible.empty() || request.method != Method::Tree || request.table != TableKind::Consistent) return;
-    const ContourTree& tree = treeOf(volume, request.minPersistence);
-    for (const FlexibleRequest& wanted : request.flexible) {
-        if (cancelling()) throw Cancelled{};
-        const std::size_t origin = followArc(tree, wanted.origin, result.iso);
-        const auto displaced = std::remove_if(result.surfaces.begin(), result.surfaces.end(),
-                                              [&](const Surface& s) { return s.stats.arc == origin; });
-        result.surfaces.erase(displaced, result.surfaces.end());
-        if (!wanted.retrack) continue;
-        FlexibleResult flexible;
-        flexible.surface = wanted.surface;
-        flexible.iso = wanted.iso;
-        const std::size_t arc = followArc(tree, wanted.arc, wanted.iso);
-        if (arc < tree.arcs.size()) {
-            Surface surface = trackArc(tree, volume, arc, wanted.iso, threads_);
-            flexible.footprint = footprintOf(surface.mesh);
-            flexible.mesh = std::move(surface);
-        }
-        result.flexible.push_back(std::move(flexible));
-    }
+    treeLayout_ = tree == simplified_ ? simplifiedLayout_ : fullLayout_;
+    return tree;
 }
 
 }  // namespace isotrack::viewer

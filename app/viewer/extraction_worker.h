@@ -2,7 +2,8 @@
 // Long work off the frame loop: loading a volume (or building a field) and
 // extracting its surfaces run on one worker std::thread, so the window keeps
 // drawing while they run. The frame loop submits a request describing the whole
-// scene it wants (source, isovalue, table, method, tracked seeds).
+// scene it wants (source, isovalue, table, method, the surfaces' seeds and own
+// isovalues).
 //
 // Progressive updates: at most one request waits (a newer one replaces it),
 // and the newest finished result is handed to poll() even when a newer request
@@ -11,12 +12,13 @@
 // request only for another isovalue (or other seeds) lets the running one
 // finish, since its result is still worth showing; one for another source,
 // method or table makes the running work pointless, and it is cancelled:
-// core's extract() checks between its passes, the worker between seeds (each
-// seed's surface is tracked on all the worker's threads, as `extract --method
-// track` does). Finished results are uploaded by the frame loop on the main
-// thread (GL objects are created only there). With the contour tree, a request
-// may ask only for the surfaces with an isovalue of their own (flexible
-// isosurfaces): the others are not extracted again.
+// core checks between its passes and between seeds (each seed's surface is
+// tracked on all the worker's threads, as `extract --method track` does).
+// The extraction is one call to core's extractNext (isotrack/follow.h); the
+// frame loop decides who each surface is (continueSurfaces) and uploads the
+// meshes on the main thread (GL objects are created only there). With the
+// contour tree, a request may ask only for the surfaces with an isovalue of
+// their own (flexible isosurfaces): the others are not extracted again.
 //
 // Volumes bigger than memory: a mapped volume (isotrack/mapped_file.h) whose
 // bytes exceed the worker's memory budget is loaded without reading its
@@ -24,7 +26,7 @@
 // isovalue), and a method that reads the whole volume (mc, all, tree) runs on
 // it only when the request is confirmed; unconfirmed, the result carries the
 // bytes it would read and no surfaces, for the viewer to ask. While mc or all
-// march, progress() reports the slabs done (ExtractRequest::progress).
+// march, progress() reports the slabs done (FollowProgress).
 #include <array>
 #include <atomic>
 #include <chrono>
@@ -76,49 +78,18 @@ struct LoadedVolume {
 
 inline constexpr std::size_t kHistogramBins = 128;
 
-// A tracked surface's seed, named by the viewer's surface id.
-struct SeedRequest {
-    std::uint32_t surface = 0;
-    Vec3d point{0, 0, 0};
-};
-
-// A surface with its own isovalue (method tree): shown at `iso` on the arc the
-// contour tree leads `arc` to (followArc); at the request's isovalue it stands
-// in for the surface on the arc `origin` leads to, which is left out.
-struct FlexibleRequest {
-    std::uint32_t surface = 0;
-    std::size_t arc = 0;     // its arc at its last isovalue
-    std::size_t origin = 0;  // its arc when it got its own isovalue
-    double iso = 0.0;
-    bool retrack = true;  // false: its mesh is at `iso` already; only the surface it stands in for is left out
-};
-
 struct ExtractionRequest {
     std::uint64_t generation = 0;
     VolumeSource source;
     std::optional<double> iso;  // nullopt: the source's default
     TableKind table = TableKind::Consistent;
-    ui::Method method = ui::Method::All;
-    double minPersistence = 0.0;            // method tree: the tree simplified by this persistence
-    std::vector<SeedRequest> seeds;         // every tracked surface, in any method
-    std::vector<FlexibleRequest> flexible;  // every surface with its own isovalue (method tree)
-    bool onlyFlexible = false;              // re-track the flexible surfaces, nothing else
-    bool confirmed = false;                 // mc, all or tree may read a volume over the memory budget
-};
-
-// Where a seed went at the result's isovalue.
-struct SeedResult {
-    std::uint32_t surface = 0;         // the viewer's id, as requested
-    std::optional<FollowedSeed> seed;  // nullopt: no surface near it at this isovalue
-    int index = -1;                    // into ExtractionResult::surfaces; shared when seeds' surfaces merged
-};
-
-// A flexible surface at its own isovalue; no surface when it vanished on the way.
-struct FlexibleResult {
-    std::uint32_t surface = 0;
-    double iso = 0.0;
-    std::optional<Surface> mesh;
-    SurfaceFootprint footprint;
+    Method method = Method::All;
+    double minPersistence = 0.0;  // method tree: the tree simplified by this persistence
+    // The scene's surfaces by id, with their seeds and own isovalues (no
+    // footprints: who each surface is is decided when the result is applied).
+    std::vector<PreviousSurface> surfaces;
+    bool onlyOwnIsovalues = false;  // extract the surfaces with their own isovalue again, nothing else
+    bool confirmed = false;         // mc, all or tree may read a volume over the memory budget
 };
 
 struct ExtractionResult {
@@ -126,16 +97,9 @@ struct ExtractionResult {
     std::shared_ptr<const LoadedVolume> volume;
     double iso = 0.0;
     TableKind table = TableKind::Consistent;
-    ui::Method method = ui::Method::All;
-    // mc: the exhaustive mesh first, then the seeds' surfaces; all: largest first
-    // (seeds point into them); track: the seeds' surfaces.
-    std::vector<Surface> surfaces;
-    std::vector<SurfaceFootprint> footprints;      // one per surface
-    std::vector<SeedResult> seeds;                 // one per requested seed
-    std::vector<FlexibleResult> flexible;          // one per flexible surface requested
-    std::shared_ptr<const ContourTree> tree;       // method tree: the volume's tree, to match surfaces by arc
-    std::shared_ptr<const TreeLayout> treeLayout;  // method tree: that tree laid out for the panel's plot
-    bool onlyFlexible = false;                     // the other surfaces were not extracted again
+    Method method = Method::All;
+    NextExtraction next;                           // core's extraction, for continueSurfaces (isotrack/follow.h)
+    std::shared_ptr<const TreeLayout> treeLayout;  // method tree: the volume's tree laid out for the panel's plot
     // Nonzero: the method reads this many bytes of a volume over the memory
     // budget and the request was not confirmed; nothing was extracted.
     std::uint64_t confirmBytes = 0;
@@ -191,9 +155,7 @@ private:
     ExtractionResult work(const ExtractionRequest& request);
     std::shared_ptr<const LoadedVolume> volumeFor(const ExtractionRequest& request, double& loadMs);
     void extract(const ExtractionRequest& request, const LoadedVolume& volume, ExtractionResult& result);
-    const ContourTree& treeOf(const Volume& volume, double minPersistence);
-    void trackSeeds(const ExtractionRequest& request, const Volume& volume, ExtractionResult& result);
-    void trackFlexible(const ExtractionRequest& request, const Volume& volume, ExtractionResult& result);
+    std::shared_ptr<const ContourTree> treeOf(const Volume& volume, double minPersistence);
     bool cancelling() const { return cancel_.load(std::memory_order_relaxed); }
     void setPhase(const std::string& what, double expectedMs);
 
@@ -212,8 +174,7 @@ private:
     std::string phase_;
     Clock::time_point phaseStart_{};
     double expectedMs_ = 0.0;
-    std::atomic<int> seedsDone_{0}, seedsTotal_{0};
-    ExtractProgress march_;          // mc and all: the slabs marched (reset per extraction)
+    FollowProgress follow_;          // the slabs marched (mc and all) and the seeds followed
     ContourTreeProgress treeBuild_;  // the contour tree's build, while buildingTree_
     std::atomic<bool> buildingTree_{false};
 
@@ -222,10 +183,9 @@ private:
     std::shared_ptr<const ContourTree> tree_;        // cache_'s contour tree, built on the first tree request
     std::shared_ptr<const ContourTree> simplified_;  // tree_ simplified by simplifiedBy_ (> 0)
     double simplifiedBy_ = 0.0;
-    std::shared_ptr<const ContourTree> lastTree_;         // the one treeOf returned last
     std::shared_ptr<const TreeLayout> fullLayout_;        // tree_'s plot, laid out with it
     std::shared_ptr<const TreeLayout> simplifiedLayout_;  // simplified_'s plot, laid out with it
-    std::shared_ptr<const TreeLayout> treeLayout_;        // lastTree_'s plot
+    std::shared_ptr<const TreeLayout> treeLayout_;        // the plot of the tree treeOf returned last
     std::map<std::string, double> lastMs_;                // per source and method: how long extraction took last time
 
     std::thread thread_;

@@ -38,11 +38,11 @@ struct GrowthStep {
     std::chrono::nanoseconds extract{0}, upload{0};
 };
 
-// Whether a surface shows a mesh at the current isovalue. A tracked surface
-// keeps its seed when its surface vanishes (Gone) or when another tracked
-// surface's seed lies on the same surface (Merged): it comes back with its own
-// style when the isovalue moves back or the surfaces split again.
-enum class Presence { Shown, Gone, Merged };
+// Whether a surface shows a mesh at the current isovalue is core's Presence
+// (isotrack/follow.h). A tracked surface keeps its seed when its surface
+// vanishes (Gone) or when another tracked surface's seed lies on the same
+// surface (Merged): it comes back with its own style when the isovalue moves
+// back or the surfaces split again.
 
 // Method tree: a surface with an isovalue of its own (a flexible isosurface).
 // `wanted` is the one asked for, `shown` that of the mesh on screen; `origin`

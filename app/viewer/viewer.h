@@ -85,19 +85,13 @@ private:
     void trackFrom(const Vec3d& point, std::optional<std::uint32_t> hit);
     double currentIso() const;  // the isovalue asked for (the slider)
     double shownIso() const;    // the isovalue of the surfaces on screen
-    std::vector<SeedRequest> trackedSeeds() const;
-    std::vector<FlexibleRequest> flexibleSurfaces() const;
+    std::vector<PreviousSurface> previousSurfaces(bool footprints) const;
     void setSurfaceIso(std::uint32_t id, double iso);
 
     // viewer_results.cpp: results applied so that surfaces keep who they are
     void takeResult();
     void applyResult(ExtractionResult result);
-    void placeTracked(ExtractionResult& result, std::vector<std::unique_ptr<SurfaceStructure>>& old,
-                      std::vector<bool>& claimed);
-    void placeFlexible(ExtractionResult& result, std::vector<std::unique_ptr<SurfaceStructure>>& surfaces);
-    void placeUntracked(ExtractionResult& result, std::vector<std::unique_ptr<SurfaceStructure>>& old,
-                        std::vector<bool>& claimed, std::vector<std::unique_ptr<SurfaceStructure>>& next,
-                        std::optional<double> previousIso);
+    void placeSurfaces(NextSurfaces next, bool onlyOwnIsovalues);
 
     // viewer_actions.cpp
     void apply(const ui::Action& action) override;

@@ -14,26 +14,28 @@ double Viewer::currentIso() const {
 
 double Viewer::shownIso() const { return extraction_.shownIso().value_or(currentIso()); }
 
-std::vector<SeedRequest> Viewer::trackedSeeds() const {
-    std::vector<SeedRequest> seeds;
+// The scene's surfaces as core's follow.h names them; the worker gets them
+// without footprints, applyResult with them.
+std::vector<PreviousSurface> Viewer::previousSurfaces(bool footprints) const {
+    std::vector<PreviousSurface> previous;
+    previous.reserve(scene_.surfaces().size());
     for (const auto& surface : scene_.surfaces()) {
-        if (surface->seedPoint()) seeds.push_back(SeedRequest{surface->id(), *surface->seedPoint()});
+        PreviousSurface p;
+        p.id = surface->id();
+        p.seed = surface->seedPoint();
+        if (surface->ownIso) {
+            const OwnIso& own = *surface->ownIso;
+            p.own = OwnIsovalue{own.wanted, own.arc, own.origin, own.wanted != own.shown};
+        }
+        p.arc = surface->stats().arc;
+        if (footprints) p.footprint = &surface->footprint();
+        previous.push_back(p);
     }
-    return seeds;
-}
-
-std::vector<FlexibleRequest> Viewer::flexibleSurfaces() const {
-    std::vector<FlexibleRequest> flexible;
-    for (const auto& surface : scene_.surfaces()) {
-        if (!surface->ownIso) continue;
-        const OwnIso& own = *surface->ownIso;
-        flexible.push_back(FlexibleRequest{surface->id(), own.arc, own.origin, own.wanted, own.wanted != own.shown});
-    }
-    return flexible;
+    return previous;
 }
 
 void Viewer::submit() {
-    extraction_.submit(trackedSeeds(), flexibleSurfaces());
+    extraction_.submit(previousSurfaces(false));
     if (script_) script_->noteSubmitted();
 }
 
@@ -51,7 +53,7 @@ void Viewer::setSurfaceIso(std::uint32_t id, double iso) {
     }
     if (!surface->ownIso) surface->ownIso = OwnIso{iso, shownIso(), *surface->stats().arc, *surface->stats().arc};
     surface->ownIso->wanted = iso;
-    extraction_.submit(trackedSeeds(), flexibleSurfaces(), true);
+    extraction_.submit(previousSurfaces(false), true);
     if (script_) script_->noteSubmitted();
 }
 

@@ -15,10 +15,13 @@ Two kinds of input, two kinds of coordinates:
 Functions: marching_cubes (a drop-in for skimage.measure.marching_cubes),
 track (the one surface through a seed), surfaces (every connected surface),
 load (NRRD, NIfTI, MetaImage, VTK, DICOM; time steps of .pvd and 4D NIfTI, listed by
-steps) and write_ply, write_obj, write_stl.
+steps, read in turn by load_steps), follow_through_time (every surface of
+every step with an id that lasts, as `isotrack extract --all-times` writes its
+track.json) and write_ply, write_obj, write_stl.
 Bad input raises ValueError (TypeError for an argument of the wrong kind);
 unreadable files and write failures raise OSError.
 """
+import math
 import os
 
 import numpy as np
@@ -31,7 +34,7 @@ from . import _isotrack
 
 Surface.__module__ = "isotrack"
 
-__all__ = ["Volume", "Surface", "marching_cubes", "track", "surfaces", "load", "open", "steps", "write_ply", "write_obj", "write_stl"]
+__all__ = ["Volume", "Surface", "marching_cubes", "track", "surfaces", "load", "open", "steps", "load_steps", "follow_through_time", "write_ply", "write_obj", "write_stl"]
 
 _FRAMES = _isotrack.FRAMES  # core's names (isotrack/orientation.h, tables.h, extract.h)
 _TABLES = _isotrack.TABLES
@@ -385,6 +388,104 @@ def steps(path):
         OSError: the file cannot be read or is malformed.
     """
     return [time for time, _ in _isotrack.steps(os.fspath(path))]
+
+
+def _path_of(path):
+    try:
+        name = os.fspath(path)
+    except TypeError:
+        raise TypeError(f"path: expected a path, got {_inputs.shown(path)}") from None
+    return name if isinstance(name, str) else os.fsdecode(name)
+
+
+def _array_of(array):
+    if array is not None and not isinstance(array, str):
+        raise TypeError(f"array: expected a name, got {_inputs.shown(array)}")
+    return array or ""
+
+
+def load_steps(path, frame="lps", *, array=None):
+    """Every step of a time series in turn, as (time, Volume), step 0 first.
+
+    One step is held at a time and the next is read on a background thread
+    while the caller works on this one, so a loop over a long series reads it
+    once and waits little. Every step must share the first step's grid (dims,
+    spacing, origin, direction): a step that does not raises ValueError naming
+    its file and the field, when the loop reaches it. Arguments as for load();
+    steps(path) lists the time values without reading any samples.
+
+    Example:
+        >>> for time, volume in isotrack.load_steps("blobs.pvd"):
+        ...     print(time, len(isotrack.surfaces(volume, 0.5)))
+    """
+    frame = _inputs.choice(frame, "frame", _FRAMES)
+    name = _path_of(path)
+    reader = _isotrack.StepReader(name, _array_of(array))
+    for step in range(len(reader)):
+        samples, spacing, origin, direction = reader.load(step)
+        yield reader.time(step), Volume(samples, (spacing, origin, direction), frame, name)
+
+
+def follow_through_time(
+    path,
+    level=None,
+    *,
+    method="all",
+    seed=None,
+    frame="lps",
+    array=None,
+    table="consistent",
+    threads=0,
+    min_persistence=0.0,
+    min_size=0,
+    surfaces=False,
+):
+    """Every surface of every step of a time series, each with an id that lasts.
+
+    The records `isotrack extract --all-times` writes to track.json, from the
+    same core code: who continues whom is decided as between isovalues in the
+    viewer (footprints shared from step to step; a tracked seed followed to
+    where its feature moved). A surface that continues one of the previous
+    step keeps its id; the further parts of a split and surfaces born in a step
+    get new ids; a surface that ends is listed once more, in the step where it
+    ended, with presence "merged" and merged_into set, or "gone".
+
+    Args:
+        path: a time series (.pvd, 4D NIfTI or NRRD, numbered files) or a volume (one step).
+        level: the isovalue of every step; None takes the first step's suggested one.
+        method: "all" or "tree" (every surface) or "track" (the one through seed).
+        seed: method "track": a world point (x, y, z) in the frame, on the first step.
+        frame: "lps", "ras" or "voxel": of seed and of the surfaces' vertices.
+        array: a .vti's PointData array, as for load().
+        table, threads: as for surfaces(); min_persistence, min_size: method
+            "tree", each step's contour tree simplified as extract's options do.
+        surfaces: also give each shown surface's Surface (key "surface").
+
+    Returns:
+        {"source", "method", "table", "isovalue", "frame", "steps"}: steps a
+        list of {"step", "time", "seconds", "surfaces"}, each surface a dict
+        with "id", "continues", "split", "presence" ("shown", "merged", "gone"),
+        "merged_into", "ended", "triangles", "area", "volume" (enclosed; None
+        when open) and "closed".
+
+    Raises:
+        ValueError: a bad argument, or a step on another grid than the first.
+        OSError: a step cannot be read.
+    """
+    name = _path_of(path)
+    method = _inputs.choice(method, "method", ("all", "tree", "track"))
+    table, frame = _inputs.choice(table, "table", _TABLES), _inputs.choice(frame, "frame", _FRAMES)
+    threads, min_size = _inputs.integer(threads, "threads", 0), _inputs.integer(min_size, "min_size", 0, 2**63 - 1)
+    if (seed is None) == (method == "track"):
+        raise ValueError("follow_through_time: method \"track\" needs a seed, and only it takes one")
+    point = None if seed is None else _inputs.triple(seed, "seed", "(x, y, z)")
+    iso = _inputs.level_of(level)
+    if iso is not None and not math.isfinite(iso):
+        raise ValueError(f"level: must be a finite number, got {iso}")
+    followed = _isotrack.follow_through_time(
+        name, _array_of(array), iso, method, table, threads, point, frame, float(min_persistence), min_size, bool(surfaces)
+    )
+    return dict(source=name, method=method, table=table, isovalue=followed["isovalue"], frame=frame, steps=followed["steps"])
 
 
 def open(path, frame="lps", *, time=0, array=None):  # isotrack.open; this module never calls the builtin

@@ -1,4 +1,5 @@
-// Following seeds and surfaces across isovalues (see follow.h for the rules).
+// Following seeds and surfaces across isovalues: seeds, footprints and the
+// match by footprint (the rules are in isotrack/follow.h).
 #include "isotrack/follow.h"
 
 #include <algorithm>

@@ -1,14 +1,13 @@
-// Identity across isovalues by the contour tree's arcs (viewer/arc_match.h), on
+// Identity across isovalues by the contour tree's arcs (matchSurfacesByArc), on
 // a volume with two peaks joined at a saddle: 9 (three samples above the
 // saddle) and 7 (one), the saddle at 3. Between 3 and 7 there are two surfaces,
 // below 3 one, above 7 only the tall peak's.
 #include <algorithm>
 #include <catch2/catch.hpp>
 
-#include "viewer/arc_match.h"
+#include "isotrack/follow.h"
 
 using namespace isotrack;
-using namespace isotrack::viewer;
 
 namespace {
 
@@ -30,7 +29,7 @@ std::vector<std::optional<std::size_t>> arcsAt(const ContourTree& tree, double v
 
 }  // namespace
 
-TEST_CASE("surfaces keep who they are by their contour-tree arcs", "[viewer][tree]") {
+TEST_CASE("surfaces keep who they are by their contour-tree arcs", "[follow][tree]") {
     const Volume volume = twoPeaks();
     const ContourTree tree = computeContourTree(volume, 1);
     const auto two = arcsAt(tree, 5.0), one = arcsAt(tree, 2.0), tall = arcsAt(tree, 8.0);
@@ -39,18 +38,18 @@ TEST_CASE("surfaces keep who they are by their contour-tree arcs", "[viewer][tre
     REQUIRE(tall.size() == 1);
 
     // No node between the isovalues: each surface is its own continuation.
-    CHECK(matchByArc(tree, 5.0, two, arcsAt(tree, 6.0)) == std::vector<int>{0, 1});
-    CHECK(matchByArc(tree, 5.0, {two[1], two[0]}, arcsAt(tree, 6.0)) == std::vector<int>{1, 0});
+    CHECK(matchSurfacesByArc(tree, 5.0, two, arcsAt(tree, 6.0)) == std::vector<int>{0, 1});
+    CHECK(matchSurfacesByArc(tree, 5.0, {two[1], two[0]}, arcsAt(tree, 6.0)) == std::vector<int>{1, 0});
     // Down through the saddle they merge: the merged surface continues the branch sweeping the most samples.
-    CHECK(matchByArc(tree, 5.0, two, one) == std::vector<int>{0});
-    CHECK(matchByArc(tree, 5.0, {two[1], two[0]}, one) == std::vector<int>{1});
+    CHECK(matchSurfacesByArc(tree, 5.0, two, one) == std::vector<int>{0});
+    CHECK(matchSurfacesByArc(tree, 5.0, {two[1], two[0]}, one) == std::vector<int>{1});
     // Up through it the surface splits: both parts continue it.
-    CHECK(matchByArc(tree, 2.0, one, two) == std::vector<int>{0, 0});
+    CHECK(matchSurfacesByArc(tree, 2.0, one, two) == std::vector<int>{0, 0});
     // Down past the small peak a surface is born there: it continues nothing.
-    CHECK(matchByArc(tree, 8.0, tall, two) == std::vector<int>{0, -1});
+    CHECK(matchSurfacesByArc(tree, 8.0, tall, two) == std::vector<int>{0, -1});
     // Up past it that surface ends: nothing continues it.
-    CHECK(matchByArc(tree, 5.0, two, tall) == std::vector<int>{0});
+    CHECK(matchSurfacesByArc(tree, 5.0, two, tall) == std::vector<int>{0});
     // A surface from another method has no arc: the caller matches by footprint.
-    CHECK_FALSE(matchByArc(tree, 5.0, {std::nullopt, two[1]}, two).has_value());
-    CHECK_FALSE(matchByArc(tree, 5.0, two, {two[0], std::nullopt}).has_value());
+    CHECK_FALSE(matchSurfacesByArc(tree, 5.0, {std::nullopt, two[1]}, two).has_value());
+    CHECK_FALSE(matchSurfacesByArc(tree, 5.0, two, {two[0], std::nullopt}).has_value());
 }
