@@ -15,7 +15,6 @@
 #include "isotrack/extract.h"
 #include "isotrack/isovalue.h"
 #include "isotrack/source.h"
-#include "ui/method_labels.h"
 
 namespace isotrack::viewer {
 namespace {
@@ -86,8 +85,11 @@ std::shared_ptr<LoadedVolume> loadForView(const VolumeSource& source, bool isoGi
     return loaded;
 }
 
-ExtractionWorker::ExtractionWorker(int threads, std::uint64_t memoryBudget)
-    : threads_(std::max(threads, 1)), memoryBudget_(memoryBudget), thread_([this] { run(); }) {}
+ExtractionWorker::ExtractionWorker(int threads, std::uint64_t memoryBudget, std::size_t plotBranches)
+    : threads_(std::max(threads, 1)),
+      memoryBudget_(memoryBudget),
+      plotBranches_(plotBranches),
+      thread_([this] { run(); }) {}
 
 ExtractionWorker::~ExtractionWorker() {
     {
@@ -239,7 +241,7 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
     const std::string key = loaded.source.text + "|" + methodName(request.method);
     const auto known = lastMs_.find(key);
     const double expectedMs = known != lastMs_.end() ? known->second : 0.0;
-    setPhase(ui::methodLabels(request.method).work, expectedMs);
+    setPhase(request.work, expectedMs);
     const Volume& volume = loaded.volume;
     const auto start = Clock::now();
     FollowRequest follow;
@@ -268,7 +270,7 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
     if (tree) {
         follow.tree = treeOf(volume, request.minPersistence);
         result.treeLayout = treeLayout_;
-        setPhase(ui::methodLabels(request.method).work, expectedMs);
+        setPhase(request.work, expectedMs);
     }
     result.next = extractNext(follow);
     result.extractMs = msSince(start);
@@ -292,7 +294,7 @@ std::shared_ptr<const ContourTree> ExtractionWorker::treeOf(const Volume& volume
             throw;
         }
         buildingTree_ = false;
-        fullLayout_ = std::make_shared<const TreeLayout>(layoutContourTree(*tree_, ui::kTreePlotBranches));
+        fullLayout_ = std::make_shared<const TreeLayout>(layoutContourTree(*tree_, plotBranches_));
         lastMs_["tree"] = msSince(start);
     }
     std::shared_ptr<const ContourTree> tree = tree_;
@@ -302,8 +304,7 @@ std::shared_ptr<const ContourTree> ExtractionWorker::treeOf(const Volume& volume
             ContourTree simplified = *tree_;
             simplifyContourTree(simplified, minPersistence);
             simplified_ = std::make_shared<const ContourTree>(std::move(simplified));
-            simplifiedLayout_ =
-                std::make_shared<const TreeLayout>(layoutContourTree(*simplified_, ui::kTreePlotBranches));
+            simplifiedLayout_ = std::make_shared<const TreeLayout>(layoutContourTree(*simplified_, plotBranches_));
             simplifiedBy_ = minPersistence;
         }
         tree = simplified_;

@@ -31,6 +31,7 @@
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -51,8 +52,6 @@
 #include "isotrack/tracking.h"
 #include "isotrack/tree_layout.h"
 #include "isotrack/volume.h"
-#include "ui/panel_state.h"
-#include "ui/tree_plot.h"
 
 namespace isotrack::viewer {
 
@@ -84,6 +83,7 @@ struct ExtractionRequest {
     std::optional<double> iso;  // nullopt: the source's default
     TableKind table = TableKind::Consistent;
     Method method = Method::All;
+    std::string work;             // what the progress calls the extraction while it runs
     double minPersistence = 0.0;  // method tree: the tree simplified by this persistence
     // The scene's surfaces by id, with their seeds and own isovalues (no
     // footprints: who each surface is is decided when the result is applied).
@@ -131,7 +131,8 @@ std::uint64_t defaultMemoryBudget();
 
 class ExtractionWorker {
 public:
-    ExtractionWorker(int threads, std::uint64_t memoryBudget);
+    // A contour tree is laid out for a plot of its `plotBranches` most persistent branches.
+    ExtractionWorker(int threads, std::uint64_t memoryBudget, std::size_t plotBranches = SIZE_MAX);
     ~ExtractionWorker();  // cancels the current pass and waits for it to end
     ExtractionWorker(const ExtractionWorker&) = delete;
     ExtractionWorker& operator=(const ExtractionWorker&) = delete;
@@ -161,6 +162,7 @@ private:
 
     const int threads_;
     const std::uint64_t memoryBudget_;
+    const std::size_t plotBranches_;
     mutable std::mutex mutex_;
     std::condition_variable wake_;
     std::optional<ExtractionRequest> pending_;
