@@ -52,30 +52,9 @@
 #include "isotrack/tracking.h"
 #include "isotrack/tree_layout.h"
 #include "isotrack/volume.h"
+#include "viewer/volume_cache.h"
 
 namespace isotrack::viewer {
-
-// What the panel calls a source: the field spec, or the file's name.
-std::string displayName(const VolumeSource& source);
-
-// A loaded volume and what the panel shows about it.
-struct LoadedVolume {
-    VolumeSource source;
-    Volume volume;
-    std::array<double, 2> range{0.0, 0.0};
-    std::vector<float> histogram;       // sample counts in kHistogramBins bins across `range`
-    double defaultIso = 0.0;            // a field's own, or suggestIsovalue for a file
-    std::vector<DicomSkipped> skipped;  // a DICOM folder or DICOMDIR: the files left out, and why
-    // A mapped file's samples (isotrack/mapped_file.h): its bytes, and whether
-    // they exceed the memory budget. Over it, the samples were not read:
-    // `range`, `histogram` and `defaultIso` are unknown (valuesRead false).
-    const MappedFile* mapped = nullptr;
-    std::uint64_t mappedBytes = 0;
-    bool overBudget = false;
-    bool valuesRead = true;
-};
-
-inline constexpr std::size_t kHistogramBins = 128;
 
 struct ExtractionRequest {
     std::uint64_t generation = 0;
@@ -119,16 +98,6 @@ struct WorkerProgress {
 // volume, method or table (a new isovalue or seed does not).
 bool supersedes(const ExtractionRequest& newer, const ExtractionRequest& older);
 
-// Loads a source as the viewer shows it (volume, range, histogram, default
-// isovalue). A mapped volume over `memoryBudget` bytes is left unread, and
-// needs `isoGiven` (InputError naming the file, its size and the budget).
-std::shared_ptr<LoadedVolume> loadForView(const VolumeSource& source, bool isoGiven = false,
-                                          std::uint64_t memoryBudget = std::numeric_limits<std::uint64_t>::max());
-
-// The viewer's memory budget when none is given: half of the memory the system
-// can give without swapping (isotrack::availableMemoryBytes).
-std::uint64_t defaultMemoryBudget();
-
 class ExtractionWorker {
 public:
     // A contour tree is laid out for a plot of its `plotBranches` most persistent branches.
@@ -156,13 +125,12 @@ private:
     ExtractionResult work(const ExtractionRequest& request);
     std::shared_ptr<const LoadedVolume> volumeFor(const ExtractionRequest& request, double& loadMs);
     void extract(const ExtractionRequest& request, const LoadedVolume& volume, ExtractionResult& result);
-    std::shared_ptr<const ContourTree> treeOf(const Volume& volume, double minPersistence);
+    VolumeCache::Tree treeOf(double minPersistence);
     bool cancelling() const { return cancel_.load(std::memory_order_relaxed); }
     void setPhase(const std::string& what, double expectedMs);
 
     const int threads_;
     const std::uint64_t memoryBudget_;
-    const std::size_t plotBranches_;
     mutable std::mutex mutex_;
     std::condition_variable wake_;
     std::optional<ExtractionRequest> pending_;
@@ -181,14 +149,8 @@ private:
     std::atomic<bool> buildingTree_{false};
 
     // Worker-thread only.
-    std::shared_ptr<const LoadedVolume> cache_;
-    std::shared_ptr<const ContourTree> tree_;        // cache_'s contour tree, built on the first tree request
-    std::shared_ptr<const ContourTree> simplified_;  // tree_ simplified by simplifiedBy_ (> 0)
-    double simplifiedBy_ = 0.0;
-    std::shared_ptr<const TreeLayout> fullLayout_;        // tree_'s plot, laid out with it
-    std::shared_ptr<const TreeLayout> simplifiedLayout_;  // simplified_'s plot, laid out with it
-    std::shared_ptr<const TreeLayout> treeLayout_;        // the plot of the tree treeOf returned last
-    std::map<std::string, double> lastMs_;                // per source and method: how long extraction took last time
+    VolumeCache cache_;
+    std::map<std::string, double> lastMs_;  // per source and method: how long extraction took last time
 
     std::thread thread_;
 };
