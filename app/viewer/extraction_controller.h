@@ -1,25 +1,56 @@
 #pragma once
-// What the user asked to extract, and the worker that makes it so. The viewer
-// says what it wants (source, isovalue, table, method) and submits it with
-// its surfaces' seeds and own isovalues; take() hands back the newest finished result
-// that is still wanted. A request for another source, method or table makes
-// every result of an older request void (the worker cancels the work); one for
-// another isovalue or other seeds does not, so results keep arriving while the
-// isovalue is dragged. It also keeps what is shown: the isovalue of the last
-// result applied and how many results were applied.
+// The extraction controller: what the user asked to extract, the worker that
+// makes it so, and its results applied to the scene so that surfaces keep who
+// they are.
+//
+// Wanted: the source, isovalue, table and method (and the tree's
+// simplification); submit() sends them with the scene's surfaces (their seeds
+// and own isovalues). A request for another source, method or table makes
+// every result of an older request void (the worker cancels the work); one
+// for another isovalue or other seeds does not, so results keep arriving while
+// the isovalue is dragged.
+//
+// Shown: takeResult() applies the newest finished result still wanted. Who
+// each surface is, core decides (isotrack/follow.h: continueSurfaces, against
+// the scene as it is when the result arrives); here its answer is mapped onto
+// the scene's structures. A surface that continues one keeps that one's
+// structure: its id (and so the selection), colour, visibility and offset;
+// further parts of a split get new ids and the same look; new surfaces get new
+// ids and fresh colours (the whole mesh of mc the first colour); the surfaces
+// that ended are dropped. Tracked surfaces are updated first, then those with
+// their own isovalue, then the others in list order, so the GPU arena fills as
+// it always has.
+//
+// A volume over the memory budget: a method that reads it whole waits for the
+// user's word (confirmation()); not chosen by anyone, the viewer goes to track.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <memory>
 #include <optional>
 #include <set>
+#include <string>
 #include <vector>
 
+#include "render/renderer.h"
 #include "viewer/extraction_worker.h"
+#include "viewer/profiler.h"
+#include "viewer/scene.h"
+#include "viewer/status_line.h"
 
 namespace isotrack::viewer {
 
+class ScriptRunner;
+
 class ExtractionController {
 public:
-    ExtractionController(int threads, std::uint64_t memoryBudget) : worker_(threads, memoryBudget) {}
+    ExtractionController(int threads, std::uint64_t memoryBudget, Scene& scene, render::Renderer& renderer,
+                         Profiler& profiler, StatusLine& status);
+
+    // A --script session: requests belong to its commands, and errors are its errors.
+    void attachScript(ScriptRunner* script) { script_ = script; }
+    // Called when a result brings a new volume, after the scene let go of the old one's surfaces.
+    void onNewVolume(std::function<void()> callback) { onNewVolume_ = std::move(callback); }
 
     // ---- what is wanted ----
     const VolumeSource& source() const { return source_; }
@@ -28,47 +59,83 @@ public:
     void setIso(double iso) { iso_ = iso; }
     TableKind table() const { return table_; }
     void setTable(TableKind table) { table_ = table; }
-    ui::Method method() const { return method_; }
-    void setMethod(ui::Method method) { method_ = method; }
+    Method method() const { return method_; }
+    void setMethod(Method method) { method_ = method; }
     double minPersistence() const { return minPersistence_; }  // method tree: 0, or the simplification's
     void setMinPersistence(double persistence) { minPersistence_ = persistence; }
-    // The user agreed that `method` may read the whole source (a volume over
-    // the memory budget); asked once per source and method.
-    void confirm(ui::Method method) { confirmed_.insert(method); }
-    bool confirmed(ui::Method method) const { return confirmed_.count(method) != 0; }
 
-    // Sends what is wanted, with the scene's surfaces (their seeds and own
-    // isovalues); `onlyOwnIsovalues`: only the surfaces with their own isovalue changed.
-    void submit(std::vector<PreviousSurface> surfaces, bool onlyOwnIsovalues = false);
-    // The newest finished result that is not void, if one is waiting.
-    std::optional<ExtractionResult> take();
+    // Another source, its default isovalue, submitted.
+    void load(VolumeSource source);
+    // Sends what is wanted with the scene's surfaces.
+    void submit();
+    // Flexible isosurfaces: surface `id` at its own isovalue; only it is extracted again.
+    void setSurfaceIso(std::uint32_t id, double iso);
+
+    // ---- a volume over the memory budget ----
+    struct Confirmation {
+        Method method = Method::All;
+        std::uint64_t bytes = 0;
+    };
+    const std::optional<Confirmation>& confirmation() const { return confirmation_; }
+    void confirm();                    // the method waiting may read the whole volume (InputError if none waits)
+    void cancelConfirmation();         // back to track
+    void chooseMethod(Method method);  // the user's choice, submitted: not switched to track on its own
+    void setMethodChosen() { methodChosen_ = true; }  // --method was given
+    std::uint64_t memoryBudget() const { return memoryBudget_; }
 
     // ---- what is shown ----
-    void applied(const ExtractionResult& result);  // the viewer shows this result now
-    const std::optional<double>& shownIso() const { return shownIso_; }
+    // Applies the newest finished result that is still wanted, if one waits.
+    void takeResult();
+    double currentIso() const;  // the isovalue asked for (the slider)
+    double shownIso() const;    // the isovalue of the surfaces on screen
     std::size_t appliedCount() const { return applied_; }
     double lastMs() const { return lastMs_; }
+    const std::string& error() const { return error_; }
+    const std::shared_ptr<const TreeLayout>& treeLayout() const { return treeLayout_; }
+    // The palette rank for the next new surface.
+    std::size_t takeColour() { return nextColour_++; }
 
     WorkerProgress progress() const { return worker_.progress(); }
     bool busy() const { return worker_.busy(); }
     std::size_t cancelledCount() const { return worker_.cancelledCount(); }
 
 private:
+    void send(bool onlyOwnIsovalues);
+    std::vector<PreviousSurface> previousSurfaces(bool footprints) const;
+    void applyResult(ExtractionResult result);
+    void askConfirmation(const ExtractionResult& result);
+    void reportSkipped(const LoadedVolume& volume);
+    void placeSurfaces(NextSurfaces next, bool onlyOwnIsovalues);
+
     ExtractionWorker worker_;
+    Scene& scene_;
+    render::Renderer& renderer_;
+    Profiler& profiler_;
+    StatusLine& status_;
+    ScriptRunner* script_ = nullptr;
+    std::function<void()> onNewVolume_;
+
     VolumeSource source_;
     std::optional<double> iso_;
     TableKind table_ = TableKind::Consistent;
-    ui::Method method_ = ui::Method::All;
+    Method method_ = Method::All;
     double minPersistence_ = 0.0;
-    std::set<ui::Method> confirmed_;  // for source_
+    std::set<Method> confirmed_;  // for source_: methods the user let read the whole volume
 
     std::uint64_t generation_ = 0;
     std::uint64_t epoch_ = 0;  // results of requests before this one are void
     std::optional<ExtractionRequest> lastRequest_;
 
+    std::uint64_t memoryBudget_ = 0;
+    std::optional<Confirmation> confirmation_;
+    bool methodChosen_ = false;  // --method, or a method picked since: not switched to track on its own
+
     std::optional<double> shownIso_;
     std::size_t applied_ = 0;
     double lastMs_ = 0.0;
+    std::string error_;
+    std::size_t nextColour_ = 0;
+    std::shared_ptr<const TreeLayout> treeLayout_;  // the volume's contour tree laid out (method tree)
 };
 
 }  // namespace isotrack::viewer

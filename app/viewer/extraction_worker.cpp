@@ -8,14 +8,11 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
-#include <filesystem>
 #include <limits>
 
 #include "isotrack/errors.h"
 #include "isotrack/extract.h"
-#include "isotrack/isovalue.h"
 #include "isotrack/source.h"
-#include "ui/method_labels.h"
 
 namespace isotrack::viewer {
 namespace {
@@ -28,66 +25,17 @@ double msSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-std::vector<float> histogramOf(const Volume& volume, const std::array<double, 2>& range) {
-    const std::vector<std::uint64_t> counts = sampleHistogram(volume, range, kHistogramBins);
-    return std::vector<float>(counts.begin(), counts.end());
-}
-
-std::string gib(std::uint64_t bytes) {
-    char text[32];
-    std::snprintf(text, sizeof(text), "%.3g GiB", double(bytes) / double(std::uint64_t(1) << 30));
-    return text;
-}
-
-// A volume over the budget has no default isovalue (it would read every sample).
-InputError overBudgetWithoutIso(const LoadedVolume& volume, std::uint64_t memoryBudget) {
-    return InputError(volume.source.text + ": " + gib(volume.mappedBytes) + " mapped, over the memory budget of " +
-                      gib(memoryBudget) + ": give --iso (a default isovalue reads every sample) or a larger " +
-                      "--memory-budget");
-}
-
 }  // namespace
-
-std::string displayName(const VolumeSource& source) {
-    if (source.kind == VolumeSource::Kind::Field) return source.text;
-    return std::filesystem::path(source.text).filename().string();
-}
 
 bool supersedes(const ExtractionRequest& newer, const ExtractionRequest& older) {
     return newer.source != older.source || newer.method != older.method || newer.table != older.table;
 }
 
-std::uint64_t defaultMemoryBudget() { return availableMemoryBytes() / 2; }
-
-// The samples are read (range, histogram, and for a file core's suggested
-// isovalue) unless the volume is mapped and over the budget: then nothing is
-// read until an extraction goes there, and the isovalue must be given.
-std::shared_ptr<LoadedVolume> loadForView(const VolumeSource& source, bool isoGiven, std::uint64_t memoryBudget) {
-    LoadedSource read = isotrack::loadSource(source, DefaultIso::Skip);
-    auto loaded = std::make_shared<LoadedVolume>();
-    loaded->source = source;
-    loaded->volume = std::move(read.volume);
-    if (read.dicom) loaded->skipped = read.dicom->skipped;
-    loaded->mapped = loaded->volume.mappedFile();
-    if (loaded->mapped) {
-        loaded->mappedBytes = loaded->mapped->size();
-        loaded->overBudget = loaded->mappedBytes > memoryBudget;
-    }
-    if (loaded->overBudget) {
-        if (!isoGiven) throw overBudgetWithoutIso(*loaded, memoryBudget);
-        loaded->valuesRead = false;
-        loaded->defaultIso = std::numeric_limits<double>::quiet_NaN();
-        return loaded;
-    }
-    loaded->range = loaded->volume.range();
-    if (!std::isfinite(loaded->range[0])) throw InputError(source.text + ": no finite samples");
-    loaded->defaultIso = read.defaultIso ? *read.defaultIso : suggestIsovalue(loaded->volume, loaded->range);
-    loaded->histogram = histogramOf(loaded->volume, loaded->range);
-    return loaded;
-}
-
-ExtractionWorker::ExtractionWorker(int threads, std::uint64_t memoryBudget)
-    : threads_(std::max(threads, 1)), memoryBudget_(memoryBudget), thread_([this] { run(); }) {}
+ExtractionWorker::ExtractionWorker(int threads, std::uint64_t memoryBudget, std::size_t plotBranches)
+    : threads_(std::max(threads, 1)),
+      memoryBudget_(memoryBudget),
+      cache_(memoryBudget, plotBranches),
+      thread_([this] { run(); }) {}
 
 ExtractionWorker::~ExtractionWorker() {
     {
@@ -220,26 +168,20 @@ ExtractionResult ExtractionWorker::work(const ExtractionRequest& request) {
 
 std::shared_ptr<const LoadedVolume> ExtractionWorker::volumeFor(const ExtractionRequest& request, double& loadMs) {
     const VolumeSource& source = request.source;
-    if (cache_ && cache_->source == source) return cache_;
+    if (std::shared_ptr<const LoadedVolume> kept = cache_.find(source)) return kept;
     setPhase(source.kind == VolumeSource::Kind::Field ? "building " + source.text : "loading " + displayName(source),
              0.0);
     const auto start = Clock::now();
-    cache_.reset();  // the old volume goes before the new one is read
-    tree_.reset();
-    simplified_.reset();
-    treeLayout_.reset();
-    fullLayout_.reset();
-    simplifiedLayout_.reset();
-    cache_ = loadForView(source, request.iso.has_value(), memoryBudget_);
+    std::shared_ptr<const LoadedVolume> loaded = cache_.load(source, request.iso.has_value());
     loadMs = msSince(start);
-    return cache_;
+    return loaded;
 }
 
 void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVolume& loaded, ExtractionResult& result) {
     const std::string key = loaded.source.text + "|" + methodName(request.method);
     const auto known = lastMs_.find(key);
     const double expectedMs = known != lastMs_.end() ? known->second : 0.0;
-    setPhase(ui::methodLabels(request.method).work, expectedMs);
+    setPhase(request.work, expectedMs);
     const Volume& volume = loaded.volume;
     const auto start = Clock::now();
     FollowRequest follow;
@@ -256,7 +198,7 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
     if (request.onlyOwnIsovalues) {
         const bool any = std::any_of(request.surfaces.begin(), request.surfaces.end(),
                                      [](const PreviousSurface& s) { return s.own.has_value(); });
-        if (tree && any) follow.tree = treeOf(volume, request.minPersistence);
+        if (tree && any) follow.tree = treeOf(request.minPersistence).tree;
         result.next = extractNext(follow);
         result.extractMs = msSince(start);
         return;
@@ -266,50 +208,34 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
         return;
     }
     if (tree) {
-        follow.tree = treeOf(volume, request.minPersistence);
-        result.treeLayout = treeLayout_;
-        setPhase(ui::methodLabels(request.method).work, expectedMs);
+        const VolumeCache::Tree built = treeOf(request.minPersistence);
+        follow.tree = built.tree;
+        result.treeLayout = built.layout;
+        setPhase(request.work, expectedMs);
     }
     result.next = extractNext(follow);
     result.extractMs = msSince(start);
     lastMs_[key] = result.extractMs;
 }
 
-// The volume's contour tree, built once (the phase says so while it is built),
-// and its copy simplified by the last persistence asked for. Arcs keep their
-// numbers in the copy (pruned ones are only marked), so surfaces match across both.
-std::shared_ptr<const ContourTree> ExtractionWorker::treeOf(const Volume& volume, double minPersistence) {
-    if (!tree_) {
+// The volume's contour tree, built once (the phase says so while it is built,
+// and a new volume or method cancels it), simplified as asked.
+VolumeCache::Tree ExtractionWorker::treeOf(double minPersistence) {
+    if (!cache_.hasTree()) {
         setPhase("building the contour tree", lastMs_.count("tree") ? lastMs_["tree"] : 0.0);
         const auto start = Clock::now();
-        // Its progress shows in the panel; a new volume or method cancels it (Cancelled).
         treeBuild_.cancel = &cancel_;
         buildingTree_ = true;
         try {
-            tree_ = std::make_shared<const ContourTree>(computeContourTree(volume, threads_, &treeBuild_));
+            cache_.buildTree(threads_, &treeBuild_);
         } catch (...) {
             buildingTree_ = false;
             throw;
         }
         buildingTree_ = false;
-        fullLayout_ = std::make_shared<const TreeLayout>(layoutContourTree(*tree_, ui::kTreePlotBranches));
         lastMs_["tree"] = msSince(start);
     }
-    std::shared_ptr<const ContourTree> tree = tree_;
-    if (minPersistence > 0.0) {
-        if (!simplified_ || simplifiedBy_ != minPersistence) {
-            simplified_.reset();
-            ContourTree simplified = *tree_;
-            simplifyContourTree(simplified, minPersistence);
-            simplified_ = std::make_shared<const ContourTree>(std::move(simplified));
-            simplifiedLayout_ =
-                std::make_shared<const TreeLayout>(layoutContourTree(*simplified_, ui::kTreePlotBranches));
-            simplifiedBy_ = minPersistence;
-        }
-        tree = simplified_;
-    }
-    treeLayout_ = tree == simplified_ ? simplifiedLayout_ : fullLayout_;
-    return tree;
+    return cache_.tree(minPersistence);
 }
 
 }  // namespace isotrack::viewer

@@ -31,6 +31,7 @@
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -51,32 +52,9 @@
 #include "isotrack/tracking.h"
 #include "isotrack/tree_layout.h"
 #include "isotrack/volume.h"
-#include "ui/panel_state.h"
-#include "ui/tree_plot.h"
+#include "viewer/volume_cache.h"
 
 namespace isotrack::viewer {
-
-// What the panel calls a source: the field spec, or the file's name.
-std::string displayName(const VolumeSource& source);
-
-// A loaded volume and what the panel shows about it.
-struct LoadedVolume {
-    VolumeSource source;
-    Volume volume;
-    std::array<double, 2> range{0.0, 0.0};
-    std::vector<float> histogram;       // sample counts in kHistogramBins bins across `range`
-    double defaultIso = 0.0;            // a field's own, or suggestIsovalue for a file
-    std::vector<DicomSkipped> skipped;  // a DICOM folder or DICOMDIR: the files left out, and why
-    // A mapped file's samples (isotrack/mapped_file.h): its bytes, and whether
-    // they exceed the memory budget. Over it, the samples were not read:
-    // `range`, `histogram` and `defaultIso` are unknown (valuesRead false).
-    const MappedFile* mapped = nullptr;
-    std::uint64_t mappedBytes = 0;
-    bool overBudget = false;
-    bool valuesRead = true;
-};
-
-inline constexpr std::size_t kHistogramBins = 128;
 
 struct ExtractionRequest {
     std::uint64_t generation = 0;
@@ -84,6 +62,7 @@ struct ExtractionRequest {
     std::optional<double> iso;  // nullopt: the source's default
     TableKind table = TableKind::Consistent;
     Method method = Method::All;
+    std::string work;             // what the progress calls the extraction while it runs
     double minPersistence = 0.0;  // method tree: the tree simplified by this persistence
     // The scene's surfaces by id, with their seeds and own isovalues (no
     // footprints: who each surface is is decided when the result is applied).
@@ -119,19 +98,10 @@ struct WorkerProgress {
 // volume, method or table (a new isovalue or seed does not).
 bool supersedes(const ExtractionRequest& newer, const ExtractionRequest& older);
 
-// Loads a source as the viewer shows it (volume, range, histogram, default
-// isovalue). A mapped volume over `memoryBudget` bytes is left unread, and
-// needs `isoGiven` (InputError naming the file, its size and the budget).
-std::shared_ptr<LoadedVolume> loadForView(const VolumeSource& source, bool isoGiven = false,
-                                          std::uint64_t memoryBudget = std::numeric_limits<std::uint64_t>::max());
-
-// The viewer's memory budget when none is given: half of the memory the system
-// can give without swapping (isotrack::availableMemoryBytes).
-std::uint64_t defaultMemoryBudget();
-
 class ExtractionWorker {
 public:
-    ExtractionWorker(int threads, std::uint64_t memoryBudget);
+    // A contour tree is laid out for a plot of its `plotBranches` most persistent branches.
+    ExtractionWorker(int threads, std::uint64_t memoryBudget, std::size_t plotBranches = SIZE_MAX);
     ~ExtractionWorker();  // cancels the current pass and waits for it to end
     ExtractionWorker(const ExtractionWorker&) = delete;
     ExtractionWorker& operator=(const ExtractionWorker&) = delete;
@@ -155,7 +125,7 @@ private:
     ExtractionResult work(const ExtractionRequest& request);
     std::shared_ptr<const LoadedVolume> volumeFor(const ExtractionRequest& request, double& loadMs);
     void extract(const ExtractionRequest& request, const LoadedVolume& volume, ExtractionResult& result);
-    std::shared_ptr<const ContourTree> treeOf(const Volume& volume, double minPersistence);
+    VolumeCache::Tree treeOf(double minPersistence);
     bool cancelling() const { return cancel_.load(std::memory_order_relaxed); }
     void setPhase(const std::string& what, double expectedMs);
 
@@ -179,14 +149,8 @@ private:
     std::atomic<bool> buildingTree_{false};
 
     // Worker-thread only.
-    std::shared_ptr<const LoadedVolume> cache_;
-    std::shared_ptr<const ContourTree> tree_;        // cache_'s contour tree, built on the first tree request
-    std::shared_ptr<const ContourTree> simplified_;  // tree_ simplified by simplifiedBy_ (> 0)
-    double simplifiedBy_ = 0.0;
-    std::shared_ptr<const TreeLayout> fullLayout_;        // tree_'s plot, laid out with it
-    std::shared_ptr<const TreeLayout> simplifiedLayout_;  // simplified_'s plot, laid out with it
-    std::shared_ptr<const TreeLayout> treeLayout_;        // the plot of the tree treeOf returned last
-    std::map<std::string, double> lastMs_;                // per source and method: how long extraction took last time
+    VolumeCache cache_;
+    std::map<std::string, double> lastMs_;  // per source and method: how long extraction took last time
 
     std::thread thread_;
 };

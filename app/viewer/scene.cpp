@@ -4,7 +4,7 @@
 
 #include "render/pick_target.h"
 #include "render/snapshot.h"
-#include "viewer/view_cache.h"
+#include "viewer/signature.h"
 
 namespace isotrack::viewer {
 

@@ -11,6 +11,7 @@
 #include "isotrack/errors.h"
 #include "isotrack/io.h"
 #include "isotrack/threads.h"
+#include "render/image.h"
 #include "render/window_frame.h"
 
 namespace isotrack::viewer {
@@ -36,9 +37,16 @@ Viewer::Viewer(const ViewerOptions& options, std::optional<Script> script)
       window_(options.width, options.height, "isotrack", !options.noVsync && !script && !options.deterministic),
       renderer_(std::make_unique<render::Renderer>()),
       profiler_(gl::timerQueriesAvailable()),
-      extraction_(extractionThreads(options.threads), memoryBudget(options.memoryBudgetGiB)),
-      memoryBudget_(memoryBudget(options.memoryBudgetGiB)),
-      methodChosen_(options.methodGiven) {
+      extraction_(extractionThreads(options.threads), memoryBudget(options.memoryBudgetGiB), scene_, *renderer_,
+                  profiler_, status_),
+      clicks_(scene_, *renderer_, picker_, profiler_, extraction_, growth_, status_),
+      actionHandler_(extraction_, scene_, growth_, camera_, panel_, status_, requests_, options.frame),
+      report_(ReportSources{window_, *renderer_, profiler_, scene_, picker_, viewCache_, extraction_, growth_, status_,
+                            clicks_, layout_, totals_},
+              options.deterministic),
+      host_(SessionParts{extraction_, scene_, growth_, actionHandler_, clicks_, report_, profiler_, camera_, layout_,
+                         requests_}) {
+    if (options.methodGiven) extraction_.setMethodChosen();
     if (!options.volumePath.empty()) {
         VolumeSource source = VolumeSource::file(options.volumePath, options.raw);
         source.series = options.series;
@@ -49,127 +57,120 @@ Viewer::Viewer(const ViewerOptions& options, std::optional<Script> script)
     extraction_.setTable(options.table);
     extraction_.setMethod(options.method);
     if (options.iso) extraction_.setIso(*options.iso);
-    if (options.deterministic) cellsPerFrame_ = kDeterministicCellsPerFrame;
+    // A new volume: the default view of its box.
+    extraction_.onNewVolume([this] {
+        const render::FrameOptions frame = layout_.frameOptions(scene_);
+        camera_ = render::frameBounds(scene_.volumeBounds(), float(frame.width) / float(frame.height));
+    });
+    if (options.deterministic) growth_.setCellsPerFrame(kDeterministicCellsPerFrame);
     if (!options.profile.empty()) profiler_.startRecording(options.profile);
-    if (script) script_ = std::make_unique<ScriptRunner>(std::move(*script), static_cast<ScriptHost&>(*this));
-    layout();
-    if (!script_ || !script_->loadsFirst()) submit();  // a script that loads first skips the default volume
+    status_.setQuiet(script.has_value());  // a script's session keeps stderr for its errors
+    if (script) {
+        script_ = std::make_unique<ScriptRunner>(std::move(*script), host_);
+        extraction_.attachScript(script_.get());
+    }
+    layout_.update(window_);
+    if (!script_ || !script_->loadsFirst()) extraction_.submit();  // a script that loads first skips the default volume
 }
 
 Viewer::~Viewer() = default;
 
 int Viewer::run() {
     auto lastFrame = Profiler::Clock::now();
-    while (!quit_ && !window_.shouldClose()) {
+    while (!requests_.quit && !window_.shouldClose()) {
         // Waiting happens outside frames: it is not counted as frame time.
         if (idle() && ++idleFrames_ > kIdleFramesBeforeSleeping) {
             Window::waitEvents(kIdleWaitSeconds);
         } else if (!idle()) {
             idleFrames_ = 0;
         }
-        if (extraction_.busy() && !(scene_.anyGrowing() && playing_)) {
+        if (extraction_.busy() && !(scene_.anyGrowing() && growth_.playing())) {
             std::this_thread::sleep_until(lastFrame + kWaitingFramePeriod);
         }
         lastFrame = Profiler::Clock::now();
         frame();
     }
     if (profiler_.recording()) profiler_.writeTrace();
-    if (options_.json && exitCode_ == 0) std::printf("%s\n", summary().dump(2).c_str());
-    return exitCode_;
+    if (options_.json && requests_.exitCode == 0) std::printf("%s\n", summary().dump(2).c_str());
+    return requests_.exitCode;
 }
 
 bool Viewer::idle() const {
-    if (script_ || extraction_.busy() || (scene_.anyGrowing() && playing_)) return false;
+    if (script_ || extraction_.busy() || (scene_.anyGrowing() && growth_.playing())) return false;
     const ImGuiIO& io = ImGui::GetIO();
     return !(io.MouseDown[0] || io.MouseDown[1] || io.MouseDown[2]);
 }
 
-void Viewer::layout() {
-    window_.windowSize(windowWidth_, windowHeight_);
-    window_.framebufferSize(framebufferWidth_, framebufferHeight_);
-    pixelScale_ = windowWidth_ > 0 ? float(framebufferWidth_) / float(windowWidth_) : 1.0f;
-    view_.x = ui::Panel::kWidth;
-    view_.y = 0.0f;
-    view_.width = std::max(float(windowWidth_) - ui::Panel::kWidth, 1.0f);
-    view_.height = std::max(float(windowHeight_), 1.0f);
-}
-
-render::FrameOptions Viewer::frameOptions() const {
-    render::FrameOptions options;
-    options.x = static_cast<int>(view_.x * pixelScale_);
-    options.y = 0;
-    options.width = std::max(framebufferWidth_ - options.x, 1);
-    options.height = std::max(framebufferHeight_, 1);
-    options.wireframe = scene_.wireframe;
-    options.boundingBox = scene_.boundingBox;
-    return options;
-}
-
-render::FrameView Viewer::frameView() const {
-    return render::Renderer::frameView(camera_, frameOptions(), scene_.drawBounds());
-}
-
-void Viewer::status(const std::string& message) {
-    status_ = message;
-    if (!script_) std::fprintf(stderr, "isotrack: %s\n", message.c_str());
+// An error at the frame boundary: a script's failure, else the status line.
+void Viewer::fail(const std::exception& error) {
+    if (script_) {
+        script_->fail(error.what());
+    } else {
+        status_.show(error.what());
+    }
 }
 
 void Viewer::drawView() {
-    const render::FrameOptions window = frameOptions();
+    const render::FrameOptions window = layout_.frameOptions(scene_);
     render::FrameOptions cached = window;
     cached.x = cached.y = 0;
     if (viewCache_.needsRedraw(scene_.signature(camera_, cached), cached.width, cached.height)) {
         profiler_.beginGpu();
         viewCache_.bind();
         scene_.draw(*renderer_, render::Renderer::frameView(camera_, cached, scene_.drawBounds()), cached);
-        drawn_ = renderer_->takeCounters();
+        totals_.drawn = renderer_->takeCounters();
         profiler_.endGpu();
     }
-    render::beginWindowFrame(framebufferWidth_, framebufferHeight_, window.background);
+    render::beginWindowFrame(layout_.framebufferWidth(), layout_.framebufferHeight(), window.background);
     viewCache_.present(window.x, window.y);
+}
+
+// Events, the camera, the keys and a click.
+void Viewer::input() {
+    ViewInput input;
+    {
+        Profiler::Scope scope(profiler_, Stage::Input);
+        Window::pollEvents();
+        layout_.update(window_);
+        Window::beginImGuiFrame();
+        input = controller_.update(camera_, layout_.view(), window_.takeKeyPresses());
+        if (input.moveSelection != glm::vec3(0.0f)) {
+            if (SurfaceStructure* selected = scene_.selection()) {
+                selected->userOffset += input.moveSelection;
+                scene_.refreshOffsets();
+            }
+        }
+        for (KeyCommand key : input.keys) actionHandler_.applyKey(key);
+    }
+    if (input.click) {
+        const float scale = layout_.pixelScale();
+        clicks_.click(layout_.frameView(camera_, scene_), input.click->x * scale, input.click->y * scale,
+                      input.trackClick);
+    }
 }
 
 void Viewer::frame() {
     profiler_.beginFrame();
-    grownCells_ = 0;
-    drawn_ = render::DrawCounters{};  // a frame that only copies the cached view draws nothing
+    growth_.beginFrame();
+    totals_.beginFrame();
     const std::size_t uploadedBefore = render::GpuMesh::uploadedTotal();
     try {
-        ViewInput input;
-        {
-            Profiler::Scope scope(profiler_, Stage::Input);
-            Window::pollEvents();
-            layout();
-            Window::beginImGuiFrame();
-            input = controller_.update(camera_, view_, window_.takeKeyPresses());
-            if (input.moveSelection != glm::vec3(0.0f)) {
-                if (SurfaceStructure* selected = scene_.selection()) {
-                    selected->userOffset += input.moveSelection;
-                    scene_.refreshOffsets();
-                }
-            }
-            for (KeyCommand key : input.keys) applyKey(key);
-        }
-        if (input.click) click(input.click->x * pixelScale_, input.click->y * pixelScale_, input.trackClick);
+        input();
         if (script_) {
             Profiler::Scope scope(profiler_, Stage::Script);
             script_->advance();
         }
-        takeResult();
-        grow();
+        extraction_.takeResult();
+        growth_.grow(scene_, profiler_);
         {
             Profiler::Scope scope(profiler_, Stage::Ui);
-            const ui::PanelState state = panelState();
+            const ui::PanelState state = report_.panelState();
             actions_.clear();
             panel_.build(state, actions_);
-            for (const ui::Action& action : actions_) apply(action);
+            for (const ui::Action& action : actions_) actionHandler_.apply(action);
         }
     } catch (const std::exception& e) {
-        if (script_) {
-            script_->fail(e.what());
-        } else {
-            status(e.what());
-        }
+        fail(e);
     }
     {
         Profiler::Scope scope(profiler_, Stage::Ui);
@@ -180,40 +181,43 @@ void Viewer::frame() {
         drawView();
         Window::drawImGui();
     }
-    if (screenshotPath_) {
-        Profiler::Scope scope(profiler_, Stage::Screenshot);
-        const std::string path = *screenshotPath_;
-        screenshotPath_.reset();
-        try {
-            writeScreenshot(path);
-        } catch (const std::exception& e) {
-            if (script_)
-                script_->fail(e.what());
-            else
-                status(e.what());
-        }
-    }
+    if (requests_.screenshotPath) screenshot();
     {
         Profiler::Scope scope(profiler_, Stage::Present);
         window_.swapBuffers();
     }
-    uploaded_ = render::GpuMesh::uploadedTotal() - uploadedBefore;
-    sessionCounters_.note(drawn_, uploaded_);
-    FrameCounters counters;  // only a recorded trace keeps them
+    totals_.endFrame(render::GpuMesh::uploadedTotal() - uploadedBefore);
+    countFrame();
+}
+
+void Viewer::screenshot() {
+    Profiler::Scope scope(profiler_, Stage::Screenshot);
+    const std::string path = *requests_.screenshotPath;
+    requests_.screenshotPath.reset();
+    try {
+        render::writePng(render::readWindowImage(layout_.framebufferWidth(), layout_.framebufferHeight()), path);
+    } catch (const std::exception& e) {
+        fail(e);
+    }
+}
+
+// The frame's counters, for a recorded trace only.
+void Viewer::countFrame() {
+    FrameCounters counters;
     if (profiler_.recording()) {
         counters.surfaces = scene_.surfaces().size();
         for (const auto& surface : scene_.surfaces()) counters.triangles += surface->mesh().triangleCount();
-        counters.grownCells = grownCells_;
+        counters.grownCells = growth_.grownCells();
         counters.growing = scene_.anyGrowing();
         counters.extracting = extraction_.busy();
-        counters.cpuBytes = cpuBytes();
-        counters.gpuBytes = gpuBytes();
-        counters.isoShown = shownIso();
-        counters.isoRequested = currentIso();
+        counters.cpuBytes = report_.cpuBytes();
+        counters.gpuBytes = report_.gpuBytes();
+        counters.isoShown = extraction_.shownIso();
+        counters.isoRequested = extraction_.currentIso();
         counters.extractionsApplied = extraction_.appliedCount();
-        counters.drawCalls = drawn_.drawCalls;
-        counters.trianglesDrawn = drawn_.triangles;
-        counters.uploadedBytes = uploaded_;
+        counters.drawCalls = totals_.drawn.drawCalls;
+        counters.trianglesDrawn = totals_.drawn.triangles;
+        counters.uploadedBytes = totals_.uploaded;
         const render::ArenaStats arena = renderer_->arena().stats();
         counters.arenaPages = arena.pages;
         counters.arenaFreeBytes = arena.freeBytes;

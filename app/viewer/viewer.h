@@ -8,7 +8,6 @@
 // meshes and grown ranges go to the GPU), ui (the panel from plain state, its
 // actions applied), draw (the scene, timed on the GPU too, then the panel),
 // present (swap). Every stage is timed by the Profiler.
-#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -25,14 +24,23 @@
 #include "render/renderer.h"
 #include "ui/actions.h"
 #include "ui/panel.h"
+#include "viewer/action_handler.h"
 #include "viewer/camera_controller.h"
+#include "viewer/draw_totals.h"
 #include "viewer/extraction_controller.h"
+#include "viewer/frame_requests.h"
+#include "viewer/growth.h"
 #include "viewer/picker.h"
 #include "viewer/profiler.h"
 #include "viewer/scene.h"
 #include "viewer/script.h"
 #include "viewer/script_runner.h"
+#include "viewer/session_host.h"
+#include "viewer/status_line.h"
+#include "viewer/surface_clicks.h"
 #include "viewer/view_cache.h"
+#include "viewer/view_layout.h"
+#include "viewer/viewer_report.h"
 #include "viewer/window.h"
 
 namespace isotrack::viewer {
@@ -58,13 +66,17 @@ struct ViewerOptions {
 };
 
 inline constexpr const char* kDefaultField = "blobs:128";
-inline constexpr std::size_t kPicksKept = 16;  // the last clicks, for the summary
 
-class Viewer : private ScriptHost {
+// The frame loop, wiring the viewer's parts: the scene of surfaces (scene.h),
+// the extraction controller (extraction_controller.h: requests, and results
+// applied so that surfaces keep who they are), growth (growth.h), clicks
+// (surface_clicks.h), the panel's and keys' actions (action_handler.h), the
+// reports (viewer_report.h) and a script's host (session_host.h).
+class Viewer {
 public:
     // Opens the window (throws DisplayError without a display).
     Viewer(const ViewerOptions& options, std::optional<Script> script);
-    ~Viewer() override;
+    ~Viewer();
     Viewer(const Viewer&) = delete;
     Viewer& operator=(const Viewer&) = delete;
 
@@ -72,73 +84,25 @@ public:
     // status (1 after a script error, which has been printed).
     int run();
     // The --json summary of the session so far.
-    nlohmann::json summary() const;
+    nlohmann::json summary() const { return report_.summary(); }
 
 private:
     void frame();
-    bool idle() const;
-
-    // viewer_scene.cpp: extraction requests, growth, picking
-    void submit();
-    void grow();
-    void click(float x, float y, bool track);
-    void trackFrom(const Vec3d& point, std::optional<std::uint32_t> hit);
-    double currentIso() const;  // the isovalue asked for (the slider)
-    double shownIso() const;    // the isovalue of the surfaces on screen
-    std::vector<PreviousSurface> previousSurfaces(bool footprints) const;
-    void setSurfaceIso(std::uint32_t id, double iso);
-
-    // viewer_results.cpp: results applied so that surfaces keep who they are
-    void takeResult();
-    void applyResult(ExtractionResult result);
-    void placeSurfaces(NextSurfaces next, bool onlyOwnIsovalues);
-
-    // viewer_actions.cpp
-    void apply(const ui::Action& action) override;
-    void applyKey(KeyCommand key);
-    void frameCamera(bool selectionOnly) override;
-    void exportSurface(std::uint32_t id, const std::string& path) override;
-    void processMesh(const ui::ProcessMesh& request);
-
-    // viewer_report.cpp: panel state, summary, screenshots
-    ui::PanelState panelState() const;
-    std::size_t gpuOtherBytes() const;
-    std::size_t cpuBytes() const;
-    std::size_t gpuBytes() const;
-    nlohmann::json memoryJson() const;
-    nlohmann::json volumeJson() const;
-    void writeScreenshot(const std::string& path) const;
-
-    // viewer_script.cpp: the ScriptHost a --script session drives (the rest
-    // of it is apply, frameCamera and exportSurface above)
-    bool extracting() const override;
-    bool growing() const override;
-    bool sourceShown() const override;
-    bool hasVolume() const override;
-    bool screenshotPending() const override;
-    std::size_t surfaceCount() const override;
-    std::uint32_t surfaceId(std::size_t index) const override;
-    void load(const VolumeSource& source) override;
-    void clickView(float fx, float fy, bool track) override;
-    void trackPoint(const Vec3d& point) override;
-    void requestScreenshot(const std::string& path) override;
-    void startProfile(const std::string& path) override;
-    void checkpoint(const std::string& name, int line) override;
-    void setCamera(const std::string& spec) override;
-    void quit() override;
-    void fail(const std::string& message) override;
-
-    void layout();
+    void input();
     void drawView();
-    render::FrameOptions frameOptions() const;
-    render::FrameView frameView() const;
-    void status(const std::string& message);
-    void reportSkipped(const LoadedVolume& volume);
+    void screenshot();
+    void countFrame();
+    bool idle() const;
+    void fail(const std::exception& error);
 
     ViewerOptions options_;
     Window window_;
     std::unique_ptr<render::Renderer> renderer_;
     Profiler profiler_;
+    StatusLine status_;
+    FrameRequests requests_;
+    ViewLayout layout_;
+    DrawTotals totals_;
     Scene scene_;
     Picker picker_;
     ViewCache viewCache_;
@@ -146,58 +110,13 @@ private:
     render::Camera camera_;
     ui::Panel panel_;
     std::vector<ui::Action> actions_;
-
-    // What the user asked for; the worker makes it so.
+    Growth growth_;
     ExtractionController extraction_;
-    std::size_t nextColour_ = 0;                    // palette rank for the next new surface
-    std::shared_ptr<const TreeLayout> treeLayout_;  // the volume's contour tree laid out (method tree)
-    std::string extractionError_;
-    std::string status_;
-
-    // A volume over the memory budget: the method that reads it whole waits
-    // for the user's Extract (or Cancel: back to track).
-    std::uint64_t memoryBudget_ = 0;
-    struct Confirmation {
-        ui::Method method = ui::Method::All;
-        std::uint64_t bytes = 0;
-    };
-    std::optional<Confirmation> confirmation_;
-    bool methodChosen_ = false;  // --method, or a method picked since: not switched to track on its own
-    void askConfirmation(const ExtractionResult& result);
-
-    // Growth.
-    bool playing_ = true;
-    bool stepOnce_ = false;
-    int cellsPerFrame_ = 0;
-    float growthBudgetMs_ = 4.0f;
-    std::size_t grownCells_ = 0;  // this frame
-
-    // What the last frame drew and uploaded, and the most any frame did.
-    struct SessionCounters {
-        std::size_t maxDrawCalls = 0, maxTrianglesDrawn = 0, maxUploadedBytes = 0, uploadedBytes = 0;
-        void note(const render::DrawCounters& drawn, std::size_t uploaded) {
-            maxDrawCalls = std::max(maxDrawCalls, drawn.drawCalls);
-            maxTrianglesDrawn = std::max(maxTrianglesDrawn, drawn.triangles);
-            maxUploadedBytes = std::max(maxUploadedBytes, uploaded);
-            uploadedBytes += uploaded;
-        }
-    };
-    render::DrawCounters drawn_;
-    std::size_t uploaded_ = 0;
-    SessionCounters sessionCounters_;
-
-    // Layout, in window pixels and framebuffer pixels.
-    int windowWidth_ = 1, windowHeight_ = 1, framebufferWidth_ = 1, framebufferHeight_ = 1;
-    ViewRect view_;
-    float pixelScale_ = 1.0f;
-
+    SurfaceClicks clicks_;
+    ActionHandler actionHandler_;
+    ViewerReport report_;
+    SessionHost host_;
     std::unique_ptr<ScriptRunner> script_;
-    std::optional<std::string> screenshotPath_;
-    int screenshots_ = 0;  // taken with F12
-    nlohmann::json checkpoints_ = nlohmann::json::array();
-    nlohmann::json picks_ = nlohmann::json::array();  // the last few clicks, for the summary
-    bool quit_ = false;
-    int exitCode_ = 0;
     int idleFrames_ = 0;
 };
 

@@ -1,10 +1,7 @@
-// What the viewer reports: the panel's plain state, memory, the --json summary
-// and screenshots.
+#include "viewer/viewer_report.h"
+
 #include "isotrack/fields.h"
-#include "render/image.h"
-#include "render/window_frame.h"
 #include "viewer/memory.h"
-#include "viewer/viewer.h"
 
 namespace isotrack::viewer {
 
@@ -36,18 +33,20 @@ nlohmann::json arenaJson(const render::ArenaStats& arena) {
 
 }  // namespace
 
-std::size_t Viewer::cpuBytes() const { return scene_.cpuVolumeBytes() + scene_.cpuMeshBytes() + tableBytes(); }
+std::size_t ViewerReport::cpuBytes() const {
+    return in_.scene.cpuVolumeBytes() + in_.scene.cpuMeshBytes() + tableBytes();
+}
 
-std::size_t Viewer::gpuOtherBytes() const {
-    return picker_.gpuBytes() + viewCache_.gpuBytes() + kBoxBytes + Window::imguiFontBytes();
+std::size_t ViewerReport::gpuOtherBytes() const {
+    return in_.picker.gpuBytes() + in_.viewCache.gpuBytes() + kBoxBytes + Window::imguiFontBytes();
 }
 
 // The surfaces' share is the arena's pages, whole: what the GPU holds for them.
-std::size_t Viewer::gpuBytes() const { return renderer_->arena().stats().capacityBytes + gpuOtherBytes(); }
+std::size_t ViewerReport::gpuBytes() const { return in_.renderer.arena().stats().capacityBytes + gpuOtherBytes(); }
 
-nlohmann::json Viewer::memoryJson() const {
+nlohmann::json ViewerReport::memoryJson() const {
     std::size_t gone = 0, merged = 0, triangles = 0;
-    for (const auto& surface : scene_.surfaces()) {
+    for (const auto& surface : in_.scene.surfaces()) {
         triangles += surface->mesh().triangleCount();
         gone += surface->presence() == Presence::Gone ? 1 : 0;
         merged += surface->presence() == Presence::Merged ? 1 : 0;
@@ -58,54 +57,72 @@ nlohmann::json Viewer::memoryJson() const {
             {"surfaces_merged", merged},
             {"gpu_bytes", gpuBytes()},
             {"rss_bytes", residentBytes()},
-            {"surfaces", scene_.surfaces().size()},
-            {"extractions_applied", extraction_.appliedCount()},
-            {"isovalue_shown", shownIso()},
-            {"confirm_bytes", confirmation_ ? confirmation_->bytes : 0},
-            {"method", ui::methodName(extraction_.method())},
-            {"frame", profiler_.frames()}};
+            {"surfaces", in_.scene.surfaces().size()},
+            {"extractions_applied", in_.extraction.appliedCount()},
+            {"isovalue_shown", in_.extraction.shownIso()},
+            {"confirm_bytes", in_.extraction.confirmation() ? in_.extraction.confirmation()->bytes : 0},
+            {"method", ui::methodName(in_.extraction.method())},
+            {"frame", in_.profiler.frames()}};
 }
 
-ui::PanelState Viewer::panelState() const {
+void ViewerReport::checkpoint(const std::string& name, int line) {
+    releaseFreeMemory();  // so that the resident set counts live memory, not what malloc keeps around
+    nlohmann::json mark = memoryJson();
+    mark["name"] = name;
+    mark["line"] = line;
+    nlohmann::json triangles = nlohmann::json::object();  // by surface id, to tell which surfaces changed
+    for (const auto& surface : in_.scene.surfaces()) {
+        triangles[std::to_string(surface->id())] = surface->mesh().triangleCount();
+    }
+    mark["surface_triangles"] = triangles;
+    nlohmann::json arcs = nlohmann::json::object();  // method tree: each surface's contour-tree arc, by id
+    for (const auto& surface : in_.scene.surfaces()) {
+        if (surface->stats().arc) arcs[std::to_string(surface->id())] = *surface->stats().arc;
+    }
+    mark["surface_arcs"] = arcs;
+    checkpoints_.push_back(mark);
+}
+
+ui::PanelState ViewerReport::panelState() const {
     ui::PanelState state;
-    state.displayWidth = windowWidth_;
-    state.displayHeight = windowHeight_;
+    state.displayWidth = in_.layout.windowWidth();
+    state.displayHeight = in_.layout.windowHeight();
     for (const FieldInfo& field : builtinFields()) {
         state.data.fields.push_back(ui::FieldChoice{field.name, field.defaultSize, field.description});
     }
-    scene_.buildUI(state);
+    in_.scene.buildUI(state);
 
     ui::ExtractionState& extraction = state.extraction;
-    extraction.iso = currentIso();
-    extraction.shownIso = shownIso();
-    extraction.table = extraction_.table();
-    extraction.method = extraction_.method();
-    extraction.minPersistence = extraction_.minPersistence();
-    const WorkerProgress progress = extraction_.progress();
+    extraction.iso = in_.extraction.currentIso();
+    extraction.shownIso = in_.extraction.shownIso();
+    extraction.table = in_.extraction.table();
+    extraction.method = in_.extraction.method();
+    extraction.minPersistence = in_.extraction.minPersistence();
+    const WorkerProgress progress = in_.extraction.progress();
     extraction.busy = progress.busy;
     extraction.busyWhat = progress.what;
     extraction.busySeconds = progress.seconds;
     extraction.fraction = progress.fraction;
-    extraction.lastMs = extraction_.lastMs();
-    extraction.error = extractionError_;
-    if (confirmation_) {
-        extraction.confirmBytes = confirmation_->bytes;
-        extraction.confirmMethod = confirmation_->method;
+    extraction.lastMs = in_.extraction.lastMs();
+    extraction.error = in_.extraction.error();
+    if (const auto& confirmation = in_.extraction.confirmation()) {
+        extraction.confirmBytes = confirmation->bytes;
+        extraction.confirmMethod = confirmation->method;
     }
 
-    state.tree.layout = treeLayout_;
-    for (const auto& surface : scene_.surfaces()) {
+    state.tree.layout = in_.extraction.treeLayout();
+    for (const auto& surface : in_.scene.surfaces()) {
         if (!surface->stats().arc || surface->presence() != Presence::Shown) continue;
         const glm::vec3& colour = surface->style().colour;
         state.tree.surfaces.push_back(
-            {surface->id(), *surface->stats().arc, {colour.r, colour.g, colour.b}, shownIso()});
+            {surface->id(), *surface->stats().arc, {colour.r, colour.g, colour.b}, in_.extraction.shownIso()});
     }
 
     ui::GrowthState& growth = state.growth;
-    growth.playing = playing_;
-    growth.cellsPerFrame = cellsPerFrame_;
-    growth.budgetMs = growthBudgetMs_;
-    for (const auto& surface : scene_.surfaces()) {
+    growth.playing = in_.growth.playing();
+    growth.cellsPerFrame = in_.growth.cellsPerFrame();
+    growth.budgetMs = in_.growth.budgetMs();
+    for (const auto& surface : in_.scene.surfaces()) {
         if (!surface->growing()) continue;
         growth.active = true;
         growth.triangles += surface->mesh().triangleCount();
@@ -115,46 +132,46 @@ ui::PanelState Viewer::panelState() const {
     }
 
     ui::StatsState& stats = state.stats;
-    stats.deterministic = options_.deterministic;
-    stats.fps = profiler_.fps();
-    stats.frameMs = profiler_.lastFrameMs();
-    stats.frameTimesMs = profiler_.history();
-    stats.inputMs =
-        profiler_.lastStageMs(Stage::Input) + profiler_.lastStageMs(Stage::Script) + profiler_.lastStageMs(Stage::Pick);
-    stats.uiMs = profiler_.lastStageMs(Stage::Ui);
-    stats.extractMs = profiler_.lastStageMs(Stage::Extract);
-    stats.uploadMs = profiler_.lastStageMs(Stage::Upload);
-    stats.drawMs = profiler_.lastStageMs(Stage::Draw);
-    stats.presentMs = profiler_.lastStageMs(Stage::Present);
-    stats.gpuMs = profiler_.lastGpuMs();
-    stats.cpuVolumeBytes = scene_.cpuVolumeBytes();
-    stats.volumeMapped = scene_.volume() && scene_.volume()->mapped;
-    stats.cpuMeshBytes = scene_.cpuMeshBytes();
+    stats.deterministic = deterministic_;
+    stats.fps = in_.profiler.fps();
+    stats.frameMs = in_.profiler.lastFrameMs();
+    stats.frameTimesMs = in_.profiler.history();
+    stats.inputMs = in_.profiler.lastStageMs(Stage::Input) + in_.profiler.lastStageMs(Stage::Script) +
+                    in_.profiler.lastStageMs(Stage::Pick);
+    stats.uiMs = in_.profiler.lastStageMs(Stage::Ui);
+    stats.extractMs = in_.profiler.lastStageMs(Stage::Extract);
+    stats.uploadMs = in_.profiler.lastStageMs(Stage::Upload);
+    stats.drawMs = in_.profiler.lastStageMs(Stage::Draw);
+    stats.presentMs = in_.profiler.lastStageMs(Stage::Present);
+    stats.gpuMs = in_.profiler.lastGpuMs();
+    stats.cpuVolumeBytes = in_.scene.cpuVolumeBytes();
+    stats.volumeMapped = in_.scene.volume() && in_.scene.volume()->mapped;
+    stats.cpuMeshBytes = in_.scene.cpuMeshBytes();
     stats.cpuTableBytes = tableBytes();
-    const render::ArenaStats arena = renderer_->arena().stats();
+    const render::ArenaStats arena = in_.renderer.arena().stats();
     stats.gpuSurfaceBytes = arena.capacityBytes;
     stats.arenaPages = arena.pages;
     stats.arenaFreeBytes = arena.freeBytes;
     stats.arenaLargestFreeBytes = arena.largestFreeBytes;
     stats.arenaFragmentation = arena.fragmentation;
     stats.gpuOtherBytes = gpuOtherBytes();
-    stats.rssBytes = options_.deterministic ? 0 : residentBytes();
-    stats.renderer = window_.info().renderer;
-    stats.frames = profiler_.frames();
-    stats.drawCalls = drawn_.drawCalls;
-    stats.trianglesDrawn = drawn_.triangles;
-    stats.uploadedBytes = uploaded_;
-    state.message = status_;
+    stats.rssBytes = deterministic_ ? 0 : residentBytes();
+    stats.renderer = in_.window.info().renderer;
+    stats.frames = in_.profiler.frames();
+    stats.drawCalls = in_.totals.drawn.drawCalls;
+    stats.trianglesDrawn = in_.totals.drawn.triangles;
+    stats.uploadedBytes = in_.totals.uploaded;
+    state.message = in_.status.text();
     return state;
 }
 
 // The volume's samples: in memory, or mapped from its file (how much of it is
 // resident now, and whether it is over the memory budget, unread).
-nlohmann::json Viewer::volumeJson() const {
-    const std::shared_ptr<const LoadedVolume> volume = scene_.volume();
+nlohmann::json ViewerReport::volumeJson() const {
+    const std::shared_ptr<const LoadedVolume> volume = in_.scene.volume();
     nlohmann::json json = {{"mapped", volume && volume->mapped},
-                           {"memory_budget_bytes", memoryBudget_},
-                           {"awaiting_confirmation", confirmation_.has_value()}};
+                           {"memory_budget_bytes", in_.extraction.memoryBudget()},
+                           {"awaiting_confirmation", in_.extraction.confirmation().has_value()}};
     if (!volume) return json;
     json["bytes"] = volume->volume.byteSize();
     json["values_read"] = volume->valuesRead;
@@ -163,10 +180,10 @@ nlohmann::json Viewer::volumeJson() const {
     return json;
 }
 
-nlohmann::json Viewer::summary() const {
+nlohmann::json ViewerReport::summary() const {
     const nlohmann::json volumeJson = this->volumeJson();
     nlohmann::json surfaces = nlohmann::json::array();
-    for (const auto& surface : scene_.surfaces()) {
+    for (const auto& surface : in_.scene.surfaces()) {
         const Mesh& mesh = surface->mesh();
         const glm::vec3 colour = surface->style().colour;
         const glm::vec3 offset = surface->userOffset;
@@ -184,58 +201,54 @@ nlohmann::json Viewer::summary() const {
                             {"visible", surface->style().visible},
                             {"colour", {colour.r, colour.g, colour.b}},
                             {"offset", {offset.x, offset.y, offset.z}},
-                            {"selected", scene_.selected == surface->id()},
-                            {"isovalue", surface->ownIso ? surface->ownIso->shown : shownIso()},
+                            {"selected", in_.scene.selected == surface->id()},
+                            {"isovalue", surface->ownIso ? surface->ownIso->shown : in_.extraction.shownIso()},
                             {"own_isovalue", surface->ownIso.has_value()}});
         if (surface->stats().arc) surfaces.back()["arc"] = *surface->stats().arc;
         if (surface->presence() == Presence::Merged) surfaces.back()["merged_into"] = surface->mergedInto();
         if (const auto& seed = surface->seedPoint()) surfaces.back()["seed"] = *seed;
     }
     nlohmann::json summary = {
-        {"source", scene_.volume() ? scene_.volume()->source.text : ""},
-        {"default_isovalue", volumeJson.value("values_read", true) && scene_.volume()
-                                 ? nlohmann::json(scene_.volume()->defaultIso)
+        {"source", in_.scene.volume() ? in_.scene.volume()->source.text : ""},
+        {"default_isovalue", volumeJson.value("values_read", true) && in_.scene.volume()
+                                 ? nlohmann::json(in_.scene.volume()->defaultIso)
                                  : nlohmann::json(nullptr)},
         {"volume", volumeJson},
-        {"isovalue", currentIso()},
-        {"isovalue_shown", shownIso()},
-        {"extractions_applied", extraction_.appliedCount()},
-        {"extractions_cancelled", extraction_.cancelledCount()},
-        {"table", tableKindName(extraction_.table())},
-        {"method", ui::methodName(extraction_.method())},
-        {"min_persistence", extraction_.minPersistence()},
+        {"isovalue", in_.extraction.currentIso()},
+        {"isovalue_shown", in_.extraction.shownIso()},
+        {"extractions_applied", in_.extraction.appliedCount()},
+        {"extractions_cancelled", in_.extraction.cancelledCount()},
+        {"table", tableKindName(in_.extraction.table())},
+        {"method", ui::methodName(in_.extraction.method())},
+        {"min_persistence", in_.extraction.minPersistence()},
         {"surfaces", surfaces},
         {"cpu_bytes", cpuBytes()},
         {"cpu_bytes_detail",
-         {{"volume", scene_.cpuVolumeBytes()}, {"meshes", scene_.cpuMeshBytes()}, {"tables", tableBytes()}}},
+         {{"volume", in_.scene.cpuVolumeBytes()}, {"meshes", in_.scene.cpuMeshBytes()}, {"tables", tableBytes()}}},
         {"gpu_bytes", gpuBytes()},
         {"gpu_bytes_detail",
-         {{"surfaces", renderer_->arena().stats().capacityBytes},
-          {"pick_buffer", picker_.gpuBytes()},
-          {"view_image", viewCache_.gpuBytes()},
+         {{"surfaces", in_.renderer.arena().stats().capacityBytes},
+          {"pick_buffer", in_.picker.gpuBytes()},
+          {"view_image", in_.viewCache.gpuBytes()},
           {"box", kBoxBytes},
           {"font_atlas", Window::imguiFontBytes()}}},
-        {"gpu_surface_arena", arenaJson(renderer_->arena().stats())},
+        {"gpu_surface_arena", arenaJson(in_.renderer.arena().stats())},
         {"rss_bytes", residentBytes()},
-        {"frames", profiler_.frames()},
-        {"median_frame_ms", profiler_.medianFrameMs()},
+        {"frames", in_.profiler.frames()},
+        {"median_frame_ms", in_.profiler.medianFrameMs()},
         {"frame_counters",
-         {{"max_draw_calls", sessionCounters_.maxDrawCalls},
-          {"max_triangles_drawn", sessionCounters_.maxTrianglesDrawn},
-          {"max_uploaded_bytes", sessionCounters_.maxUploadedBytes},
-          {"uploaded_bytes", sessionCounters_.uploadedBytes}}},
-        {"extraction_ms", extraction_.lastMs()},
-        {"gpu_timer_queries", profiler_.gpuTimersAvailable()},
-        {"renderer", window_.info().renderer},
-        {"window", {framebufferWidth_, framebufferHeight_}},
+         {{"max_draw_calls", in_.totals.maxDrawCalls},
+          {"max_triangles_drawn", in_.totals.maxTrianglesDrawn},
+          {"max_in_.totals.uploadedbytes", in_.totals.maxUploadedBytes},
+          {"in_.totals.uploadedbytes", in_.totals.uploadedBytes}}},
+        {"extraction_ms", in_.extraction.lastMs()},
+        {"gpu_timer_queries", in_.profiler.gpuTimersAvailable()},
+        {"renderer", in_.window.info().renderer},
+        {"window", {in_.layout.framebufferWidth(), in_.layout.framebufferHeight()}},
         {"checkpoints", checkpoints_},
-        {"picks", picks_},
+        {"picks", in_.clicks.picks()},
     };
     return summary;
-}
-
-void Viewer::writeScreenshot(const std::string& path) const {
-    render::writePng(render::readWindowImage(framebufferWidth_, framebufferHeight_), path);
 }
 
 }  // namespace isotrack::viewer

@@ -12,7 +12,7 @@ using namespace isotrack::viewer;
 
 namespace {
 
-ExtractionRequest request(std::uint64_t generation, const char* field, ui::Method method) {
+ExtractionRequest request(std::uint64_t generation, const char* field, Method method) {
     ExtractionRequest r;
     r.generation = generation;
     r.source = VolumeSource::field(field);
@@ -24,7 +24,7 @@ ExtractionRequest request(std::uint64_t generation, const char* field, ui::Metho
 
 TEST_CASE("a contour tree build shows its progress and a new volume cancels it", "[viewer][worker]") {
     ExtractionWorker worker(2, defaultMemoryBudget());
-    worker.submit(request(1, "gyroid:160", ui::Method::Tree));
+    worker.submit(request(1, "gyroid:160", Method::Tree));
     // Wait until the build reports a phase of its own.
     WorkerProgress seen;
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
@@ -37,7 +37,7 @@ TEST_CASE("a contour tree build shows its progress and a new volume cancels it",
     CHECK(seen.fraction >= 0.1f);
     CHECK(seen.fraction < 1.0f);
     // Another volume: the build stops, and the next result is the new volume's.
-    worker.submit(request(2, "blobs:32", ui::Method::All));
+    worker.submit(request(2, "blobs:32", Method::All));
     std::optional<ExtractionResult> result;
     while (!result && std::chrono::steady_clock::now() < deadline) {
         result = worker.poll();

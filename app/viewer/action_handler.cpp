@@ -1,11 +1,12 @@
 // What the panel, the keys and scripts ask for, applied between frames.
 #include <algorithm>
 #include <type_traits>
+#include <variant>
 
 #include "isotrack/errors.h"
 #include "isotrack/io.h"
 #include "isotrack/orientation.h"
-#include "viewer/viewer.h"
+#include "viewer/action_handler.h"
 
 namespace isotrack::viewer {
 namespace {
@@ -21,53 +22,28 @@ Overloaded(Ts...) -> Overloaded<Ts...>;
 
 }  // namespace
 
-void Viewer::apply(const ui::Action& action) {
+void ActionHandler::apply(const ui::Action& action) {
     std::visit(Overloaded{
                    [&](const ui::LoadField& a) {
-                       confirmation_.reset();
-                       extraction_.setSource(VolumeSource::field(a.name + ":" + std::to_string(a.size)));
-                       submit();
+                       extraction_.load(VolumeSource::field(a.name + ":" + std::to_string(a.size)));
                    },
-                   [&](const ui::LoadFile& a) {
-                       confirmation_.reset();
-                       extraction_.setSource(VolumeSource::file(a.path));
-                       submit();
-                   },
+                   [&](const ui::LoadFile& a) { extraction_.load(VolumeSource::file(a.path)); },
                    [&](const ui::SetIso& a) {
                        extraction_.setIso(a.iso);
-                       submit();
+                       extraction_.submit();
                    },
                    [&](const ui::SetTable& a) {
                        extraction_.setTable(a.table);
-                       submit();
+                       extraction_.submit();
                    },
-                   [&](const ui::SetMethod& a) {
-                       methodChosen_ = true;
-                       confirmation_.reset();
-                       extraction_.setMethod(a.method);
-                       submit();
-                   },
-                   [&](const ui::ConfirmExtraction&) {
-                       if (!confirmation_) throw InputError("confirm: no extraction waits for confirmation");
-                       extraction_.confirm(confirmation_->method);
-                       extraction_.setMethod(confirmation_->method);
-                       confirmation_.reset();
-                       submit();
-                   },
-                   [&](const ui::CancelExtraction&) {
-                       if (!confirmation_) return;
-                       confirmation_.reset();
-                       extraction_.setMethod(ui::Method::Track);
-                       submit();
-                   },
+                   [&](const ui::SetMethod& a) { extraction_.chooseMethod(a.method); },
+                   [&](const ui::ConfirmExtraction&) { extraction_.confirm(); },
+                   [&](const ui::CancelExtraction&) { extraction_.cancelConfirmation(); },
                    [&](const ui::Growth& a) {
                        switch (a.kind) {
-                           case ui::Growth::Play: playing_ = true; break;
-                           case ui::Growth::Pause: playing_ = false; break;
-                           case ui::Growth::Step:
-                               playing_ = false;
-                               stepOnce_ = true;
-                               break;
+                           case ui::Growth::Play: growth_.play(); break;
+                           case ui::Growth::Pause: growth_.pause(); break;
+                           case ui::Growth::Step: growth_.step(); break;
                            case ui::Growth::Restart:
                                for (auto& surface : scene_.surfaces()) {
                                    if (!scene_.selected || scene_.selected == surface->id()) surface->restartGrowth();
@@ -76,8 +52,8 @@ void Viewer::apply(const ui::Action& action) {
                                break;
                        }
                    },
-                   [&](const ui::SetCellsPerFrame& a) { cellsPerFrame_ = a.cells; },
-                   [&](const ui::SetGrowthBudget& a) { growthBudgetMs_ = std::clamp(a.ms, 0.25f, 1000.0f); },
+                   [&](const ui::SetCellsPerFrame& a) { growth_.setCellsPerFrame(a.cells); },
+                   [&](const ui::SetGrowthBudget& a) { growth_.setBudgetMs(a.ms); },
                    [&](const ui::SetColourByGrowth& a) { scene_.colourByGrowth = a.on; },
                    [&](const ui::Select& a) { scene_.selected = a.id; },
                    [&](const ui::SetVisible& a) {
@@ -92,10 +68,10 @@ void Viewer::apply(const ui::Action& action) {
                    },
                    [&](const ui::Delete& a) { scene_.remove(a.id); },
                    [&](const ui::Export& a) { exportSurface(a.id, a.path); },
-                   [&](const ui::SetSurfaceIso& a) { setSurfaceIso(a.id, a.iso); },
+                   [&](const ui::SetSurfaceIso& a) { extraction_.setSurfaceIso(a.id, a.iso); },
                    [&](const ui::SetMinPersistence& a) {
                        extraction_.setMinPersistence(std::max(a.persistence, 0.0));
-                       submit();
+                       extraction_.submit();
                    },
                    [&](const ui::SetColour& a) {
                        if (SurfaceStructure* s = scene_.find(a.id)) s->style().colour = toVec3(a.colour);
@@ -113,8 +89,8 @@ void Viewer::apply(const ui::Action& action) {
                    [&](const ui::UndoMesh& a) {
                        SurfaceStructure* s = scene_.find(a.id);
                        if (s && s->undoProcessing())
-                           status("surface " + std::to_string(a.id) + ": back to " +
-                                  std::to_string(s->mesh().triangleCount()) + " triangles");
+                           status_.show("surface " + std::to_string(a.id) + ": back to " +
+                                        std::to_string(s->mesh().triangleCount()) + " triangles");
                    },
                    [&](const ui::FrameSelection&) { frameCamera(true); },
                    [&](const ui::FrameAll&) { frameCamera(false); },
@@ -122,13 +98,13 @@ void Viewer::apply(const ui::Action& action) {
                action);
 }
 
-void Viewer::applyKey(KeyCommand key) {
+void ActionHandler::applyKey(KeyCommand key) {
     const std::optional<std::uint32_t> selected = scene_.selected;
     switch (key) {
         case KeyCommand::FrameSelection: apply(ui::FrameSelection{}); break;
         case KeyCommand::FrameAll: apply(ui::FrameAll{}); break;
         case KeyCommand::Deselect: apply(ui::Select{std::nullopt}); break;
-        case KeyCommand::PlayPause: apply(ui::Growth{playing_ ? ui::Growth::Pause : ui::Growth::Play}); break;
+        case KeyCommand::PlayPause: apply(ui::Growth{growth_.playing() ? ui::Growth::Pause : ui::Growth::Play}); break;
         case KeyCommand::Step: apply(ui::Growth{ui::Growth::Step}); break;
         case KeyCommand::ShowAll: apply(ui::ShowAll{}); break;
         case KeyCommand::ToggleWireframe: apply(ui::SetWireframe{!scene_.wireframe}); break;
@@ -142,10 +118,10 @@ void Viewer::applyKey(KeyCommand key) {
         case KeyCommand::DeleteSelected:
             if (selected) apply(ui::Delete{*selected});
             break;
-        case KeyCommand::Quit: quit_ = true; break;
+        case KeyCommand::Quit: requests_.quit = true; break;
         case KeyCommand::Screenshot: {
-            screenshotPath_ = "isotrack_screenshot_" + std::to_string(++screenshots_) + ".png";
-            status("screenshot: " + *screenshotPath_);
+            requests_.screenshotPath = "isotrack_screenshot_" + std::to_string(++requests_.screenshots) + ".png";
+            status_.show("screenshot: " + *requests_.screenshotPath);
             break;
         }
         case KeyCommand::ExportSelected:
@@ -154,7 +130,7 @@ void Viewer::applyKey(KeyCommand key) {
     }
 }
 
-void Viewer::frameCamera(bool selectionOnly) {
+void ActionHandler::frameCamera(bool selectionOnly) {
     render::Bounds bounds = scene_.drawBounds();
     const SurfaceStructure* selected = selectionOnly ? scene_.selection() : nullptr;
     if (selected != nullptr && selected->mesh().triangleCount() > 0) {
@@ -172,7 +148,7 @@ void Viewer::frameCamera(bool selectionOnly) {
 // through the same transform, so the file equals extract's for the same surface.
 // Smoothing and decimation of one surface, with the command line's defaults
 // (core's defaultDecimateError for the volume shown).
-void Viewer::processMesh(const ui::ProcessMesh& request) {
+void ActionHandler::processMesh(const ui::ProcessMesh& request) {
     SurfaceStructure* surface = scene_.find(request.id);
     if (surface == nullptr) return;
     MeshProcessing processing;
@@ -182,26 +158,26 @@ void Viewer::processMesh(const ui::ProcessMesh& request) {
         processing.decimateError = defaultDecimateError(scene_.volume()->volume);
     const std::size_t before = surface->mesh().triangleCount();
     if (!surface->processMesh(processing)) {
-        status("surface " + std::to_string(request.id) + ": no finished mesh to smooth or decimate");
+        status_.show("surface " + std::to_string(request.id) + ": no finished mesh to smooth or decimate");
         return;
     }
-    status("surface " + std::to_string(request.id) + ": " + std::to_string(before) + " -> " +
-           std::to_string(surface->mesh().triangleCount()) + " triangles (undo to go back)");
+    status_.show("surface " + std::to_string(request.id) + ": " + std::to_string(before) + " -> " +
+                 std::to_string(surface->mesh().triangleCount()) + " triangles (undo to go back)");
 }
 
-void Viewer::exportSurface(std::uint32_t id, const std::string& path) {
+void ActionHandler::exportSurface(std::uint32_t id, const std::string& path) {
     const SurfaceStructure* surface = scene_.find(id);
     if (surface == nullptr) return;
     if (surface->presence() != Presence::Shown) {
         throw InputError("export " + path + ": surface " + std::to_string(id) + " has no mesh at isovalue " +
-                         std::to_string(shownIso()));
+                         std::to_string(extraction_.shownIso()));
     }
     const MeshFormat format = meshFormatOf(path);
     Mesh mesh = surface->mesh();
-    if (scene_.volume()) transformMesh(mesh, gridToFrame(scene_.volume()->volume, options_.frame));
+    if (scene_.volume()) transformMesh(mesh, gridToFrame(scene_.volume()->volume, exportFrame_));
     writeMesh(path, mesh);
-    status("surface " + std::to_string(id) + ": wrote " + std::to_string(surface->mesh().triangleCount()) +
-           " triangles to " + path + " (" + meshFormatExtension(format) + ")");
+    status_.show("surface " + std::to_string(id) + ": wrote " + std::to_string(surface->mesh().triangleCount()) +
+                 " triangles to " + path + " (" + meshFormatExtension(format) + ")");
 }
 
 }  // namespace isotrack::viewer
