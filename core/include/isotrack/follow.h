@@ -249,7 +249,10 @@ struct EndedSurface {
 struct NextSurfaces {
     double iso = 0.0;                   // the common isovalue (of the extraction)
     std::vector<NextSurface> surfaces;  // in the order the caller's list takes
-    std::vector<EndedSurface> ended;    // in the previous list's order
+    // The previous surfaces kept by neither seed nor own isovalue that nothing
+    // continues, in the previous list's order (a tracked surface never ends:
+    // it is Gone or Merged and keeps its place).
+    std::vector<EndedSurface> ended;
 };
 
 // The volume's work: extraction, seeds, own isovalues and footprints. Throws

@@ -82,9 +82,11 @@ struct Shown {
 };
 
 NextSurfaces follow(const Volume& volume, double iso, Method method, const Shown& shown,
-                    std::optional<double> previousIso, std::shared_ptr<const ContourTree> tree = nullptr) {
+                    std::optional<double> previousIso, std::shared_ptr<const ContourTree> tree = nullptr,
+                    bool nextStep = false) {
     FollowRequest request;
     request.volume = &volume;
+    request.nextStep = nextStep;
     request.iso = iso;
     request.method = method;
     request.tree = std::move(tree);
@@ -314,4 +316,28 @@ TEST_CASE("a time step: blobs that moved a little keep their ids; blobs that mee
     REQUIRE(merged.ended.size() == 1);
     CHECK(merged.ended[0].id == 2);
     CHECK(merged.ended[0].mergedInto == 1u);
+}
+
+TEST_CASE("a time step with the contour tree matches by footprint: the arcs are another tree's", "[follow][tree]") {
+    // Three blobs whose peaks change order: the two steps' trees number their arcs apart.
+    const Volume before = blobs({{8.0, 0.9}, {22.0, 1.0}, {36.0, 0.8}});
+    Shown shown;
+    shown.nextId = 1;
+    shown.take(follow(before, kApart, Method::Tree, shown, std::nullopt));
+    REQUIRE(shown.surfaces.size() == 3);
+    const Volume after = blobs({{9.0, 1.0}, {23.0, 0.8}, {37.0, 0.9}});  // peaks in another order
+    const NextSurfaces next = follow(after, kApart, Method::Tree, shown, kApart, nullptr, true);
+    REQUIRE(next.surfaces.size() == 3);
+    for (const NextSurface& n : next.surfaces) {
+        REQUIRE(n.continues);
+        REQUIRE(n.surface);
+        const double x = 0.5 * (n.surface->stats.boundsMin[0] + n.surface->stats.boundsMax[0]);
+        const auto old = std::find_if(shown.surfaces.begin(), shown.surfaces.end(),
+                                      [&](const PreviousSurface& s) { return s.id == *n.continues; });
+        REQUIRE(old != shown.surfaces.end());
+        const SurfaceFootprint& f = *old->footprint;
+        const double was = 0.5 * (f.boundsMin[0] + f.boundsMax[0]);
+        CHECK(std::abs(x - was - 1.0) < 0.75);  // the same blob, a voxel on
+    }
+    CHECK(next.ended.empty());
 }
