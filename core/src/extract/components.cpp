@@ -25,6 +25,7 @@
 #include "labelled_march.h"
 #include "support/huge_pages.h"
 #include "support/parallel.h"
+#include "snap_march.h"
 #include "surface_measure.h"
 #include "trilinear_march.h"
 
@@ -524,6 +525,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
 std::vector<Surface> detail::extractAllSurfaces(const Volume& volume, double iso, TableKind table, int threads,
                                                 const std::atomic<bool>* cancel, ExtractProgress* progress) {
     if (table == TableKind::Trilinear) return detail::allTrilinear(volume, iso, threads);
+    if (table == TableKind::Snap) return detail::allSnap(volume, iso);
     detail::LabelledMesh labelled = detail::marchLabelled(volume, iso, table, threads, progress);
     if (detail::cancelled(cancel)) return {};
     Split split(labelled, volume, table, threads);

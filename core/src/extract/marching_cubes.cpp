@@ -48,6 +48,7 @@
 #include "support/slice_release.h"
 #include "surface_labels.h"
 #include "surface_measure.h"
+#include "snap_march.h"
 #include "trilinear_march.h"
 
 namespace isotrack {
@@ -572,6 +573,8 @@ Mesh marchingCubes(const Volume& volume, double iso, TableKind table, int thread
     Mesh mesh;
     if (table == TableKind::Trilinear)
         mesh = marchTrilinear(volume, iso, threads);
+    else if (table == TableKind::Snap)
+        mesh = marchSnap(volume, iso);
     else
         march(volume, iso, table, threads, mesh, nullptr, nullptr, progress);
     volume.throwIfDamaged();  // a mapped file that shrank meanwhile read as zeros

@@ -1,0 +1,44 @@
+#pragma once
+// Extraction with the 3-state table (isotrack/snap_table.h): marching cubes,
+// the surface through a seed, and every surface.
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "isotrack/mesh.h"
+#include "isotrack/snap_table.h"
+#include "isotrack/surface.h"
+#include "isotrack/volume.h"
+#include "trilinear_march.h"
+
+namespace isotrack::detail {
+
+// Every sample's state after snapping, in sample order: at when it equals
+// `iso` or when a crossing on one of its grid edges lies within kSnapDistance
+// of it (snapsTowards, with the samples as they are, not as snapped).
+std::vector<SampleState> snapStates(const Volume& volume, double iso);
+
+// Every cell, one mesh: one vertex per crossed grid edge whose ends are both
+// off the isovalue, one per sample at the isovalue that a triangle uses (its
+// vertexEdges entry is a grid edge from or to the sample, on the volume's
+// border when the sample is). Pairs of triangles over the same three vertices
+// are removed (detail::removeFins).
+Mesh marchSnap(const Volume& volume, double iso);
+
+// The surface through `seed` by continuation over the 2-state configurations
+// the snapped ones refine, walked breadth-first a budget of (cell, piece) pairs
+// at a time; the walk's interface is the trilinear table's (TrilinearWalk).
+// InputError when the seed is outside, not crossed, or snapped onto a sample
+// no surface passes through.
+std::unique_ptr<TrilinearWalk> startSnap(const Volume& volume, double iso, const GridEdge& seed);
+
+// The walk's surface (its mesh taken), its reversed pairs removed, measured.
+Surface finishedSnap(TrilinearWalk& walk, const Volume& volume);
+
+Surface trackSnap(const Volume& volume, double iso, const GridEdge& seed);
+
+// Every surface by continuation from each (cell, piece) no walk has visited,
+// most triangles first; surfaces that snapping collapses to nothing are dropped.
+std::vector<Surface> allSnap(const Volume& volume, double iso);
+
+}  // namespace isotrack::detail
