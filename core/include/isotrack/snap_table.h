@@ -6,35 +6,40 @@
 // sample whose crossing on one of its six grid edges lies within
 // kSnapDistance (a fraction of the edge) of it is snapped: it counts as at
 // the isovalue, and the surface passes through its grid point instead of
-// through crossings a sliver away from it. The table has an entry for each of
-// the 3^8 = 6561 configurations.
+// through crossings a sliver away from it. A sample at the isovalue keeps the
+// side its value is on (at or above the isovalue is above, VTK's rule) for the
+// surface's topology, so the table has an entry per 2-state configuration and
+// set of samples at the isovalue: 2^8 x 2^8 = 65,536 entries, over the 3^8
+// below/at/above states and, for each at sample, its side.
 //
-// Loops that snapping leaves on one cube face are fanned from their corner
-// first in the face's coordinates, so both cubes on the face draw the same
-// triangles; other loops from a corner whose fan draws no triangle and no
-// diagonal flat on a face, or, where none does, around their centre.
-// Generated, never written by hand: a configuration refines the 2-state one
-// in which "at" counts as above (VTK's rule, sample >= iso). Its triangles are
-// the consistent table's triangles of that 2-state configuration, with every
-// corner on an edge that has an "at" end moved onto that end (a crossed edge
-// has at most one: its other end is below). Triangles that this collapses
-// (two corners at one place) are dropped, and so are pairs over the same three
-// corners (a sheet folded back onto itself, enclosing nothing). Each triangle
-// keeps the piece of the 2-state configuration it came from, so tracking
-// follows the consistent table's continuation over the 2-state configurations
-// and visits the same cells as on a volume whose snapped samples equal the
-// isovalue. The 2-state surface is closed, so its image is too; where a thin
-// sheet of "at" samples has cells below on both sides, both cells draw the
-// same triangles on their shared face, reversed, and the extractors cancel
-// such pairs (detail::removeFins) over the surface.
+// Generated, never written by hand: an entry's triangles are the consistent
+// table's polygons of its 2-state configuration, with every corner on an edge
+// that has an at end moved onto that end (a crossed edge has at most one: a
+// snap distance below one half lets one end only snap towards a crossing,
+// and an end that equals the isovalue is above). Polygons are split where
+// this makes them pass a corner twice; pieces of fewer than three corners go.
+// A polygon left on one cube face is fanned from its corner first in the
+// face's coordinates, so both cubes on the face draw the same triangles,
+// reversed; any other from a corner whose fan lays no triangle and no diagonal
+// flat on a face, or, where none does, around its centre. Triangles over the
+// same three corners as another go, both (a sheet folded back on itself,
+// enclosing nothing). Each triangle keeps the piece of the 2-state
+// configuration it came from, so the extractors follow the consistent table's
+// continuation and visit the same cells as with the consistent table. Where a
+// sheet of at samples has samples below on both sides, both cubes draw the
+// same triangles on their shared face, reversed; the extractors cancel such
+// pairs (detail::removeFins) over the surface.
 #include <array>
 #include <cstdint>
+#include <vector>
 
 #include "isotrack/tables.h"
 
 namespace isotrack {
 
-constexpr int kSnapConfigCount = 6561;
+// Entries: the 2-state configuration in the low byte, the samples at the isovalue in the high one.
+constexpr int kSnapCaseCount = 65536;
+constexpr int snapCaseIndex(std::uint8_t aboveMask, std::uint8_t atMask) { return aboveMask | atMask << 8; }
 // Triangle corners 0..11 are crossings on cube edges; kSnapCornerVertex + v is
 // cube vertex v (a sample at the isovalue); kSnapCornerCentre + i is the centre
 // of the case's i-th centred loop: the mean of its corners (SnapCase::centres).
@@ -46,7 +51,10 @@ constexpr int kMaxSnapCentres = 4;
 // edge, from the sample) snaps the sample to the isovalue.
 constexpr double kSnapDistance = 0.3;
 
-enum class SampleState : std::uint8_t { Below = 0, At = 1, Above = 2 };
+// A sample's state: its side (bit 0: at or above the isovalue) and whether it is at the isovalue (bit 1).
+enum class SampleState : std::uint8_t { Below = 0, Above = 1, AtFromBelow = 2, At = 3 };
+constexpr bool isAt(SampleState s) { return std::uint8_t(s) & 2u; }
+constexpr bool isAbove(SampleState s) { return std::uint8_t(s) & 1u; }
 
 struct SnapCase {
     std::uint8_t count = 0;
@@ -61,12 +69,8 @@ struct SnapCase {
     std::array<std::array<std::int8_t, 12>, kMaxSnapCentres> centres{};
 };
 
-// The configuration index of eight states in cube vertex order: sum of state_v * 3^v.
-int snapConfigIndex(const std::array<SampleState, 8>& states);
-// The states of a configuration index.
-std::array<SampleState, 8> snapConfigStates(int index);
-
-const std::array<SnapCase, kSnapConfigCount>& snapTable();
+// Indexed by snapCaseIndex.
+const std::vector<SnapCase>& snapTable();
 
 // Whether a sample with value `value` snaps to `iso` given one of its grid
 // neighbours' `neighbour`: the edge between them is crossed and the crossing

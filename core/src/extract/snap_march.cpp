@@ -38,8 +38,6 @@
 namespace isotrack::detail {
 namespace {
 
-constexpr std::array<int, 8> kPowerOf3{1, 3, 9, 27, 81, 243, 729, 2187};
-
 double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -70,13 +68,16 @@ public:
         return x >= 0 && y >= 0 && z >= 0 && x + 1 < grid_.nx() && y + 1 < grid_.ny() && z + 1 < grid_.nz();
     }
 
+    // The snap table's entry for cell (x, y, z) (snapCaseIndex).
     int config(int x, int y, int z) const {
-        int index = 0;
+        unsigned above = 0, at = 0;
         for (int v = 0; v < cube::kVertexCount; ++v) {
             const auto& o = cube::kVertexOffset[std::size_t(v)];
-            index += int(state(x + o[0], y + o[1], z + o[2])) * kPowerOf3[std::size_t(v)];
+            const SampleState s = state(x + o[0], y + o[1], z + o[2]);
+            above |= unsigned(isAbove(s)) << v;
+            at |= unsigned(isAt(s)) << v;
         }
-        return index;
+        return snapCaseIndex(std::uint8_t(above), std::uint8_t(at));
     }
 
     // Appends the triangles of `piece` (all pieces when negative) of cell (x, y, z).
@@ -241,19 +242,16 @@ private:
     std::unordered_map<std::uint64_t, std::uint32_t> slots_;
 };
 
-// The (cell, piece) a walk from `seed` starts at: a cell around the seed edge
-// whose 2-state configuration crosses it, or, when snapping moved the crossing
-// onto one of its ends, a piece of such a cell through that end.
+// The (cell, piece) a walk from `seed` starts at: a cell around the seed edge.
+// Samples keep their side, so the 2-state configuration crosses it.
 template <class T>
 std::array<int, 4> seedPiece(const SnapCells<T>& cells, double iso, const GridEdge& seed) {
     const Volume& volume = cells.volume();
     if (!edgeInside(volume, seed)) throw InputError("seed edge " + edgeText(seed) + " is outside the volume");
-    const int p[3] = {seed.x, seed.y, seed.z};
     int q[3] = {seed.x, seed.y, seed.z};
     ++q[seed.axis];
-    const bool aAbove = volume.value(p[0], p[1], p[2]) >= iso, bAbove = volume.value(q[0], q[1], q[2]) >= iso;
-    if (aAbove == bAbove) throw InputError("seed edge " + edgeText(seed) + " does not cross iso " + isoText(iso));
-    const auto& continuation = continuationTable(TableKind::Consistent);
+    if ((volume.value(seed.x, seed.y, seed.z) >= iso) == (volume.value(q[0], q[1], q[2]) >= iso))
+        throw InputError("seed edge " + edgeText(seed) + " does not cross iso " + isoText(iso));
     const int u = (seed.axis + 1) % 3, w = (seed.axis + 2) % 3;
     for (int du = 0; du < 2; ++du) {
         for (int dw = 0; dw < 2; ++dw) {
@@ -264,23 +262,13 @@ std::array<int, 4> seedPiece(const SnapCells<T>& cells, double iso, const GridEd
             std::array<int, 3> origin{};
             origin[std::size_t(u)] = du;
             origin[std::size_t(w)] = dw;
-            const int edge = cube::edgeAt(origin, seed.axis);
-            const SnapCase& cased = snapTable()[std::size_t(cells.config(c[0], c[1], c[2]))];
-            const CaseContinuation& pieces = continuation[cased.aboveMask];
-            if (pieces.pieceOfEdge[std::size_t(edge)] >= 0)
-                return {c[0], c[1], c[2], pieces.pieceOfEdge[std::size_t(edge)]};
-            for (const int end : cube::kEdgeVertices[std::size_t(edge)]) {
-                if (!(cased.atMask >> end & 1u)) continue;
-                for (int e = 0; e < cube::kEdgeCount; ++e) {
-                    const auto& ends = cube::kEdgeVertices[std::size_t(e)];
-                    if ((ends[0] == end || ends[1] == end) && pieces.pieceOfEdge[std::size_t(e)] >= 0)
-                        return {c[0], c[1], c[2], pieces.pieceOfEdge[std::size_t(e)]};
-                }
-            }
+            const std::uint8_t above = snapTable()[std::size_t(cells.config(c[0], c[1], c[2]))].aboveMask;
+            const int piece = continuationTable(TableKind::Consistent)[above]
+                                  .pieceOfEdge[std::size_t(cube::edgeAt(origin, seed.axis))];
+            if (piece >= 0) return {c[0], c[1], c[2], piece};
         }
     }
-    throw InputError("seed edge " + edgeText(seed) + " crosses iso " + isoText(iso) +
-                     " only at a sample that snaps to it with no surface through it (snap table)");
+    throw std::logic_error("snap walk: a crossed seed edge with no cell that crosses it");
 }
 
 template <class T>

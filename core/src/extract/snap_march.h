@@ -13,9 +13,11 @@
 
 namespace isotrack::detail {
 
-// Every sample's state after snapping, in sample order: at when it equals
-// `iso` or when a crossing on one of its grid edges lies within kSnapDistance
-// of it (snapsTowards, with the samples as they are, not as snapped).
+// Every sample's state after snapping, in sample order: its side of `iso`, and
+// at when it equals `iso` or when a crossing on one of its grid edges lies
+// within kSnapDistance of it (snapsTowards, with the samples as they are, not
+// as snapped), unless that would lay two sheets on one grid edge
+// (snap_states.cpp).
 std::vector<SampleState> snapStates(const Volume& volume, double iso);
 
 // Every cell, one mesh: one vertex per crossed grid edge whose ends are both
@@ -26,10 +28,9 @@ std::vector<SampleState> snapStates(const Volume& volume, double iso);
 Mesh marchSnap(const Volume& volume, double iso);
 
 // The surface through `seed` by continuation over the 2-state configurations
-// the snapped ones refine, walked breadth-first a budget of (cell, piece) pairs
+// the snapped ones refine (the consistent table's), walked breadth-first a budget of (cell, piece) pairs
 // at a time; the walk's interface is the trilinear table's (TrilinearWalk).
-// InputError when the seed is outside, not crossed, or snapped onto a sample
-// no surface passes through.
+// InputError when the seed is outside or not crossed.
 std::unique_ptr<TrilinearWalk> startSnap(const Volume& volume, double iso, const GridEdge& seed);
 
 // The walk's surface (its mesh taken), its reversed pairs removed, measured.

@@ -2,15 +2,23 @@
 //
 // Pass 1 snaps: a sample is at the isovalue when it equals it or when a
 // crossing on one of its six grid edges lies within kSnapDistance of it.
-// Pass 2 keeps sheets apart: where two sheets of surface meet a grid edge whose
-// two samples are at the isovalue from two sides (the 2-state surfaces of
-// the four cells around it come near the edge from alternate sectors), snapping
-// both samples would lay four triangles on that edge. Every such edge is found
+// Pass 2 keeps every surface: a sample that snapped stays at the isovalue only
+// if one of its six neighbours is on its side and did not snap. Two such
+// samples are joined by an edge the surface does not cross, so they bound the
+// same surface, whose crossings around the one that did not snap stay at
+// least kSnapDistance away from it: the surface keeps triangles of positive
+// area, where snapping every sample inside a small surface (a single sample
+// above the isovalue among samples below it, say) would shrink it to a point.
+// Pass 3 keeps sheets apart: where two sheets of surface meet a grid edge (or a
+// face's diagonal) whose two samples are at the isovalue, from two sides (the
+// 2-state surfaces of the cells around it come near it from alternate
+// sectors), snapping both samples would lay four triangles on that segment.
+// Every such segment is found
 // with the states of the round, and every sample of one that only snapped (it
 // does not equal the isovalue) goes back to below or above; rounds repeat until
-// no edge changes. A round reads only the states the round before left, so the
+// no segment changes. A round reads only the states the round before left, so the
 // result does not depend on the order of the scan, and extractions that visit
-// different cells agree. Edges whose two samples equal the isovalue stay as
+// different cells agree. Segments whose two samples equal the isovalue stay as
 // they are: there the surface itself touches itself.
 #include <algorithm>
 #include <array>
@@ -23,8 +31,6 @@
 namespace isotrack::detail {
 namespace {
 
-constexpr std::array<int, 8> kPowerOf3{1, 3, 9, 27, 81, 243, 729, 2187};
-
 struct StateGrid {
     const std::vector<SampleState>& states;
     Dims n;
@@ -32,12 +38,14 @@ struct StateGrid {
         return std::size_t(x) + std::size_t(n[0]) * (std::size_t(y) + std::size_t(n[1]) * std::size_t(z));
     }
     int config(int x, int y, int z) const {
-        int c = 0;
+        unsigned above = 0, at = 0;
         for (int v = 0; v < cube::kVertexCount; ++v) {
             const auto& o = cube::kVertexOffset[std::size_t(v)];
-            c += int(states[index(x + o[0], y + o[1], z + o[2])]) * kPowerOf3[std::size_t(v)];
+            const SampleState s = states[index(x + o[0], y + o[1], z + o[2])];
+            above |= unsigned(isAbove(s)) << v;
+            at |= unsigned(isAt(s)) << v;
         }
-        return c;
+        return snapCaseIndex(std::uint8_t(above), std::uint8_t(at));
     }
     // A corner of cell (x, y, z) as the extractors key its vertex.
     std::uint64_t cornerKey(int corner, int x, int y, int z) const {
@@ -56,36 +64,42 @@ struct StateGrid {
     }
 };
 
-// The triangles left on the grid edge from sample (x, y, z) along `axis` once
-// pairs over the same three vertices cancel, over the cells around it.
-int trianglesOnEdge(const StateGrid& grid, int x, int y, int z, int axis) {
+// The triangles left on the segment between samples p and q (neighbours on
+// the grid, their offsets -1, 0 or 1 on each axis) once pairs over the same
+// three vertices cancel, over the cells that hold both.
+int trianglesOnSegment(const StateGrid& grid, const std::array<int, 3>& p, const std::array<int, 3>& q) {
     std::vector<std::array<std::uint64_t, 3>> found;
-    const int u = (axis + 1) % 3, w = (axis + 2) % 3;
-    for (int du = 0; du < 2; ++du) {
-        for (int dw = 0; dw < 2; ++dw) {
-            int c[3] = {x, y, z};
-            c[u] -= du;
-            c[w] -= dw;
-            if (c[u] < 0 || c[w] < 0 || c[u] + 1 >= grid.n[std::size_t(u)] || c[w] + 1 >= grid.n[std::size_t(w)])
-                continue;
-            std::array<int, 3> origin{};
-            origin[std::size_t(u)] = du;
-            origin[std::size_t(w)] = dw;
-            const int edge = cube::edgeAt(origin, axis);
-            const int a = kSnapCornerVertex + cube::kEdgeVertices[std::size_t(edge)][0];
-            const int b = kSnapCornerVertex + cube::kEdgeVertices[std::size_t(edge)][1];
-            const SnapCase& cased = snapTable()[std::size_t(grid.config(c[0], c[1], c[2]))];
-            for (int t = 0; t < cased.count; ++t) {
-                const auto& tri = cased.triangles[std::size_t(t)];
-                if (std::count(tri.begin(), tri.end(), a) == 0 || std::count(tri.begin(), tri.end(), b) == 0) continue;
-                std::array<std::uint64_t, 3> key{};
-                for (int k = 0; k < 3; ++k) key[std::size_t(k)] = grid.cornerKey(tri[std::size_t(k)], c[0], c[1], c[2]);
-                std::sort(key.begin(), key.end());
-                const auto twin = std::find(found.begin(), found.end(), key);
-                if (twin != found.end())
-                    found.erase(twin);
-                else
-                    found.push_back(key);
+    std::array<int, 3> low{}, high{};
+    for (int k = 0; k < 3; ++k) {
+        low[std::size_t(k)] = std::max({std::max(p[std::size_t(k)], q[std::size_t(k)]) - 1, 0});
+        high[std::size_t(k)] = std::min({std::min(p[std::size_t(k)], q[std::size_t(k)]), grid.n[std::size_t(k)] - 2});
+    }
+    auto localVertex = [](const std::array<int, 3>& point, const int c[3]) {
+        for (int v = 0; v < cube::kVertexCount; ++v) {
+            const auto& o = cube::kVertexOffset[std::size_t(v)];
+            if (c[0] + o[0] == point[0] && c[1] + o[1] == point[1] && c[2] + o[2] == point[2]) return v;
+        }
+        return -1;
+    };
+    for (int z = low[2]; z <= high[2]; ++z) {
+        for (int y = low[1]; y <= high[1]; ++y) {
+            for (int x = low[0]; x <= high[0]; ++x) {
+                const int c[3] = {x, y, z};
+                const int a = kSnapCornerVertex + localVertex(p, c), b = kSnapCornerVertex + localVertex(q, c);
+                const SnapCase& cased = snapTable()[std::size_t(grid.config(x, y, z))];
+                for (int t = 0; t < cased.count; ++t) {
+                    const auto& tri = cased.triangles[std::size_t(t)];
+                    if (std::count(tri.begin(), tri.end(), a) == 0 || std::count(tri.begin(), tri.end(), b) == 0)
+                        continue;
+                    std::array<std::uint64_t, 3> key{};
+                    for (int k = 0; k < 3; ++k) key[std::size_t(k)] = grid.cornerKey(tri[std::size_t(k)], x, y, z);
+                    std::sort(key.begin(), key.end());
+                    const auto twin = std::find(found.begin(), found.end(), key);
+                    if (twin != found.end())
+                        found.erase(twin);
+                    else
+                        found.push_back(key);
+                }
             }
         }
     }
@@ -93,33 +107,57 @@ int trianglesOnEdge(const StateGrid& grid, int x, int y, int z, int axis) {
 }
 
 // Pass 2 (see the top of the file).
+void keepSurfaces(std::vector<SampleState>& states, const std::vector<SampleState>& unsnapped, const Dims& n) {
+    const std::size_t strides[3] = {1, std::size_t(n[0]), std::size_t(n[0]) * std::size_t(n[1])};
+    std::vector<std::size_t> release;
+    std::size_t i = 0;
+    for (int z = 0; z < n[2]; ++z) {
+        for (int y = 0; y < n[1]; ++y) {
+            for (int x = 0; x < n[0]; ++x, ++i) {
+                if (!isAt(states[i]) || isAt(unsnapped[i])) continue;
+                const int p[3] = {x, y, z};
+                bool anchored = false;
+                for (int k = 0; k < 3 && !anchored; ++k) {
+                    for (int side = 0; side < 2 && !anchored; ++side) {
+                        if (side == 0 ? p[k] == 0 : p[k] + 1 >= n[k]) continue;
+                        const std::size_t other = side == 0 ? i - strides[k] : i + strides[k];
+                        anchored = !isAt(states[other]) && isAbove(states[other]) == isAbove(unsnapped[i]);
+                    }
+                }
+                if (!anchored) release.push_back(i);
+            }
+        }
+    }
+    for (const std::size_t r : release) states[r] = unsnapped[r];
+}
+
+// Pass 3 (see the top of the file).
 void keepSheetsApart(std::vector<SampleState>& states, const std::vector<SampleState>& unsnapped, const Dims& n) {
     std::vector<std::size_t> snapped;
     for (std::size_t i = 0; i < states.size(); ++i) {
-        if (states[i] == SampleState::At && unsnapped[i] != SampleState::At) snapped.push_back(i);
+        if (isAt(states[i]) && !isAt(unsnapped[i])) snapped.push_back(i);
     }
     const std::size_t strides[3] = {1, std::size_t(n[0]), std::size_t(n[0]) * std::size_t(n[1])};
     for (;;) {
         const StateGrid grid{states, n};
         std::vector<std::size_t> release;
         for (const std::size_t i : snapped) {
-            if (states[i] != SampleState::At) continue;
-            const int p[3] = {int(i % strides[1]), int(i / strides[1] % std::size_t(n[1])), int(i / strides[2])};
-            for (int axis = 0; axis < 3; ++axis) {
-                for (int side = 0; side < 2; ++side) {
-                    if (side == 0 ? p[axis] == 0 : p[axis] + 1 >= n[axis]) continue;
-                    const std::size_t other = side == 0 ? i - strides[axis] : i + strides[axis];
-                    if (states[other] != SampleState::At) continue;
-                    int q[3] = {p[0], p[1], p[2]};
-                    q[axis] -= side == 0;
-                    if (trianglesOnEdge(grid, q[0], q[1], q[2], axis) <= 2) continue;
-                    release.push_back(i);
-                    if (unsnapped[other] != SampleState::At) release.push_back(other);
-                }
+            if (!isAt(states[i])) continue;
+            const std::array<int, 3> p{int(i % strides[1]), int(i / strides[1] % std::size_t(n[1])),
+                                       int(i / strides[2])};
+            for (int neighbour = 0; neighbour < 27; ++neighbour) {
+                const std::array<int, 3> q{p[0] + neighbour % 3 - 1, p[1] + neighbour / 3 % 3 - 1,
+                                           p[2] + neighbour / 9 - 1};
+                if (neighbour == 13 || q[0] < 0 || q[1] < 0 || q[2] < 0 || q[0] >= n[0] || q[1] >= n[1] || q[2] >= n[2])
+                    continue;
+                const std::size_t other = grid.index(q[0], q[1], q[2]);
+                if (!isAt(states[other]) || trianglesOnSegment(grid, p, q) <= 2) continue;
+                release.push_back(i);
+                if (!isAt(unsnapped[other])) release.push_back(other);
             }
         }
         if (release.empty()) return;
-        for (const std::size_t i : release) states[i] = unsnapped[i];
+        for (const std::size_t r : release) states[r] = unsnapped[r];
     }
 }
 
@@ -146,10 +184,11 @@ std::vector<SampleState> snapStates(const Volume& volume, double iso) {
                         if (!at && p[k] + 1 < n[k])
                             at = snapsTowards(value, static_cast<double>(samples[i + strides[k]]), iso);
                     }
-                    states[i] = at ? SampleState::At : unsnapped[i];
+                    states[i] = at ? static_cast<SampleState>(std::uint8_t(unsnapped[i]) | 2u) : unsnapped[i];
                 }
             }
         }
+        keepSurfaces(states, unsnapped, n);
         keepSheetsApart(states, unsnapped, n);
         return states;
     });

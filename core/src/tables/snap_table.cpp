@@ -16,12 +16,15 @@ namespace {
 using Corners = std::array<std::int8_t, 3>;
 using Loop = std::vector<std::int8_t>;
 
-// The corner a crossing on `edge` lands on: the edge's "at" end if it has one.
-std::int8_t snappedCorner(int edge, std::uint8_t atMask) {
+// The corner a crossing on `edge` lands on: the edge's at end if it has one;
+// its end above the isovalue if both are at (where a sample equals the
+// isovalue, the crossing is exactly there).
+std::int8_t snappedCorner(int edge, std::uint8_t aboveMask, std::uint8_t atMask) {
+    int corner = edge;
     for (int end : cube::kEdgeVertices[std::size_t(edge)]) {
-        if (atMask >> end & 1u) return static_cast<std::int8_t>(kSnapCornerVertex + end);
+        if ((atMask >> end & 1u) && (corner == edge || (aboveMask >> end & 1u))) corner = kSnapCornerVertex + end;
     }
-    return static_cast<std::int8_t>(edge);
+    return static_cast<std::int8_t>(corner);
 }
 
 // A corner's position in the cube, doubled so that edge midpoints are integers.
@@ -134,19 +137,16 @@ bool sameCorners(Corners a, Corners b) {
 }
 
 SnapCase buildCase(int index) {
-    const std::array<SampleState, 8> states = snapConfigStates(index);
     SnapCase out;
-    for (int v = 0; v < cube::kVertexCount; ++v) {
-        if (states[std::size_t(v)] != SampleState::Below) out.aboveMask = std::uint8_t(out.aboveMask | 1u << v);
-        if (states[std::size_t(v)] == SampleState::At) out.atMask = std::uint8_t(out.atMask | 1u << v);
-    }
+    out.aboveMask = std::uint8_t(index & 0xff);
+    out.atMask = std::uint8_t(index >> 8);
     const CaseContinuation& cased = continuationTable(TableKind::Consistent)[out.aboveMask];
     std::vector<Corners> kept;
     std::vector<std::int8_t> pieceOf;
     for (int p = 0; p < cased.pieceCount; ++p) {
         Loop snapped;
         for (const std::int8_t edge : pieceLoop(cased, cased.pieces[std::size_t(p)])) {
-            const std::int8_t corner = snappedCorner(edge, out.atMask);
+            const std::int8_t corner = snappedCorner(edge, out.aboveMask, out.atMask);
             if (snapped.empty() || snapped.back() != corner) snapped.push_back(corner);
         }
         while (snapped.size() > 1 && snapped.front() == snapped.back()) snapped.pop_back();
@@ -185,24 +185,10 @@ SnapCase buildCase(int index) {
 
 }  // namespace
 
-int snapConfigIndex(const std::array<SampleState, 8>& states) {
-    int index = 0;
-    for (int v = cube::kVertexCount - 1; v >= 0; --v) index = index * 3 + int(states[std::size_t(v)]);
-    return index;
-}
-
-std::array<SampleState, 8> snapConfigStates(int index) {
-    if (index < 0 || index >= kSnapConfigCount) throw std::logic_error("snap table: configuration index out of range");
-    std::array<SampleState, 8> states{};
-    for (int v = 0; v < cube::kVertexCount; ++v, index /= 3)
-        states[std::size_t(v)] = static_cast<SampleState>(index % 3);
-    return states;
-}
-
-const std::array<SnapCase, kSnapConfigCount>& snapTable() {
+const std::vector<SnapCase>& snapTable() {
     static const auto table = [] {
-        std::array<SnapCase, kSnapConfigCount> cases{};
-        for (int c = 0; c < kSnapConfigCount; ++c) cases[std::size_t(c)] = buildCase(c);
+        std::vector<SnapCase> cases(kSnapCaseCount);
+        for (int c = 0; c < kSnapCaseCount; ++c) cases[std::size_t(c)] = buildCase(c);
         return cases;
     }();
     return table;
