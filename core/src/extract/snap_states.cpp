@@ -68,7 +68,9 @@ struct StateGrid {
 // the grid, their offsets -1, 0 or 1 on each axis) once pairs over the same
 // three vertices cancel, over the cells that hold both.
 int trianglesOnSegment(const StateGrid& grid, const std::array<int, 3>& p, const std::array<int, 3>& q) {
-    std::vector<std::array<std::uint64_t, 3>> found;
+    // At most two triangles of each of the four cells around a grid edge touch it.
+    std::array<std::array<std::uint64_t, 3>, 4 * kMaxSnapTriangles> found{};
+    std::size_t count = 0;
     std::array<int, 3> low{}, high{};
     for (int k = 0; k < 3; ++k) {
         low[std::size_t(k)] = std::max({std::max(p[std::size_t(k)], q[std::size_t(k)]) - 1, 0});
@@ -94,16 +96,17 @@ int trianglesOnSegment(const StateGrid& grid, const std::array<int, 3>& p, const
                     std::array<std::uint64_t, 3> key{};
                     for (int k = 0; k < 3; ++k) key[std::size_t(k)] = grid.cornerKey(tri[std::size_t(k)], x, y, z);
                     std::sort(key.begin(), key.end());
-                    const auto twin = std::find(found.begin(), found.end(), key);
-                    if (twin != found.end())
-                        found.erase(twin);
+                    const auto end = found.begin() + std::ptrdiff_t(count);
+                    const auto twin = std::find(found.begin(), end, key);
+                    if (twin != end)
+                        *twin = found[--count];
                     else
-                        found.push_back(key);
+                        found[count++] = key;
                 }
             }
         }
     }
-    return int(found.size());
+    return int(count);
 }
 
 // Pass 2 (see the top of the file).
@@ -133,15 +136,19 @@ void keepSurfaces(std::vector<SampleState>& states, const std::vector<SampleStat
 
 // Pass 3 (see the top of the file).
 void keepSheetsApart(std::vector<SampleState>& states, const std::vector<SampleState>& unsnapped, const Dims& n) {
-    std::vector<std::size_t> snapped;
+    // The samples to check: every one that snapped, then, after a round, those a
+    // released sample can change the cells of (within two samples of it).
+    std::vector<std::size_t> candidates;
     for (std::size_t i = 0; i < states.size(); ++i) {
-        if (isAt(states[i]) && !isAt(unsnapped[i])) snapped.push_back(i);
+        if (isAt(states[i]) && !isAt(unsnapped[i])) candidates.push_back(i);
     }
+    std::vector<std::uint8_t> queued(states.size(), 0);  // a candidate of this round
+    for (const std::size_t c : candidates) queued[c] = 1;
     const std::size_t strides[3] = {1, std::size_t(n[0]), std::size_t(n[0]) * std::size_t(n[1])};
     for (;;) {
         const StateGrid grid{states, n};
         std::vector<std::size_t> release;
-        for (const std::size_t i : snapped) {
+        for (const std::size_t i : candidates) {
             if (!isAt(states[i])) continue;
             const std::array<int, 3> p{int(i % strides[1]), int(i / strides[1] % std::size_t(n[1])),
                                        int(i / strides[2])};
@@ -151,13 +158,30 @@ void keepSheetsApart(std::vector<SampleState>& states, const std::vector<SampleS
                 if (neighbour == 13 || q[0] < 0 || q[1] < 0 || q[2] < 0 || q[0] >= n[0] || q[1] >= n[1] || q[2] >= n[2])
                     continue;
                 const std::size_t other = grid.index(q[0], q[1], q[2]);
-                if (!isAt(states[other]) || trianglesOnSegment(grid, p, q) <= 2) continue;
+                // A segment between two candidates is checked from its first end only.
+                if (!isAt(states[other]) || (neighbour < 13 && queued[other]) || trianglesOnSegment(grid, p, q) <= 2)
+                    continue;
                 release.push_back(i);
                 if (!isAt(unsnapped[other])) release.push_back(other);
             }
         }
+        for (const std::size_t c : candidates) queued[c] = 0;
         if (release.empty()) return;
         for (const std::size_t r : release) states[r] = unsnapped[r];
+        candidates.clear();
+        for (const std::size_t r : release) {
+            const int p[3] = {int(r % strides[1]), int(r / strides[1] % std::size_t(n[1])), int(r / strides[2])};
+            for (int z = std::max(p[2] - 2, 0); z <= std::min(p[2] + 2, n[2] - 1); ++z) {
+                for (int y = std::max(p[1] - 2, 0); y <= std::min(p[1] + 2, n[1] - 1); ++y) {
+                    for (int x = std::max(p[0] - 2, 0); x <= std::min(p[0] + 2, n[0] - 1); ++x) {
+                        const std::size_t s = grid.index(x, y, z);
+                        if (queued[s] || !isAt(states[s]) || isAt(unsnapped[s])) continue;
+                        queued[s] = 1;
+                        candidates.push_back(s);
+                    }
+                }
+            }
+        }
     }
 }
 
