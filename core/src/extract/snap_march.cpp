@@ -56,6 +56,53 @@ GridEdge edgeThroughSample(int x, int y, int z, const Dims& n) {
     return GridEdge{q[0], q[1], q[2], axis};
 }
 
+constexpr std::uint32_t kNoVertex = std::numeric_limits<std::uint32_t>::max();
+
+// Vertex ids by key (a sample's index times 8 plus 0..2 for its edges along x,
+// y and z, 3 for the sample, 4..7 for a cell's centres), in a hash map: for
+// walks, which go anywhere.
+class HashSlots {
+public:
+    std::uint32_t& slot(std::uint64_t key) { return map_.try_emplace(key, kNoVertex).first->second; }
+    std::size_t size() const { return map_.size(); }
+
+private:
+    std::unordered_map<std::uint64_t, std::uint32_t> map_;
+};
+
+// The same for marchSnap, which goes slab by slab: the slots of two slices of
+// samples, the slice of the slab's top reused from the slab two below, and of
+// the cell being emitted's centres.
+class SliceSlots {
+public:
+    SliceSlots(const Dims& n) : slice_(std::size_t(n[0]) * std::size_t(n[1])), slots_(8 * slice_, kNoVertex) {}
+
+    // Before emitting the cells between slices z and z + 1.
+    void startSlab(int z) {
+        const std::size_t top = std::size_t((z + 1) & 1) * 4 * slice_;
+        std::fill(slots_.begin() + std::ptrdiff_t(top), slots_.begin() + std::ptrdiff_t(top + 4 * slice_), kNoVertex);
+    }
+
+    std::uint32_t& slot(std::uint64_t key) {
+        const std::uint64_t sample = key >> 3, kind = key & 7;
+        if (kind >= 4) {
+            if (sample != centreCell_) {
+                centreCell_ = sample;
+                centres_.fill(kNoVertex);
+            }
+            return centres_[std::size_t(kind - 4)];
+        }
+        const std::size_t parity = std::size_t(sample / slice_) & 1;
+        return slots_[(parity * 4 + kind) * slice_ + std::size_t(sample % slice_)];
+    }
+
+private:
+    std::size_t slice_;
+    std::vector<std::uint32_t> slots_;
+    std::uint64_t centreCell_ = ~std::uint64_t(0);
+    std::array<std::uint32_t, 4> centres_{};
+};
+
 template <class T>
 class SnapCells {
 public:
@@ -81,8 +128,8 @@ public:
     }
 
     // Appends the triangles of `piece` (all pieces when negative) of cell (x, y, z).
-    void emit(int index, int piece, int x, int y, int z, Mesh& mesh,
-              std::unordered_map<std::uint64_t, std::uint32_t>& slots) const {
+    template <class Slots>
+    void emit(int index, int piece, int x, int y, int z, Mesh& mesh, Slots& slots) const {
         const SnapCase& cased = snapTable()[std::size_t(index)];
         for (int t = 0; t < cased.count; ++t) {
             if (piece >= 0 && cased.piece[std::size_t(t)] != piece) continue;
@@ -95,8 +142,8 @@ public:
     }
 
 private:
-    std::uint32_t vertex(int corner, int x, int y, int z, Mesh& mesh,
-                         std::unordered_map<std::uint64_t, std::uint32_t>& slots) const {
+    template <class Slots>
+    std::uint32_t vertex(int corner, int x, int y, int z, Mesh& mesh, Slots& slots) const {
         int p[3] = {x, y, z};
         int axis = 3;  // the slot of a sample, after its three edges
         if (corner < kSnapCornerVertex) {
@@ -108,8 +155,9 @@ private:
             for (int k = 0; k < 3; ++k) p[k] += o[std::size_t(k)];
         }
         const std::uint64_t key = std::uint64_t(grid_.index(p[0], p[1], p[2])) * 8 + std::uint64_t(axis);
-        const auto [slot, added] = slots.try_emplace(key, std::uint32_t(mesh.vertices.size()));
-        if (!added) return slot->second;
+        std::uint32_t& slot = slots.slot(key);
+        if (slot != kNoVertex) return slot;
+        slot = std::uint32_t(mesh.vertices.size());
         Vertex v{};
         if (axis < 3) {
             grid_.edgeVertex(p[0], p[1], p[2], axis, v);
@@ -119,15 +167,14 @@ private:
             mesh.vertexEdges.push_back(edgeThroughSample(p[0], p[1], p[2], volume_.dims()));
         }
         mesh.vertices.push_back(v);
-        return slot->second;
+        return std::uint32_t(mesh.vertices.size() - 1);
     }
 
     // The vertex at the mean of a centred loop's corners, with their mean normal.
-    std::uint32_t centre(const SnapCase& cased, int loop, int x, int y, int z, Mesh& mesh,
-                         std::unordered_map<std::uint64_t, std::uint32_t>& slots) const {
+    template <class Slots>
+    std::uint32_t centre(const SnapCase& cased, int loop, int x, int y, int z, Mesh& mesh, Slots& slots) const {
         const std::uint64_t key = std::uint64_t(grid_.index(x, y, z)) * 8 + 4 + std::uint64_t(loop);
-        const auto found = slots.find(key);
-        if (found != slots.end()) return found->second;
+        if (slots.slot(key) != kNoVertex) return slots.slot(key);
         double position[3] = {0, 0, 0}, normal[3] = {0, 0, 0};
         int count = 0;
         for (const std::int8_t corner : cased.centres[std::size_t(loop)]) {
@@ -145,7 +192,7 @@ private:
         const auto id = std::uint32_t(mesh.vertices.size());
         mesh.vertices.push_back(v);
         mesh.vertexEdges.push_back(GridEdge{x, y, z, kCellInterior});
-        slots.emplace(key, id);
+        slots.slot(key) = id;
         return id;
     }
 
@@ -239,7 +286,7 @@ private:
     std::vector<std::array<int, 4>> queue_;
     std::size_t head_ = 0, visitedPieces_ = 0;
     Mesh mesh_;
-    std::unordered_map<std::uint64_t, std::uint32_t> slots_;
+    HashSlots slots_;
 };
 
 // The (cell, piece) a walk from `seed` starts at: a cell around the seed edge.
@@ -311,8 +358,9 @@ Mesh marchSnap(const Volume& volume, double iso) {
         const Dims& n = volume.dims();
         if (n[0] < 2 || n[1] < 2 || n[2] < 2) return mesh;
         const SnapCells<T> cells(volume, samples, iso);
-        std::unordered_map<std::uint64_t, std::uint32_t> slots;
+        SliceSlots slots(n);
         for (int z = 0; z + 1 < n[2]; ++z) {
+            slots.startSlab(z);
             for (int y = 0; y + 1 < n[1]; ++y) {
                 for (int x = 0; x + 1 < n[0]; ++x) {
                     const int index = cells.config(x, y, z);

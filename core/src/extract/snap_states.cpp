@@ -68,9 +68,11 @@ struct StateGrid {
 // the grid, their offsets -1, 0 or 1 on each axis) once pairs over the same
 // three vertices cancel, over the cells that hold both.
 int trianglesOnSegment(const StateGrid& grid, const std::array<int, 3>& p, const std::array<int, 3>& q) {
-    // At most two triangles of each of the four cells around a grid edge touch it.
-    std::array<std::array<std::uint64_t, 3>, 4 * kMaxSnapTriangles> found{};
+    // Keys of the triangles found, only the first `count` of them set (left
+    // uninitialised: this runs for every pair of neighbours at the isovalue).
+    std::array<std::array<std::uint64_t, 3>, 4 * kMaxSnapTriangles> found;
     std::size_t count = 0;
+    const auto& table = snapTable();
     std::array<int, 3> low{}, high{};
     for (int k = 0; k < 3; ++k) {
         low[std::size_t(k)] = std::max({std::max(p[std::size_t(k)], q[std::size_t(k)]) - 1, 0});
@@ -88,11 +90,11 @@ int trianglesOnSegment(const StateGrid& grid, const std::array<int, 3>& p, const
             for (int x = low[0]; x <= high[0]; ++x) {
                 const int c[3] = {x, y, z};
                 const int a = kSnapCornerVertex + localVertex(p, c), b = kSnapCornerVertex + localVertex(q, c);
-                const SnapCase& cased = snapTable()[std::size_t(grid.config(x, y, z))];
+                const SnapCase& cased = table[std::size_t(grid.config(x, y, z))];
                 for (int t = 0; t < cased.count; ++t) {
                     const auto& tri = cased.triangles[std::size_t(t)];
-                    if (std::count(tri.begin(), tri.end(), a) == 0 || std::count(tri.begin(), tri.end(), b) == 0)
-                        continue;
+                    const bool hasA = tri[0] == a || tri[1] == a || tri[2] == a;
+                    if (!hasA || !(tri[0] == b || tri[1] == b || tri[2] == b)) continue;
                     std::array<std::uint64_t, 3> key{};
                     for (int k = 0; k < 3; ++k) key[std::size_t(k)] = grid.cornerKey(tri[std::size_t(k)], x, y, z);
                     std::sort(key.begin(), key.end());
