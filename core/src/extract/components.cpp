@@ -23,9 +23,9 @@
 #include "cancel.h"
 #include "isotrack/tracking.h"
 #include "labelled_march.h"
+#include "snap_march.h"
 #include "support/huge_pages.h"
 #include "support/parallel.h"
-#include "snap_march.h"
 #include "surface_measure.h"
 #include "trilinear_march.h"
 

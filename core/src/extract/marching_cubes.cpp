@@ -43,12 +43,12 @@
 #include "isotrack/continuation.h"
 #include "isotrack/cube.h"
 #include "labelled_march.h"
+#include "snap_march.h"
 #include "support/huge_pages.h"
 #include "support/parallel.h"
 #include "support/slice_release.h"
 #include "surface_labels.h"
 #include "surface_measure.h"
-#include "snap_march.h"
 #include "trilinear_march.h"
 
 namespace isotrack {

@@ -9,8 +9,8 @@
 
 #include "isotrack/continuation.h"
 #include "isotrack/tracking.h"
-#include "track_walker.h"
 #include "snap_march.h"
+#include "track_walker.h"
 #include "trilinear_march.h"
 
 namespace isotrack {
