@@ -14,9 +14,10 @@
 //
 // Generated, never written by hand: an entry's triangles are the consistent
 // table's polygons of its 2-state configuration, with every corner on an edge
-// that has an at end moved onto that end (a crossed edge has at most one: a
-// snap distance below one half lets one end only snap towards a crossing,
-// and an end that equals the isovalue is above). Polygons are split where
+// that has an at end moved onto that end (onto its end above the isovalue when
+// both are at: a snap distance below one half lets only one end snap towards
+// the edge's own crossing, and an end that equals the isovalue is above, where
+// the crossing is exactly). Polygons are split where
 // this makes them pass a corner twice; pieces of fewer than three corners go.
 // A polygon left on one cube face is fanned from its corner first in the
 // face's coordinates, so both cubes on the face draw the same triangles,

@@ -1,22 +1,24 @@
 // Extraction with the 3-state table (SnapMC; isotrack/snap_table.h).
 //
-// Passes: (1) classify every sample as below, at or above the isovalue, a
-// sample snapping to the isovalue when a crossing on one of its six grid edges
-// lies within kSnapDistance of it (snapStates; the decision reads the samples as
-// they are, so it does not cascade). (2) Per cell, the index of its eight states
-// picks the table entry; marchSnap emits every cell, a walk emits the cells of
-// one surface, entered through the consistent table's continuation over the
-// 2-state configuration the entry refines (at counts as above), so a walk
-// visits what the consistent table's walk would on a volume whose snapped
-// samples equal the isovalue. (3) Each crossed grid edge whose ends are off the
-// isovalue, and each sample at the isovalue, gets one vertex, computed once:
-// the edge's as every extractor places it (SampleGrid::edgeVertex), the
-// sample's on its grid point with the normal of its central-difference
-// gradient; a loop the table fans around its centre gets a vertex inside its
-// cell (vertexEdges: the cell, kCellInterior). (4) Pairs of triangles over the same three vertices, drawn by two
-// cells on their shared face where a sheet of samples at the isovalue has
-// samples below on both sides, are removed (removeFins), with the vertices
-// only they used.
+// Passes: (1) give every sample its side of the isovalue and whether it is at
+// it: equal to it, or snapped because a crossing on one of its six grid edges
+// lies within kSnapDistance of it (snapStates, snap_states.cpp: the decision
+// reads the samples as they are, so it does not cascade, and is undone where
+// it would shrink a surface to nothing or lay two sheets on one segment).
+// (2) Per cell, the sides and at flags of its eight samples pick the table
+// entry; marchSnap emits every cell, slab by slab, a walk the cells of one
+// surface, entered through the consistent table's continuation over the
+// 2-state configuration (the sides), so a walk visits the cells and pieces
+// the consistent table's walk visits. (3) Each crossed grid edge whose ends
+// are off the isovalue, and each sample at the isovalue, gets one vertex,
+// computed once: the edge's as every extractor places it
+// (SampleGrid::edgeVertex), the sample's on its grid point with the normal of
+// its central-difference gradient; a loop the table fans around its centre
+// gets a vertex inside its cell (vertexEdges: the cell, kCellInterior).
+// (4) Pairs of triangles over the same three vertices, drawn by two cells on
+// their shared face where a sheet of samples at the isovalue has samples
+// below on both sides, are removed (removeFins), with the vertices only they
+// used.
 #include "snap_march.h"
 
 #include <algorithm>
