@@ -13,7 +13,7 @@ __version__: str
 
 Triple = Tuple[float, float, float]
 Frame = Literal["lps", "ras", "voxel"]
-Table = Literal["consistent", "classic", "trilinear"]
+Table = Literal["consistent", "classic", "trilinear", "snap"]
 GradientDirection = Literal["descent", "ascent"]
 # Any real or bool dtype, any strides, or anything np.asarray takes.
 ArrayInput = Union[npt.ArrayLike, Any]

@@ -81,8 +81,11 @@ void extractionSection(const PanelState& state, std::vector<Action>& actions) {
     for (const Table kind : kTableKinds) {
         ImGui::SameLine();
         if (ImGui::RadioButton(tableName(kind), &table, static_cast<int>(kind))) actions.push_back(SetTable{kind});
+        if (kind == Table::Trilinear && ImGui::IsItemHovered())
+            ImGui::SetTooltip("the trilinear interpolant's topology (MC33)");
+        if (kind == Table::Snap && ImGui::IsItemHovered())
+            ImGui::SetTooltip("samples near the isovalue snapped onto it (SnapMC): no slivers, fewer triangles");
     }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the trilinear interpolant's topology (MC33)");
 
     // The panel's order: exhaustive, every surface, track click, contour tree.
     int method = static_cast<int>(extraction.method);

@@ -16,7 +16,7 @@ namespace isotrack::ui {
 
 // The panel speaks core's vocabulary: the methods and tables the extraction takes.
 using Method = isotrack::Method;    // Exhaustive, Track, All, Tree: "mc", "track", "all", "tree" (methodName)
-using Table = isotrack::TableKind;  // Consistent, Classic, Trilinear
+using Table = isotrack::TableKind;  // Consistent, Classic, Trilinear, Snap
 using isotrack::methodName;
 inline const char* tableName(Table table) { return tableKindName(table); }  // "consistent", "classic", "trilinear"
 

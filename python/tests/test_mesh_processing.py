@@ -53,3 +53,23 @@ def test_quality_properties_and_refusals():
         isotrack.surfaces(ball(), 0.0, smooth=5, passband=3.0)
     with pytest.raises(ValueError, match="ratio"):
         isotrack.surfaces(ball(), 0.0, decimate=1.5)
+
+
+def test_snap_table_on_integer_samples():
+    """An integer ball at an integer isovalue: the consistent table's zero-area
+    triangles and slivers, none with table="snap", the same surfaces, fewer triangles."""
+    z, y, x = np.indices((24, 24, 24), dtype=np.float64)
+    volume = np.rint(40.0 - 4.0 * np.sqrt((z - 11.3) ** 2 + (y - 12.1) ** 2 + (x - 11.8) ** 2)).astype(np.int16)
+    consistent = isotrack.surfaces(volume, 0.0)
+    snapped = isotrack.surfaces(volume, 0.0, table="snap")
+    assert consistent[0].degenerate_triangles > 0
+    assert len(snapped) == len(consistent) == 1
+    s = snapped[0]
+    assert s.closed and s.degenerate_triangles == 0 and s.non_manifold_edges == 0
+    assert s.triangle_count < consistent[0].triangle_count
+    assert s.min_angle_fractions[1] < consistent[0].min_angle_fractions[1]
+    assert s.volume == pytest.approx(consistent[0].volume, rel=0.02)
+    tracked = isotrack.track(volume, 0.0, seed=(11.8, 12.1, 16.3), table="snap")
+    assert tracked.triangle_count == s.triangle_count
+    # No two vertices at one place: a sample at the isovalue is one vertex.
+    assert len(np.unique(s.vertices, axis=0)) == len(s.vertices)

@@ -50,7 +50,7 @@ refused field_too_large 1 "is outside" extract --field sphere:99999
 # Names: core's words and core's message, while the command line is parsed.
 refused unknown_method 2 'unknown method "flying-edges" (expected mc, track, all or tree)' \
     extract --field $big --method flying-edges
-refused unknown_table 2 'unknown table "mc33" (expected consistent, classic or trilinear)' \
+refused unknown_table 2 'unknown table "mc33" (expected consistent, classic, trilinear or snap)' \
     extract --field $big --table mc33
 refused unknown_frame 2 'unknown frame "xyz" (expected lps, ras or voxel)' extract --field $big --frame xyz
 refused zero_threads 2 "--threads" extract --field $big --threads 0

@@ -37,7 +37,8 @@ struct CaseContinuation {
 // Throws InputError (kTrilinearNoContinuationTable) for TableKind::Trilinear:
 // its subcases' pieces are found per cell as it is tracked (trackSurface,
 // SurfaceTracker, extractAllSurfaces: trilinear_track.cpp), not looked up, so
-// the walks built on this table refuse it.
+// the walks built on this table refuse it. TableKind::Snap gives the consistent
+// table: the snap table's walks follow it over the 2-state configurations.
 const std::array<CaseContinuation, 256>& continuationTable(TableKind kind);
 
 // Generates the tables extractions with `kind` use (the continuation table, or

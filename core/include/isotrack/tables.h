@@ -23,14 +23,17 @@ namespace isotrack {
 
 // Trilinear: the topology of the trilinear interpolant, decided per cube from its
 // samples (isotrack/trilinear.h); it has no TriangleTable and no continuation
-// table, and extracts with marchingCubes only.
-enum class TableKind : std::uint8_t { Consistent, Classic, Trilinear };
+// table of its own. Snap: the 3-state table of SnapMC (isotrack/snap_table.h),
+// 3^8 configurations refining the consistent table's, whose continuation it
+// follows.
+enum class TableKind : std::uint8_t { Consistent, Classic, Trilinear, Snap };
 // Every table, in the order front ends list them.
-inline constexpr std::array<TableKind, 3> kTableKinds{TableKind::Consistent, TableKind::Classic, TableKind::Trilinear};
-// "consistent", "classic" or "trilinear".
+inline constexpr std::array<TableKind, 4> kTableKinds{TableKind::Consistent, TableKind::Classic, TableKind::Trilinear,
+                                                      TableKind::Snap};
+// "consistent", "classic", "trilinear" or "snap".
 const char* tableKindName(TableKind kind);
-// "consistent", "classic" or "trilinear"; throws InputError naming the text and
-// the valid names otherwise.
+// "consistent", "classic", "trilinear" or "snap"; throws InputError naming the
+// text and the valid names otherwise.
 TableKind parseTableKind(const std::string& name);
 
 constexpr int kMaxCaseTriangles = 12;
@@ -68,7 +71,8 @@ private:
 };
 
 // The consistent or classic table (the consistent one for TableKind::Trilinear,
-// whose cubes outside its ambiguous cases it equals up to triangulation).
+// whose cubes outside its ambiguous cases it equals up to triangulation, and
+// for TableKind::Snap, whose 2-state configurations it triangulates).
 const TriangleTable& triangleTable(TableKind kind);
 
 struct BaseCase {

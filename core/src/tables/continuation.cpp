@@ -15,6 +15,7 @@
 
 #include "isotrack/cube.h"
 #include "isotrack/errors.h"
+#include "isotrack/snap_table.h"
 #include "isotrack/trilinear.h"
 
 namespace isotrack {
@@ -114,6 +115,8 @@ std::array<CaseContinuation, 256> buildTable(TableKind kind) {
 void prepareTables(TableKind kind) {
     if (kind == TableKind::Trilinear) {
         trilinearTable();
+    } else if (kind == TableKind::Snap) {
+        snapTable();
     } else {
         continuationTable(kind);
     }

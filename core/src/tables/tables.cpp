@@ -159,6 +159,7 @@ const char* tableKindName(TableKind kind) {
     switch (kind) {
         case TableKind::Classic: return "classic";
         case TableKind::Trilinear: return "trilinear";
+        case TableKind::Snap: return "snap";
         case TableKind::Consistent: break;
     }
     return "consistent";
@@ -168,7 +169,8 @@ TableKind parseTableKind(const std::string& name) {
     if (name == "consistent") return TableKind::Consistent;
     if (name == "classic") return TableKind::Classic;
     if (name == "trilinear") return TableKind::Trilinear;
-    throw InputError("unknown table \"" + name + "\" (expected consistent, classic or trilinear)");
+    if (name == "snap") return TableKind::Snap;
+    throw InputError("unknown table \"" + name + "\" (expected consistent, classic, trilinear or snap)");
 }
 
 int TriangleTable::totalTriangles() const {

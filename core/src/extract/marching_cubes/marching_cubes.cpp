@@ -43,6 +43,7 @@
 #include "extract/marching_cubes/march.h"
 #include "extract/marching_cubes/surface_labels.h"
 #include "extract/measure/surface_measure.h"
+#include "extract/snap/snap_march.h"
 #include "extract/trilinear/trilinear_march.h"
 #include "isotrack/continuation.h"
 #include "isotrack/cube.h"
@@ -572,6 +573,8 @@ Mesh marchingCubes(const Volume& volume, double iso, TableKind table, int thread
     Mesh mesh;
     if (table == TableKind::Trilinear)
         mesh = marchTrilinear(volume, iso, threads);
+    else if (table == TableKind::Snap)
+        mesh = marchSnap(volume, iso);
     else
         march(volume, iso, table, threads, mesh, nullptr, nullptr, progress);
     volume.throwIfDamaged();  // a mapped file that shrank meanwhile read as zeros

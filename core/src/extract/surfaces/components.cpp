@@ -23,6 +23,7 @@
 #include "extract/common/cancel.h"
 #include "extract/marching_cubes/labelled_march.h"
 #include "extract/measure/surface_measure.h"
+#include "extract/snap/snap_march.h"
 #include "extract/surfaces/all_surfaces.h"
 #include "extract/trilinear/trilinear_march.h"
 #include "isotrack/tracking.h"
@@ -525,6 +526,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
 std::vector<Surface> detail::extractAllSurfaces(const Volume& volume, double iso, TableKind table, int threads,
                                                 const std::atomic<bool>* cancel, ExtractProgress* progress) {
     if (table == TableKind::Trilinear) return detail::allTrilinear(volume, iso, threads);
+    if (table == TableKind::Snap) return detail::allSnap(volume, iso);
     detail::LabelledMesh labelled = detail::marchLabelled(volume, iso, table, threads, progress);
     if (detail::cancelled(cancel)) return {};
     Split split(labelled, volume, table, threads);

@@ -1,10 +1,12 @@
 // SurfaceTracker: one surface grown a budget at a time, breadth-first from its
 // seed, for a viewer to show it growing. With the trilinear table the walk is
 // trilinear_track.cpp's, a budget of (cell, piece) pairs at a time, and the
-// figures of the surface so far are measured as the steps add to it.
+// figures of the surface so far are measured as the steps add to it. With the
+// snap table the walk is snap_march.cpp's, behind the same interface.
 #include <limits>
 #include <memory>
 
+#include "extract/snap/snap_march.h"
 #include "extract/tracking/track_walker.h"
 #include "extract/trilinear/trilinear_march.h"
 #include "isotrack/tracking.h"
@@ -21,13 +23,19 @@ using detail::TrackWorker;
 using detail::Walker;
 using detail::WalkOrder;
 
+namespace {
+
+bool usesOwnWalk(TableKind table) { return table == TableKind::Trilinear || table == TableKind::Snap; }
+
+}  // namespace
+
 struct SurfaceTracker::Impl {
     const Volume* volume;
     double iso;
     TableKind table;
-    std::unique_ptr<TrackWorker> worker;  // null with the trilinear table
+    std::unique_ptr<TrackWorker> worker;  // null with the trilinear and snap tables
     TrackState state;
-    std::unique_ptr<detail::TrilinearWalk> trilinear;  // once started, with the trilinear table
+    std::unique_ptr<detail::TrilinearWalk> trilinear;  // once started, with the trilinear or snap table
     // The trilinear walk's figures so far: its vertices and triangles before these are measured.
     detail::SurfaceMeasure measure;
     std::size_t measuredVertices = 0, measuredIndices = 0;
@@ -48,15 +56,16 @@ void SurfaceTracker::Impl::measureNew() {
 
 SurfaceTracker::SurfaceTracker(const Volume& volume, double iso, TableKind table)
     : impl_(std::make_unique<Impl>(
-          Impl{&volume, iso, table, table == TableKind::Trilinear ? nullptr : makeWorker(volume, iso, table),
+          Impl{&volume, iso, table, usesOwnWalk(table) ? nullptr : makeWorker(volume, iso, table),
                TrackState(volume.dims(), WalkOrder::BreadthFirst), nullptr, detail::SurfaceMeasure{}, 0, 0})) {}
 SurfaceTracker::~SurfaceTracker() = default;
 SurfaceTracker::SurfaceTracker(SurfaceTracker&&) noexcept = default;
 SurfaceTracker& SurfaceTracker::operator=(SurfaceTracker&&) noexcept = default;
 
 void SurfaceTracker::start(const GridEdge& seed) {
-    if (impl_->table == TableKind::Trilinear) {
-        impl_->trilinear = detail::startTrilinear(*impl_->volume, impl_->iso, seed);
+    if (usesOwnWalk(impl_->table)) {
+        impl_->trilinear = impl_->table == TableKind::Snap ? detail::startSnap(*impl_->volume, impl_->iso, seed)
+                                                           : detail::startTrilinear(*impl_->volume, impl_->iso, seed);
         impl_->measure = detail::SurfaceMeasure{};
         impl_->measuredVertices = impl_->measuredIndices = 0;
         return;
@@ -115,6 +124,8 @@ SurfaceStats SurfaceTracker::stats() const {
     return stats;
 }
 Surface SurfaceTracker::takeSurface() {
+    if (impl_->trilinear && impl_->table == TableKind::Snap)
+        return detail::finishedSnap(*impl_->trilinear, *impl_->volume);
     if (impl_->trilinear) return detail::finishedTrilinear(*impl_->trilinear, *impl_->volume);
     return finishedSurface(impl_->state.walker, impl_->table);
 }

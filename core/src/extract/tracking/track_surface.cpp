@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "extract/snap/snap_march.h"
 #include "extract/tracking/track_walker.h"
 #include "extract/trilinear/trilinear_march.h"
 #include "isotrack/continuation.h"
@@ -36,6 +37,7 @@ Surface walkWhole(const TrackWorker& worker, TrackState& state, TableKind table,
 
 Surface track(const Volume& volume, double iso, const GridEdge& seed, TableKind table, int threads) {
     if (table == TableKind::Trilinear) return detail::trackTrilinear(volume, iso, seed);
+    if (table == TableKind::Snap) return detail::trackSnap(volume, iso, seed);
     const auto start = Clock::now();
     threads = std::min(threads, kMaxTrackThreads);
     const auto worker = makeWorker(volume, iso, table);
@@ -58,6 +60,7 @@ std::vector<Surface> trackAllSurfaces(const Volume& volume, double iso, TableKin
     std::vector<Surface> surfaces;
     const Dims& n = volume.dims();
     if (n[0] < 2 || n[1] < 2 || n[2] < 2) return surfaces;
+    if (table == TableKind::Snap) return detail::allSnap(volume, iso);
     const auto worker = makeWorker(volume, iso, table);
     const auto& continuation = continuationTable(table);
     std::vector<std::uint8_t> visited(volume.sampleCount(), 0);

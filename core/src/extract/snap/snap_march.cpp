@@ -1,0 +1,411 @@
+// Extraction with the 3-state table (SnapMC; isotrack/snap_table.h).
+//
+// Passes: (1) give every sample its side of the isovalue and whether it is at
+// it: equal to it, or snapped because a crossing on one of its six grid edges
+// lies within kSnapDistance of it (snapStates, snap_states.cpp: the decision
+// reads the samples as they are, so it does not cascade, and is undone where
+// it would shrink a surface to nothing or lay two sheets on one segment).
+// (2) Per cell, the sides and at flags of its eight samples pick the table
+// entry; marchSnap emits every cell, slab by slab, a walk the cells of one
+// surface, entered through the consistent table's continuation over the
+// 2-state configuration (the sides), so a walk visits the cells and pieces
+// the consistent table's walk visits. (3) Each crossed grid edge whose ends
+// are off the isovalue, and each sample at the isovalue, gets one vertex,
+// computed once: the edge's as every extractor places it
+// (SampleGrid::edgeVertex), the sample's on its grid point with the normal of
+// its central-difference gradient; a loop the table fans around its centre
+// gets a vertex inside its cell (vertexEdges: the cell, kCellInterior).
+// (4) Pairs of triangles over the same three vertices, drawn by two cells on
+// their shared face where a sheet of samples at the isovalue has samples
+// below on both sides, are removed (removeFins), with the vertices only they
+// used.
+#include "extract/snap/snap_march.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <unordered_map>
+#include <utility>
+
+#include "extract/common/edge_vertex.h"
+#include "extract/tracking/track_walker.h"
+#include "isotrack/continuation.h"
+#include "isotrack/cube.h"
+#include "isotrack/errors.h"
+#include "mesh/manifold.h"
+#include "mesh/weld.h"
+
+namespace isotrack::detail {
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// A grid edge through sample (x, y, z), chosen along an axis on which the sample
+// is inside the volume, so that the edge lies on the volume's border exactly
+// when the sample does (edgeOnVolumeBorder).
+GridEdge edgeThroughSample(int x, int y, int z, const Dims& n) {
+    const int p[3] = {x, y, z};
+    int axis = 0;
+    for (int k = 2; k >= 0; --k) {
+        if (p[k] > 0 && p[k] < n[k] - 1) axis = k;
+    }
+    int q[3] = {x, y, z};
+    if (q[axis] + 1 >= n[axis]) --q[axis];
+    return GridEdge{q[0], q[1], q[2], axis};
+}
+
+constexpr std::uint32_t kNoVertex = std::numeric_limits<std::uint32_t>::max();
+
+// Vertex ids by key (a sample's index times 8 plus 0..2 for its edges along x,
+// y and z, 3 for the sample, 4..7 for a cell's centres), in a hash map: for
+// walks, which go anywhere.
+class HashSlots {
+public:
+    std::uint32_t& slot(std::uint64_t key) { return map_.try_emplace(key, kNoVertex).first->second; }
+    std::size_t size() const { return map_.size(); }
+
+private:
+    std::unordered_map<std::uint64_t, std::uint32_t> map_;
+};
+
+// The same for marchSnap, which goes slab by slab: the slots of two slices of
+// samples, the slice of the slab's top reused from the slab two below, and of
+// the cell being emitted's centres.
+class SliceSlots {
+public:
+    SliceSlots(const Dims& n) : slice_(std::size_t(n[0]) * std::size_t(n[1])), slots_(8 * slice_, kNoVertex) {}
+
+    // Before emitting the cells between slices z and z + 1.
+    void startSlab(int z) {
+        const std::size_t top = std::size_t((z + 1) & 1) * 4 * slice_;
+        std::fill(slots_.begin() + std::ptrdiff_t(top), slots_.begin() + std::ptrdiff_t(top + 4 * slice_), kNoVertex);
+    }
+
+    std::uint32_t& slot(std::uint64_t key) {
+        const std::uint64_t sample = key >> 3, kind = key & 7;
+        if (kind >= 4) {
+            if (sample != centreCell_) {
+                centreCell_ = sample;
+                centres_.fill(kNoVertex);
+            }
+            return centres_[std::size_t(kind - 4)];
+        }
+        const std::size_t parity = std::size_t(sample / slice_) & 1;
+        return slots_[(parity * 4 + kind) * slice_ + std::size_t(sample % slice_)];
+    }
+
+private:
+    std::size_t slice_;
+    std::vector<std::uint32_t> slots_;
+    std::uint64_t centreCell_ = ~std::uint64_t(0);
+    std::array<std::uint32_t, 4> centres_{};
+};
+
+template <class T>
+class SnapCells {
+public:
+    SnapCells(const Volume& volume, const T* samples, double iso)
+        : volume_(volume), grid_(volume, samples, iso), states_(snapStates(volume, iso)) {}
+
+    const Volume& volume() const { return volume_; }
+    SampleState state(int x, int y, int z) const { return states_[grid_.index(x, y, z)]; }
+    bool cellInside(int x, int y, int z) const {
+        return x >= 0 && y >= 0 && z >= 0 && x + 1 < grid_.nx() && y + 1 < grid_.ny() && z + 1 < grid_.nz();
+    }
+
+    // The snap table's entry for cell (x, y, z) (snapCaseIndex).
+    int config(int x, int y, int z) const {
+        unsigned above = 0, at = 0;
+        for (int v = 0; v < cube::kVertexCount; ++v) {
+            const auto& o = cube::kVertexOffset[std::size_t(v)];
+            const SampleState s = state(x + o[0], y + o[1], z + o[2]);
+            above |= unsigned(isAbove(s)) << v;
+            at |= unsigned(isAt(s)) << v;
+        }
+        return snapCaseIndex(std::uint8_t(above), std::uint8_t(at));
+    }
+
+    // Appends the triangles of `piece` (all pieces when negative) of cell (x, y, z).
+    template <class Slots>
+    void emit(int index, int piece, int x, int y, int z, Mesh& mesh, Slots& slots) const {
+        const SnapCase& cased = snapTable()[std::size_t(index)];
+        for (int t = 0; t < cased.count; ++t) {
+            if (piece >= 0 && cased.piece[std::size_t(t)] != piece) continue;
+            for (const std::int8_t corner : cased.triangles[std::size_t(t)]) {
+                mesh.indices.push_back(corner >= kSnapCornerCentre
+                                           ? centre(cased, corner - kSnapCornerCentre, x, y, z, mesh, slots)
+                                           : vertex(corner, x, y, z, mesh, slots));
+            }
+        }
+    }
+
+private:
+    template <class Slots>
+    std::uint32_t vertex(int corner, int x, int y, int z, Mesh& mesh, Slots& slots) const {
+        int p[3] = {x, y, z};
+        int axis = 3;  // the slot of a sample, after its three edges
+        if (corner < kSnapCornerVertex) {
+            const auto& o = cube::edgeOrigin(corner);
+            for (int k = 0; k < 3; ++k) p[k] += o[std::size_t(k)];
+            axis = cube::edgeAxis(corner);
+        } else {
+            const auto& o = cube::kVertexOffset[std::size_t(corner - kSnapCornerVertex)];
+            for (int k = 0; k < 3; ++k) p[k] += o[std::size_t(k)];
+        }
+        const std::uint64_t key = std::uint64_t(grid_.index(p[0], p[1], p[2])) * 8 + std::uint64_t(axis);
+        std::uint32_t& slot = slots.slot(key);
+        if (slot != kNoVertex) return slot;
+        slot = std::uint32_t(mesh.vertices.size());
+        Vertex v{};
+        if (axis < 3) {
+            grid_.edgeVertex(p[0], p[1], p[2], axis, v);
+            mesh.vertexEdges.push_back(GridEdge{p[0], p[1], p[2], axis});
+        } else {
+            sampleVertex(p, v);
+            mesh.vertexEdges.push_back(edgeThroughSample(p[0], p[1], p[2], volume_.dims()));
+        }
+        mesh.vertices.push_back(v);
+        return std::uint32_t(mesh.vertices.size() - 1);
+    }
+
+    // The vertex at the mean of a centred loop's corners, with their mean normal.
+    template <class Slots>
+    std::uint32_t centre(const SnapCase& cased, int loop, int x, int y, int z, Mesh& mesh, Slots& slots) const {
+        const std::uint64_t key = std::uint64_t(grid_.index(x, y, z)) * 8 + 4 + std::uint64_t(loop);
+        if (slots.slot(key) != kNoVertex) return slots.slot(key);
+        double position[3] = {0, 0, 0}, normal[3] = {0, 0, 0};
+        int count = 0;
+        for (const std::int8_t corner : cased.centres[std::size_t(loop)]) {
+            if (corner < 0) break;
+            const Vertex& v = mesh.vertices[vertex(corner, x, y, z, mesh, slots)];
+            for (int k = 0; k < 3; ++k) position[k] += v.position[k], normal[k] += v.normal[k];
+            ++count;
+        }
+        Vertex v{};
+        const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+        for (int k = 0; k < 3; ++k) {
+            v.position[k] = static_cast<float>(position[k] / count);
+            v.normal[k] = length > 0.0 ? static_cast<float>(normal[k] / length) : 0.0f;
+        }
+        const auto id = std::uint32_t(mesh.vertices.size());
+        mesh.vertices.push_back(v);
+        mesh.vertexEdges.push_back(GridEdge{x, y, z, kCellInterior});
+        slots.slot(key) = id;
+        return id;
+    }
+
+    void sampleVertex(const int p[3], Vertex& v) const {
+        double g[3];
+        grid_.gradient(p[0], p[1], p[2], g);
+        const double length = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+        for (int k = 0; k < 3; ++k) {
+            v.position[k] =
+                static_cast<float>(volume_.origin()[std::size_t(k)] + p[k] * volume_.spacing()[std::size_t(k)]);
+            v.normal[k] = length > 0.0 && std::isfinite(length) ? static_cast<float>(-g[k] / length) : 0.0f;
+        }
+        if (!(length > 0.0 && std::isfinite(length))) v.normal[2] = 1.0f;
+    }
+
+    const Volume& volume_;
+    SampleGrid<T> grid_;
+    std::vector<SampleState> states_;
+};
+
+// Pairs of triangles over the same three vertices go, then the vertices they alone used.
+void removeReversedPairs(Mesh& mesh) {
+    std::vector<std::uint32_t> indices(mesh.indices.begin(), mesh.indices.end());
+    removeFins(indices);
+    mesh.indices.assign(indices.begin(), indices.end());
+    dropUnusedVertices(mesh);
+}
+
+template <class T>
+class SnapWalk final : public TrilinearWalk {
+public:
+    // `visited` (one bit per piece, per cell's first sample) may be shared by walks.
+    SnapWalk(std::shared_ptr<const SnapCells<T>> cells, std::vector<std::uint8_t>* visited)
+        : cells_(std::move(cells)), visited_(visited) {
+        if (!visited_) {
+            own_.assign(cells_->volume().sampleCount(), 0);
+            visited_ = &own_;
+        }
+    }
+
+    void enqueue(int x, int y, int z, int piece) {
+        std::uint8_t& bits = (*visited_)[cells_->volume().index(x, y, z)];
+        if (bits >> piece & 1u) return;
+        bits = static_cast<std::uint8_t>(bits | 1u << piece);
+        queue_.push_back({x, y, z, piece});
+    }
+
+    std::size_t advance(std::size_t pieceBudget) override {
+        const auto& continuation = continuationTable(TableKind::Consistent);
+        std::size_t emitted = 0;
+        for (; emitted < pieceBudget && head_ < queue_.size(); ++emitted) {
+            const auto [x, y, z, piece] = queue_[head_++];
+            const int index = cells_->config(x, y, z);
+            cells_->emit(index, piece, x, y, z, mesh_, slots_);
+            const Piece& exits = continuation[snapTable()[std::size_t(index)].aboveMask].pieces[std::size_t(piece)];
+            for (int f = 0; f < cube::kFaceCount; ++f) {
+                int n[3] = {x, y, z};
+                n[cube::faceAxis(f)] += cube::faceSide(f) ? 1 : -1;
+                if (!cells_->cellInside(n[0], n[1], n[2])) continue;
+                for (const std::int8_t edge : exits.exits[std::size_t(f)]) {
+                    if (edge < 0) break;
+                    const int entry = cube::edgeAcrossFace(edge, f);
+                    const std::uint8_t above = snapTable()[std::size_t(cells_->config(n[0], n[1], n[2]))].aboveMask;
+                    const int next = continuation[above].pieceOfEdge[std::size_t(entry)];
+                    if (next < 0) throw std::logic_error("snap walk: an exit edge is not crossed across the face");
+                    enqueue(n[0], n[1], n[2], next);
+                }
+            }
+        }
+        visitedPieces_ += emitted;
+        if (head_ == queue_.size()) {
+            queue_.clear();
+            head_ = 0;
+        }
+        return emitted;
+    }
+
+    bool done() const override { return head_ == queue_.size(); }
+    Mesh& mesh() override { return mesh_; }
+    const Mesh& mesh() const override { return mesh_; }
+    std::size_t piecesVisited() const override { return visitedPieces_; }
+    std::size_t workingBytes() const override {
+        return own_.size() + queue_.capacity() * sizeof(queue_[0]) +
+               slots_.size() * (sizeof(std::uint64_t) + sizeof(std::uint32_t) + 2 * sizeof(void*));
+    }
+
+private:
+    std::shared_ptr<const SnapCells<T>> cells_;
+    std::vector<std::uint8_t> own_;
+    std::vector<std::uint8_t>* visited_;
+    std::vector<std::array<int, 4>> queue_;
+    std::size_t head_ = 0, visitedPieces_ = 0;
+    Mesh mesh_;
+    HashSlots slots_;
+};
+
+// The (cell, piece) a walk from `seed` starts at: a cell around the seed edge.
+// Samples keep their side, so the 2-state configuration crosses it.
+template <class T>
+std::array<int, 4> seedPiece(const SnapCells<T>& cells, double iso, const GridEdge& seed) {
+    const Volume& volume = cells.volume();
+    if (!edgeInside(volume, seed)) throw InputError("seed edge " + edgeText(seed) + " is outside the volume");
+    int q[3] = {seed.x, seed.y, seed.z};
+    ++q[seed.axis];
+    if ((volume.value(seed.x, seed.y, seed.z) >= iso) == (volume.value(q[0], q[1], q[2]) >= iso))
+        throw InputError("seed edge " + edgeText(seed) + " does not cross iso " + isoText(iso));
+    const int u = (seed.axis + 1) % 3, w = (seed.axis + 2) % 3;
+    for (int du = 0; du < 2; ++du) {
+        for (int dw = 0; dw < 2; ++dw) {
+            int c[3] = {seed.x, seed.y, seed.z};
+            c[u] -= du;
+            c[w] -= dw;
+            if (!cells.cellInside(c[0], c[1], c[2])) continue;
+            std::array<int, 3> origin{};
+            origin[std::size_t(u)] = du;
+            origin[std::size_t(w)] = dw;
+            const std::uint8_t above = snapTable()[std::size_t(cells.config(c[0], c[1], c[2]))].aboveMask;
+            const int piece = continuationTable(TableKind::Consistent)[above]
+                                  .pieceOfEdge[std::size_t(cube::edgeAt(origin, seed.axis))];
+            if (piece >= 0) return {c[0], c[1], c[2], piece};
+        }
+    }
+    throw std::logic_error("snap walk: a crossed seed edge with no cell that crosses it");
+}
+
+template <class T>
+std::vector<Surface> allSnapTyped(const Volume& volume, const T* samples, double iso) {
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<Surface> surfaces;
+    const Dims& n = volume.dims();
+    if (n[0] < 2 || n[1] < 2 || n[2] < 2) return surfaces;
+    const auto cells = std::make_shared<const SnapCells<T>>(volume, samples, iso);
+    const auto& continuation = continuationTable(TableKind::Consistent);
+    std::vector<std::uint8_t> visited(volume.sampleCount(), 0);
+    for (int z = 0; z + 1 < n[2]; ++z) {
+        for (int y = 0; y + 1 < n[1]; ++y) {
+            for (int x = 0; x + 1 < n[0]; ++x) {
+                const std::uint8_t above = snapTable()[std::size_t(cells->config(x, y, z))].aboveMask;
+                for (int p = 0; p < continuation[above].pieceCount; ++p) {
+                    if (visited[volume.index(x, y, z)] >> p & 1u) continue;
+                    SnapWalk<T> walk(cells, &visited);
+                    walk.enqueue(x, y, z, p);
+                    walk.advance(std::numeric_limits<std::size_t>::max());
+                    Surface surface = finishedSnap(walk, volume);
+                    if (surface.mesh.triangleCount() > 0) surfaces.push_back(std::move(surface));
+                }
+            }
+        }
+    }
+    std::stable_sort(surfaces.begin(), surfaces.end(),
+                     [](const Surface& a, const Surface& b) { return a.stats.triangles > b.stats.triangles; });
+    const double seconds = secondsSince(start);
+    for (Surface& surface : surfaces) surface.stats.seconds = seconds;
+    return surfaces;
+}
+
+}  // namespace
+
+Mesh marchSnap(const Volume& volume, double iso) {
+    return visitSamples(volume, [&](const auto* samples) {
+        using T = std::remove_cv_t<std::remove_pointer_t<decltype(samples)>>;
+        Mesh mesh;
+        const Dims& n = volume.dims();
+        if (n[0] < 2 || n[1] < 2 || n[2] < 2) return mesh;
+        const SnapCells<T> cells(volume, samples, iso);
+        SliceSlots slots(n);
+        for (int z = 0; z + 1 < n[2]; ++z) {
+            slots.startSlab(z);
+            for (int y = 0; y + 1 < n[1]; ++y) {
+                for (int x = 0; x + 1 < n[0]; ++x) {
+                    const int index = cells.config(x, y, z);
+                    if (snapTable()[std::size_t(index)].count > 0) cells.emit(index, -1, x, y, z, mesh, slots);
+                }
+            }
+        }
+        removeReversedPairs(mesh);
+        return mesh;
+    });
+}
+
+std::unique_ptr<TrilinearWalk> startSnap(const Volume& volume, double iso, const GridEdge& seed) {
+    return visitSamples(volume, [&](const auto* samples) -> std::unique_ptr<TrilinearWalk> {
+        using T = std::remove_cv_t<std::remove_pointer_t<decltype(samples)>>;
+        const auto cells = std::make_shared<const SnapCells<T>>(volume, samples, iso);
+        const auto [x, y, z, piece] = seedPiece(*cells, iso, seed);
+        auto walk = std::make_unique<SnapWalk<T>>(cells, nullptr);
+        walk->enqueue(x, y, z, piece);
+        return walk;
+    });
+}
+
+Surface finishedSnap(TrilinearWalk& walk, const Volume& volume) {
+    Surface surface;
+    surface.mesh = std::move(walk.mesh());
+    removeReversedPairs(surface.mesh);
+    surface.stats = measureSurface(surface.mesh, volume);
+    surface.stats.cellsVisited = walk.piecesVisited();
+    return surface;
+}
+
+Surface trackSnap(const Volume& volume, double iso, const GridEdge& seed) {
+    const auto start = std::chrono::steady_clock::now();
+    const auto walk = startSnap(volume, iso, seed);
+    walk->advance(std::numeric_limits<std::size_t>::max());
+    Surface surface = finishedSnap(*walk, volume);
+    surface.stats.seconds = secondsSince(start);
+    return surface;
+}
+
+std::vector<Surface> allSnap(const Volume& volume, double iso) {
+    return visitSamples(volume, [&](const auto* samples) { return allSnapTyped(volume, samples, iso); });
+}
+
+}  // namespace isotrack::detail

@@ -1,0 +1,49 @@
+#pragma once
+// The snap room: extraction with the 3-state table (isotrack/snap_table.h):
+// marching cubes, the surface through a seed, and every surface, over sample
+// states decided once for the volume (snap_states.cpp). It uses the tables,
+// common/, tracking/ (the walker and the continuation it follows), trilinear/
+// (its per-walk vertex map) and mesh/ (welding, fins); marching_cubes/,
+// surfaces/ and tracking/ call it for TableKind::Snap.
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "extract/trilinear/trilinear_march.h"
+#include "isotrack/mesh.h"
+#include "isotrack/snap_table.h"
+#include "isotrack/surface.h"
+#include "isotrack/volume.h"
+
+namespace isotrack::detail {
+
+// Every sample's state after snapping, in sample order: its side of `iso`, and
+// at when it equals `iso` or when a crossing on one of its grid edges lies
+// within kSnapDistance of it (snapsTowards, with the samples as they are, not
+// as snapped), unless that would lay two sheets on one grid edge
+// (snap_states.cpp).
+std::vector<SampleState> snapStates(const Volume& volume, double iso);
+
+// Every cell, one mesh: one vertex per crossed grid edge whose ends are both
+// off the isovalue, one per sample at the isovalue that a triangle uses (its
+// vertexEdges entry is a grid edge from or to the sample, on the volume's
+// border when the sample is). Pairs of triangles over the same three vertices
+// are removed (detail::removeFins).
+Mesh marchSnap(const Volume& volume, double iso);
+
+// The surface through `seed` by continuation over the 2-state configurations
+// the snapped ones refine (the consistent table's), walked breadth-first a budget of (cell, piece) pairs
+// at a time; the walk's interface is the trilinear table's (TrilinearWalk).
+// InputError when the seed is outside or not crossed.
+std::unique_ptr<TrilinearWalk> startSnap(const Volume& volume, double iso, const GridEdge& seed);
+
+// The walk's surface (its mesh taken), its reversed pairs removed, measured.
+Surface finishedSnap(TrilinearWalk& walk, const Volume& volume);
+
+Surface trackSnap(const Volume& volume, double iso, const GridEdge& seed);
+
+// Every surface by continuation from each (cell, piece) no walk has visited,
+// most triangles first; surfaces that snapping collapses to nothing are dropped.
+std::vector<Surface> allSnap(const Volume& volume, double iso);
+
+}  // namespace isotrack::detail

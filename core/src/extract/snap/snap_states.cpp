@@ -1,0 +1,223 @@
+// The samples' states for the 3-state table (snap_march.h: snapStates).
+//
+// Pass 1 snaps: a sample is at the isovalue when it equals it or when a
+// crossing on one of its six grid edges lies within kSnapDistance of it.
+// Pass 2 keeps every surface: a sample that snapped stays at the isovalue only
+// if one of its six neighbours is on its side and did not snap. Two such
+// samples are joined by an edge the surface does not cross, so they bound the
+// same surface, whose crossings around the one that did not snap stay at
+// least kSnapDistance away from it: the surface keeps triangles of positive
+// area, where snapping every sample inside a small surface (a single sample
+// above the isovalue among samples below it, say) would shrink it to a point.
+// Pass 3 keeps sheets apart: where two sheets of surface meet a grid edge (or a
+// face's diagonal) whose two samples are at the isovalue, from two sides (the
+// 2-state surfaces of the cells around it come near it from alternate
+// sectors), snapping both samples would lay four triangles on that segment.
+// Every such segment is found
+// with the states of the round, and every sample of one that only snapped (it
+// does not equal the isovalue) goes back to below or above; rounds repeat until
+// no segment changes. A round reads only the states the round before left, so the
+// result does not depend on the order of the scan, and extractions that visit
+// different cells agree. Segments whose two samples equal the isovalue stay as
+// they are: there the surface itself touches itself.
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "extract/snap/snap_march.h"
+#include "isotrack/cube.h"
+
+namespace isotrack::detail {
+namespace {
+
+struct StateGrid {
+    const std::vector<SampleState>& states;
+    Dims n;
+    std::size_t index(int x, int y, int z) const {
+        return std::size_t(x) + std::size_t(n[0]) * (std::size_t(y) + std::size_t(n[1]) * std::size_t(z));
+    }
+    int config(int x, int y, int z) const {
+        unsigned above = 0, at = 0;
+        for (int v = 0; v < cube::kVertexCount; ++v) {
+            const auto& o = cube::kVertexOffset[std::size_t(v)];
+            const SampleState s = states[index(x + o[0], y + o[1], z + o[2])];
+            above |= unsigned(isAbove(s)) << v;
+            at |= unsigned(isAt(s)) << v;
+        }
+        return snapCaseIndex(std::uint8_t(above), std::uint8_t(at));
+    }
+    // A corner of cell (x, y, z) as the extractors key its vertex.
+    std::uint64_t cornerKey(int corner, int x, int y, int z) const {
+        int p[3] = {x, y, z};
+        std::uint64_t slot = 3;
+        if (corner >= kSnapCornerCentre) return index(x, y, z) * 8 + 4 + std::uint64_t(corner - kSnapCornerCentre);
+        if (corner < kSnapCornerVertex) {
+            const auto& o = cube::edgeOrigin(corner);
+            for (int k = 0; k < 3; ++k) p[k] += o[std::size_t(k)];
+            slot = std::uint64_t(cube::edgeAxis(corner));
+        } else {
+            const auto& o = cube::kVertexOffset[std::size_t(corner - kSnapCornerVertex)];
+            for (int k = 0; k < 3; ++k) p[k] += o[std::size_t(k)];
+        }
+        return index(p[0], p[1], p[2]) * 8 + slot;
+    }
+};
+
+// The triangles left on the segment between samples p and q (neighbours on
+// the grid, their offsets -1, 0 or 1 on each axis) once pairs over the same
+// three vertices cancel, over the cells that hold both.
+int trianglesOnSegment(const StateGrid& grid, const std::array<int, 3>& p, const std::array<int, 3>& q) {
+    // Keys of the triangles found, only the first `count` of them set (left
+    // uninitialised: this runs for every pair of neighbours at the isovalue).
+    std::array<std::array<std::uint64_t, 3>, 4 * kMaxSnapTriangles> found;
+    std::size_t count = 0;
+    const auto& table = snapTable();
+    std::array<int, 3> low{}, high{};
+    for (int k = 0; k < 3; ++k) {
+        low[std::size_t(k)] = std::max({std::max(p[std::size_t(k)], q[std::size_t(k)]) - 1, 0});
+        high[std::size_t(k)] = std::min({std::min(p[std::size_t(k)], q[std::size_t(k)]), grid.n[std::size_t(k)] - 2});
+    }
+    auto localVertex = [](const std::array<int, 3>& point, const int c[3]) {
+        for (int v = 0; v < cube::kVertexCount; ++v) {
+            const auto& o = cube::kVertexOffset[std::size_t(v)];
+            if (c[0] + o[0] == point[0] && c[1] + o[1] == point[1] && c[2] + o[2] == point[2]) return v;
+        }
+        return -1;
+    };
+    for (int z = low[2]; z <= high[2]; ++z) {
+        for (int y = low[1]; y <= high[1]; ++y) {
+            for (int x = low[0]; x <= high[0]; ++x) {
+                const int c[3] = {x, y, z};
+                const int a = kSnapCornerVertex + localVertex(p, c), b = kSnapCornerVertex + localVertex(q, c);
+                const SnapCase& cased = table[std::size_t(grid.config(x, y, z))];
+                for (int t = 0; t < cased.count; ++t) {
+                    const auto& tri = cased.triangles[std::size_t(t)];
+                    const bool hasA = tri[0] == a || tri[1] == a || tri[2] == a;
+                    if (!hasA || !(tri[0] == b || tri[1] == b || tri[2] == b)) continue;
+                    std::array<std::uint64_t, 3> key{};
+                    for (int k = 0; k < 3; ++k) key[std::size_t(k)] = grid.cornerKey(tri[std::size_t(k)], x, y, z);
+                    std::sort(key.begin(), key.end());
+                    const auto end = found.begin() + std::ptrdiff_t(count);
+                    const auto twin = std::find(found.begin(), end, key);
+                    if (twin != end)
+                        *twin = found[--count];
+                    else
+                        found[count++] = key;
+                }
+            }
+        }
+    }
+    return int(count);
+}
+
+// Pass 2 (see the top of the file).
+void keepSurfaces(std::vector<SampleState>& states, const std::vector<SampleState>& unsnapped, const Dims& n) {
+    const std::size_t strides[3] = {1, std::size_t(n[0]), std::size_t(n[0]) * std::size_t(n[1])};
+    std::vector<std::size_t> release;
+    std::size_t i = 0;
+    for (int z = 0; z < n[2]; ++z) {
+        for (int y = 0; y < n[1]; ++y) {
+            for (int x = 0; x < n[0]; ++x, ++i) {
+                if (!isAt(states[i]) || isAt(unsnapped[i])) continue;
+                const int p[3] = {x, y, z};
+                bool anchored = false;
+                for (int k = 0; k < 3 && !anchored; ++k) {
+                    for (int side = 0; side < 2 && !anchored; ++side) {
+                        if (side == 0 ? p[k] == 0 : p[k] + 1 >= n[k]) continue;
+                        const std::size_t other = side == 0 ? i - strides[k] : i + strides[k];
+                        anchored = !isAt(states[other]) && isAbove(states[other]) == isAbove(unsnapped[i]);
+                    }
+                }
+                if (!anchored) release.push_back(i);
+            }
+        }
+    }
+    for (const std::size_t r : release) states[r] = unsnapped[r];
+}
+
+// Pass 3 (see the top of the file).
+void keepSheetsApart(std::vector<SampleState>& states, const std::vector<SampleState>& unsnapped, const Dims& n) {
+    // The samples to check: every one that snapped, then, after a round, those a
+    // released sample can change the cells of (within two samples of it).
+    std::vector<std::size_t> candidates;
+    for (std::size_t i = 0; i < states.size(); ++i) {
+        if (isAt(states[i]) && !isAt(unsnapped[i])) candidates.push_back(i);
+    }
+    std::vector<std::uint8_t> queued(states.size(), 0);  // a candidate of this round
+    for (const std::size_t c : candidates) queued[c] = 1;
+    const std::size_t strides[3] = {1, std::size_t(n[0]), std::size_t(n[0]) * std::size_t(n[1])};
+    for (;;) {
+        const StateGrid grid{states, n};
+        std::vector<std::size_t> release;
+        for (const std::size_t i : candidates) {
+            if (!isAt(states[i])) continue;
+            const std::array<int, 3> p{int(i % strides[1]), int(i / strides[1] % std::size_t(n[1])),
+                                       int(i / strides[2])};
+            for (int neighbour = 0; neighbour < 27; ++neighbour) {
+                const std::array<int, 3> q{p[0] + neighbour % 3 - 1, p[1] + neighbour / 3 % 3 - 1,
+                                           p[2] + neighbour / 9 - 1};
+                if (neighbour == 13 || q[0] < 0 || q[1] < 0 || q[2] < 0 || q[0] >= n[0] || q[1] >= n[1] || q[2] >= n[2])
+                    continue;
+                const std::size_t other = grid.index(q[0], q[1], q[2]);
+                // A segment between two candidates is checked from its first end only.
+                if (!isAt(states[other]) || (neighbour < 13 && queued[other]) || trianglesOnSegment(grid, p, q) <= 2)
+                    continue;
+                release.push_back(i);
+                if (!isAt(unsnapped[other])) release.push_back(other);
+            }
+        }
+        for (const std::size_t c : candidates) queued[c] = 0;
+        if (release.empty()) return;
+        for (const std::size_t r : release) states[r] = unsnapped[r];
+        candidates.clear();
+        for (const std::size_t r : release) {
+            const int p[3] = {int(r % strides[1]), int(r / strides[1] % std::size_t(n[1])), int(r / strides[2])};
+            for (int z = std::max(p[2] - 2, 0); z <= std::min(p[2] + 2, n[2] - 1); ++z) {
+                for (int y = std::max(p[1] - 2, 0); y <= std::min(p[1] + 2, n[1] - 1); ++y) {
+                    for (int x = std::max(p[0] - 2, 0); x <= std::min(p[0] + 2, n[0] - 1); ++x) {
+                        const std::size_t s = grid.index(x, y, z);
+                        if (queued[s] || !isAt(states[s]) || isAt(unsnapped[s])) continue;
+                        queued[s] = 1;
+                        candidates.push_back(s);
+                    }
+                }
+            }
+        }
+    }
+}
+
+}  // namespace
+
+std::vector<SampleState> snapStates(const Volume& volume, double iso) {
+    return visitSamples(volume, [&](const auto* samples) {
+        const Dims& n = volume.dims();
+        const std::size_t strides[3] = {1, std::size_t(n[0]), std::size_t(n[0]) * std::size_t(n[1])};
+        std::vector<SampleState> states(volume.sampleCount(), SampleState::Below);
+        std::vector<SampleState> unsnapped(volume.sampleCount(), SampleState::Below);
+        std::size_t i = 0;
+        for (int z = 0; z < n[2]; ++z) {
+            for (int y = 0; y < n[1]; ++y) {
+                for (int x = 0; x < n[0]; ++x, ++i) {
+                    const double value = static_cast<double>(samples[i]);
+                    unsnapped[i] = value == iso   ? SampleState::At
+                                   : value >= iso ? SampleState::Above
+                                                  : SampleState::Below;
+                    bool at = value == iso;
+                    const int p[3] = {x, y, z};
+                    for (int k = 0; k < 3 && !at; ++k) {
+                        if (p[k] > 0) at = snapsTowards(value, static_cast<double>(samples[i - strides[k]]), iso);
+                        if (!at && p[k] + 1 < n[k])
+                            at = snapsTowards(value, static_cast<double>(samples[i + strides[k]]), iso);
+                    }
+                    states[i] = at ? static_cast<SampleState>(std::uint8_t(unsnapped[i]) | 2u) : unsnapped[i];
+                }
+            }
+        }
+        keepSurfaces(states, unsnapped, n);
+        keepSheetsApart(states, unsnapped, n);
+        return states;
+    });
+}
+
+}  // namespace isotrack::detail
