@@ -7,12 +7,15 @@
 // contour tree, whose one edge goes to its neighbour in the join (split) tree.
 //
 // Passes: sortSamples (stable radix sort on the native values, so ties stay in
-// index order), the two sweeps (union-find with randomized linking and path
-// halving, each root keeping its component's newest sample), mergeTrees. Memory:
-// the order, the two trees and their two union-find forests, 4 bytes each per
-// sample, and a degree byte per tree: 22 bytes per sample at the peak. The forests are gone
-// by the merge, which adds the contour tree's edges (4 bytes), a byte per
-// sample peeled and its stack of leaves (at most 4 bytes): 23 at most.
+// index order), classifySamples (in grid order: which samples meet exactly one
+// component in each sweep, and through which neighbour), the two sweeps
+// (union-find with randomized linking and path halving, each root keeping its
+// component's newest sample; only candidates read their whole neighbourhood),
+// mergeTrees. Memory: the order, the two trees and their two union-find
+// forests, 4 bytes each per sample, the class byte and a degree byte per tree:
+// 23 bytes per sample at the peak. The forests and classes are gone by the
+// merge, which packs the degrees into one byte and adds the contour tree's
+// edges (4 bytes) and its stack of leaves (at most 4 bytes): 21 at most.
 #include <algorithm>
 #include <cstring>
 #include <iterator>
@@ -94,79 +97,116 @@ std::uint32_t linkPriority(std::uint32_t s) {
     return s;
 }
 
+// The sweeps visit the samples in value order, a random order in space (the
+// shells of a sphere), so each sample's lines are requested this many samples
+// ahead, and its class twice as far ahead, to have many misses in flight at once.
+constexpr std::uint32_t kPrefetchDistance = 16;
+
 // One sweep: the join tree when Up (from the top, 6 neighbours), the split tree
 // otherwise (from the bottom, 18 neighbours). When sample s meets a component,
 // the component's newest sample gets link = s; degree[s] counts the components
-// s meets.
+// s meets. A sample of one class (classifySamples) meets the component of the
+// one neighbour its class names, or none; only candidates read their whole
+// neighbourhood.
 template <bool Up, class T>
-void sweep(const T* values, const Dims& dims, const std::vector<std::uint32_t>& order, std::vector<std::uint32_t>& link,
+void sweep(const T* values, const Dims& dims, const std::vector<std::uint32_t>& order,
+           const std::vector<std::uint8_t>& classes, std::vector<std::uint32_t>& link,
            std::vector<std::uint8_t>& degree, const BuildProgress& progress) {
     const auto n = std::uint32_t(order.size());
     const SampleOrder<T> cmp{values};
     const Neighbours neighbours{dims};
+    constexpr std::uint8_t kCandidate = Up ? kJoinCandidate : kSplitCandidate;
+    std::int64_t offset[kCandidate];
+    for (std::uint8_t c = 1; c < kCandidate; ++c) offset[c] = neighbourOffset(dims, std::uint8_t(c - 1));
+    auto classOf = [&](std::uint32_t s) { return std::uint8_t(Up ? classes[s] & 7u : classes[s] >> 3); };
+    auto sampleAt = [&](std::uint32_t k) { return order[Up ? n - 1 - k : k]; };
     std::vector<std::uint32_t> forest(n);
     link.assign(n, kNoSample);
-    degree.assign(n, 0);
+    auto meet = [&](std::uint32_t s, std::uint32_t& root, std::uint32_t r) {
+        link[forest[r] & ~kRootBit] = s;
+        const bool keep = linkPriority(root) > linkPriority(r);
+        const std::uint32_t winner = keep ? root : r;
+        forest[keep ? r : root] = winner;
+        forest[winner] = s | kRootBit;
+        root = winner;
+    };
     for (std::uint32_t k = 0; k < n; ++k) {
         if (progress.step(k)) return;  // cancelled: the caller throws
-        const std::uint32_t s = order[Up ? n - 1 - k : k];
+        if (k + 2 * kPrefetchDistance < n) __builtin_prefetch(&classes[sampleAt(k + 2 * kPrefetchDistance)]);
+        if (k + kPrefetchDistance < n) {
+            const std::uint32_t later = sampleAt(k + kPrefetchDistance);
+            const std::uint8_t c = classOf(later);
+            __builtin_prefetch(&forest[later], 1);
+            if (c != 0 && c != kCandidate) __builtin_prefetch(&forest[std::int64_t(later) + offset[c]]);
+        }
+        const std::uint32_t s = sampleAt(k);
+        const std::uint8_t c = classOf(s);
         forest[s] = s | kRootBit;
         std::uint32_t root = s;
+        if (c == 0) continue;
+        if (c != kCandidate) {
+            meet(s, root, findRoot(forest, std::uint32_t(std::int64_t(s) + offset[c])));
+            continue;
+        }
         neighbours.forEach<Up ? 6 : 18>(s, [&](std::uint32_t m) {
             if (Up ? !cmp.below(s, m) : !cmp.below(m, s)) return;  // not swept yet
             const std::uint32_t r = findRoot(forest, m);
             if (r == root) return;
-            link[forest[r] & ~kRootBit] = s;
             ++degree[s];
-            const bool keep = linkPriority(root) > linkPriority(r);
-            const std::uint32_t winner = keep ? root : r;
-            forest[keep ? r : root] = winner;
-            forest[winner] = s | kRootBit;
-            root = winner;
+            meet(s, root, r);
         });
     }
 }
 
+// The merge's state of a sample, a byte: the join tree's arcs above it (at
+// most 6) in the low 3 bits, the split tree's below it (at most 18) above
+// them, and kGone once it is peeled off.
+constexpr std::uint8_t kGone = 0xff, kOneBelow = 8;
+bool isGone(std::uint8_t state) { return (state & 7u) == 7u; }
+bool isLeaf(std::uint8_t state) { return !isGone(state) && (state & 7u) + (state >> 3) == 1; }
+
 // Follows link past removed samples, shortening the path on the way.
-std::uint32_t liveLink(std::vector<std::uint32_t>& link, const std::vector<std::uint8_t>& removed, std::uint32_t s) {
+std::uint32_t liveLink(std::vector<std::uint32_t>& link, const std::vector<std::uint8_t>& state, std::uint32_t s) {
     std::uint32_t t = link[s];
-    while (t != kNoSample && removed[t]) t = link[t];
+    while (t != kNoSample && isGone(state[t])) t = link[t];
     for (std::uint32_t u = s; u != t;) u = std::exchange(link[u], t);  // the whole path points past them now
     return t;
 }
 
-// Carr's merge: up counts the join tree's arcs above each sample, down the split
-// tree's below; `gone` marks the samples peeled off.
-std::vector<std::uint32_t> mergeTrees(std::vector<std::uint32_t>& joinDown, std::vector<std::uint8_t>& up,
-                                      std::vector<std::uint32_t>& splitUp, std::vector<std::uint8_t>& down,
-                                      const BuildProgress& progress) {
-    const auto n = std::uint32_t(up.size());
+// Carr's merge: peels the leaves of the join and split trees, whose arcs are
+// counted in state. The peel walks each chain of regular samples sample after
+// sample, a miss for each; the link of the next one is requested as soon as
+// the sample is known, beside its state.
+std::vector<std::uint32_t> mergeTrees(std::vector<std::uint32_t>& joinDown, std::vector<std::uint32_t>& splitUp,
+                                      std::vector<std::uint8_t>& state, const BuildProgress& progress) {
+    const auto n = std::uint32_t(state.size());
     std::vector<std::uint32_t> next(n, kNoSample), leaves;
-    auto isLeaf = [&](std::uint32_t s) { return up[s] + down[s] == 1; };
     for (std::uint32_t s = 0; s < n; ++s) {
-        if (isLeaf(s)) leaves.push_back(s);
+        if (isLeaf(state[s])) leaves.push_back(s);
     }
-    std::vector<std::uint8_t> gone(n, 0);
     std::uint32_t remaining = n;
     while (!leaves.empty() && remaining > 1) {
         const std::uint32_t s = leaves.back();
         leaves.pop_back();
+        const std::uint8_t here = state[s];
         std::uint32_t t;
-        if (up[s] == 0 && down[s] == 1) {  // a maximum of what is left: its edge goes down the join tree
-            t = liveLink(joinDown, gone, s);
-            --up[t];
+        if (here == kOneBelow) {  // a maximum of what is left: its edge goes down the join tree
+            t = liveLink(joinDown, state, s);
+            __builtin_prefetch(&joinDown[t]);
+            --state[t];
             next[s] = t | AugmentedTree::kDownBit;
-        } else if (down[s] == 0 && up[s] == 1) {  // a minimum: up the split tree
-            t = liveLink(splitUp, gone, s);
-            --down[t];
+        } else if (here == 1) {  // a minimum: up the split tree
+            t = liveLink(splitUp, state, s);
+            __builtin_prefetch(&splitUp[t]);
+            state[t] = std::uint8_t(state[t] - kOneBelow);
             next[s] = t;
         } else {
             continue;
         }
-        gone[s] = 1;
+        state[s] = kGone;
         --remaining;
         if (progress.step(n - remaining)) progress.check();
-        if (isLeaf(t)) leaves.push_back(t);
+        if (isLeaf(state[t])) leaves.push_back(t);
     }
     return next;
 }
@@ -191,11 +231,14 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
     progress.start(ContourTreeProgress::Phase::Sorting, 0);
     tree.order = sortSamples(volume);
     progress.start(ContourTreeProgress::Phase::Sweeping, 2 * n);  // both sweeps count
+    SampleClasses classes = classifySamples(volume, threads);
+    progress.check();
     std::vector<std::uint32_t> joinDown, splitUp;
-    std::vector<std::uint8_t> up, down;
+    std::vector<std::uint8_t>& up = classes.up;
+    std::vector<std::uint8_t>& down = classes.down;
     visitSamples(volume, [&](const auto* values) {
-        auto join = [&] { sweep<true>(values, volume.dims(), tree.order, joinDown, up, progress); };
-        auto split = [&] { sweep<false>(values, volume.dims(), tree.order, splitUp, down, progress); };
+        auto join = [&] { sweep<true>(values, dims, tree.order, classes.classes, joinDown, up, progress); };
+        auto split = [&] { sweep<false>(values, dims, tree.order, classes.classes, splitUp, down, progress); };
         if (threads > 1) {
             std::thread joiner(join);
             split();
@@ -205,9 +248,13 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
             split();
         }
     });
+    std::vector<std::uint8_t>().swap(classes.classes);
     progress.check();
     progress.start(ContourTreeProgress::Phase::Merging, n);
-    tree.next = mergeTrees(joinDown, up, splitUp, down, progress);
+    std::vector<std::uint8_t>& state = up;
+    for (std::size_t s = 0; s < up.size(); ++s) state[s] = std::uint8_t(up[s] | down[s] << 3);
+    std::vector<std::uint8_t>().swap(down);
+    tree.next = mergeTrees(joinDown, splitUp, state, progress);
     return tree;
 }
 
