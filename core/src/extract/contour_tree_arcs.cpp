@@ -2,14 +2,19 @@
 // into arcs between its critical samples, each arc keeping its regular samples
 // in ascending order; and the queries on the compressed tree.
 //
-// Passes of compressContourTree: countDegrees (arcs above and below each
-// sample), the nodes (samples with other than one arc each way), chains
-// (union-find over the edges between regular samples: each chain is an arc),
-// endpoints (an edge from a chain to a node gives that arc its end), and the
-// arcs' sample lists (the sorted order bucketed by arc, so each stays sorted).
+// Passes of compressContourTree, all by rank (the position in the sorted
+// order, as the merge leaves the tree), so that an arc's samples are near each
+// other: countDegrees (arcs above and below each sample), the nodes (samples
+// with other than one arc each way, numbered by sample index), chains
+// (union-find over the edges between regular samples: each chain is an arc,
+// numbered by its smallest sample index), endpoints (an edge from a chain to a
+// node gives that arc its end; edges between two nodes are arcs of their own,
+// in the order of the sample holding the edge), and the arcs' sample lists
+// (the ranks in order, bucketed by arc, so each stays sorted).
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 #include "contour_tree_build.h"
 
@@ -18,79 +23,107 @@ namespace {
 
 struct Degrees {
     std::vector<std::uint8_t> up, down;
-    bool regular(std::uint32_t s) const { return up[s] == 1 && down[s] == 1; }
+    bool regular(std::uint32_t k) const { return up[k] == 1 && down[k] == 1; }
 };
 
 Degrees countDegrees(const AugmentedTree& tree) {
     const std::size_t n = tree.next.size();
     Degrees d{std::vector<std::uint8_t>(n, 0), std::vector<std::uint8_t>(n, 0)};
-    for (std::uint32_t s = 0; s < n; ++s) {
-        if (tree.next[s] == kNoSample) continue;
-        const std::uint32_t t = tree.next[s] & AugmentedTree::kIndexMask;
-        if (tree.next[s] & AugmentedTree::kDownBit) {
-            ++d.down[s], ++d.up[t];
+    for (std::uint32_t k = 0; k < n; ++k) {
+        if (tree.next[k] == kNoSample) continue;
+        const std::uint32_t t = tree.next[k] & AugmentedTree::kIndexMask;
+        if (tree.next[k] & AugmentedTree::kDownBit) {
+            ++d.down[k], ++d.up[t];
         } else {
-            ++d.up[s], ++d.down[t];
+            ++d.up[k], ++d.down[t];
         }
     }
     return d;
 }
 
-std::uint32_t chainRoot(std::vector<std::uint32_t>& forest, std::uint32_t s) {
-    while (forest[s] != s) {
-        forest[s] = forest[forest[s]];
-        s = forest[s];
+std::uint32_t chainRoot(std::vector<std::uint32_t>& forest, std::uint32_t k) {
+    while (forest[k] != k) {
+        forest[k] = forest[forest[k]];
+        k = forest[k];
     }
-    return s;
+    return k;
 }
 
-// Numbers the chains of regular samples: arcOf[s] for each regular sample;
-// returns the number of chains.
+// Numbers the chains of regular samples by their smallest sample index:
+// arcOf[k] for each regular rank; returns the number of chains.
 std::uint32_t numberChains(const AugmentedTree& tree, const Degrees& d, std::vector<std::uint32_t>& arcOf) {
     const auto n = std::uint32_t(tree.next.size());
     std::vector<std::uint32_t> forest(n);
-    for (std::uint32_t s = 0; s < n; ++s) forest[s] = s;
-    for (std::uint32_t s = 0; s < n; ++s) {
-        if (tree.next[s] == kNoSample || !d.regular(s)) continue;
-        const std::uint32_t t = tree.next[s] & AugmentedTree::kIndexMask;
-        if (d.regular(t)) forest[chainRoot(forest, s)] = chainRoot(forest, t);
+    for (std::uint32_t k = 0; k < n; ++k) forest[k] = k;
+    for (std::uint32_t k = 0; k < n; ++k) {
+        if (tree.next[k] == kNoSample || !d.regular(k)) continue;
+        const std::uint32_t t = tree.next[k] & AugmentedTree::kIndexMask;
+        if (d.regular(t)) forest[chainRoot(forest, k)] = chainRoot(forest, t);
     }
+    // Provisional numbers in rank order, kept at each root; then renumbered.
+    constexpr std::uint32_t kNumbered = 0x80000000u;
+    std::vector<std::uint32_t> smallest;  // by provisional number
     arcOf.assign(n, kNoSample);
-    std::uint32_t chains = 0;
-    for (std::uint32_t s = 0; s < n; ++s) {
-        if (!d.regular(s)) continue;
-        const std::uint32_t r = chainRoot(forest, s);
-        if (arcOf[r] == kNoSample) arcOf[r] = chains++;
-        arcOf[s] = arcOf[r];
+    auto numberedRoot = [&](std::uint32_t k) {  // chainRoot, where a numbered entry is a root too
+        for (;;) {
+            const std::uint32_t parent = forest[k];
+            if (parent == k || (parent & kNumbered)) return k;
+            const std::uint32_t grandparent = forest[parent];
+            if (grandparent == parent || (grandparent & kNumbered)) return parent;
+            forest[k] = grandparent;
+            k = grandparent;
+        }
+    };
+    for (std::uint32_t k = 0; k < n; ++k) {
+        if (!d.regular(k)) continue;
+        const std::uint32_t r = numberedRoot(k);
+        if (!(forest[r] & kNumbered)) {
+            forest[r] = std::uint32_t(smallest.size()) | kNumbered;
+            smallest.push_back(tree.order[k]);
+        }
+        const std::uint32_t chain = forest[r] & ~kNumbered;
+        smallest[chain] = std::min(smallest[chain], tree.order[k]);
+        arcOf[k] = chain;
     }
-    return chains;
+    std::vector<std::uint32_t> byFirst(smallest.size());
+    for (std::uint32_t c = 0; c < byFirst.size(); ++c) byFirst[c] = c;
+    std::sort(byFirst.begin(), byFirst.end(),
+              [&](std::uint32_t a, std::uint32_t b) { return smallest[a] < smallest[b]; });
+    std::vector<std::uint32_t>& renumber = smallest;  // reused: provisional -> final
+    for (std::uint32_t c = 0; c < byFirst.size(); ++c) renumber[byFirst[c]] = c;
+    for (std::uint32_t& a : arcOf) {
+        if (a != kNoSample) a = renumber[a];
+    }
+    return std::uint32_t(byFirst.size());
 }
 
 // Gives each arc its end nodes; an edge between two nodes is an arc of its own.
-template <class T>
-void linkArcs(const AugmentedTree& tree, const Degrees& d, const std::vector<std::uint32_t>& arcOf, ContourTree& out,
-              const T* values) {
-    const SampleOrder<T> cmp{values};
+void linkArcs(const AugmentedTree& tree, const Degrees& d, const std::vector<std::uint32_t>& arcOf, ContourTree& out) {
     const auto n = std::uint32_t(tree.next.size());
-    auto node = [&](std::uint32_t s) { return std::uint32_t(out.nodeAt(s)); };
-    for (std::uint32_t s = 0; s < n; ++s) {
-        if (tree.next[s] == kNoSample) continue;
-        const std::uint32_t t = tree.next[s] & AugmentedTree::kIndexMask;
-        const bool rs = d.regular(s), rt = d.regular(t);
-        if (rs && rt) continue;
-        const std::uint32_t lo = cmp.below(s, t) ? s : t, hi = lo == s ? t : s;
-        if (!rs && !rt) {
-            ContourTree::Arc arc;
-            arc.lower = node(lo), arc.upper = node(hi);
-            out.arcs.push_back(arc);
+    auto node = [&](std::uint32_t k) { return std::uint32_t(out.nodeAt(tree.order[k])); };
+    std::vector<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>> between;  // holder's sample, lower, upper
+    for (std::uint32_t k = 0; k < n; ++k) {
+        if (tree.next[k] == kNoSample) continue;
+        const std::uint32_t t = tree.next[k] & AugmentedTree::kIndexMask;
+        const bool rk = d.regular(k), rt = d.regular(t);
+        if (rk && rt) continue;
+        const std::uint32_t lo = std::min(k, t), hi = std::max(k, t);
+        if (!rk && !rt) {
+            between.emplace_back(tree.order[k], lo, hi);
             continue;
         }
-        const std::uint32_t chain = arcOf[rs ? s : t], end = rs ? t : s;
+        const std::uint32_t chain = arcOf[rk ? k : t], end = rk ? t : k;
         if (end == lo) {
             out.arcs[chain].lower = node(end);
         } else {
             out.arcs[chain].upper = node(end);
         }
+    }
+    std::sort(between.begin(), between.end());
+    for (const auto& [holder, lo, hi] : between) {
+        ContourTree::Arc arc;
+        arc.lower = node(lo), arc.upper = node(hi);
+        out.arcs.push_back(arc);
     }
 }
 
@@ -104,9 +137,10 @@ void fillSamples(const AugmentedTree& tree, const std::vector<std::uint32_t>& ar
     for (std::size_t a = 0; a < chains; ++a) start[a + 1] += start[a];
     for (std::size_t a = 0; a < chains; ++a) out.arcs[a].begin = out.arcs[a].end = start[a];
     out.samples.resize(start[chains]);
-    for (const std::uint32_t s : tree.order) {
-        const std::uint32_t a = arcOf[s];
-        if (a != kNoSample) out.samples[out.arcs[a].end++] = s;
+    const auto n = std::uint32_t(arcOf.size());
+    for (std::uint32_t k = 0; k < n; ++k) {
+        const std::uint32_t a = arcOf[k];
+        if (a != kNoSample) out.samples[out.arcs[a].end++] = tree.order[k];
     }
 }
 
@@ -132,17 +166,21 @@ ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented)
     {
         const Degrees d = countDegrees(augmented);
         const auto n = std::uint32_t(augmented.next.size());
-        for (std::uint32_t s = 0; s < n; ++s) {
-            if (d.regular(s)) continue;
-            ContourTree::Node node;
-            node.sample = s;
-            node.value = visitSamples(volume, [&](const auto* values) { return double(values[s]); });
-            node.up = d.up[s], node.down = d.down[s];
-            out.nodes.push_back(node);
-        }
+        visitSamples(volume, [&](const auto* values) {
+            for (std::uint32_t k = 0; k < n; ++k) {
+                if (d.regular(k)) continue;
+                ContourTree::Node node;
+                node.sample = augmented.order[k];
+                node.value = double(values[node.sample]);
+                node.up = d.up[k], node.down = d.down[k];
+                out.nodes.push_back(node);
+            }
+        });
+        std::sort(out.nodes.begin(), out.nodes.end(),
+                  [](const ContourTree::Node& a, const ContourTree::Node& b) { return a.sample < b.sample; });
         chains = numberChains(augmented, d, arcOf);
         out.arcs.resize(chains);
-        visitSamples(volume, [&](const auto* values) { linkArcs(augmented, d, arcOf, out, values); });
+        linkArcs(augmented, d, arcOf, out);
     }
     std::vector<std::uint32_t>().swap(augmented.next);
     fillSamples(augmented, arcOf, chains, out);

@@ -17,9 +17,7 @@
 // merge, which packs the degrees into one byte and adds the contour tree's
 // edges (4 bytes) and its stack of leaves (at most 4 bytes): 21 at most.
 #include <algorithm>
-#include <cstring>
 #include <iterator>
-#include <numeric>
 #include <thread>
 #include <utility>
 
@@ -28,51 +26,6 @@
 
 namespace isotrack::detail {
 namespace {
-
-// An unsigned key in the order of the values; NaN is 0, below every number.
-template <class T>
-auto sortKey(T v) {
-    if constexpr (std::is_floating_point_v<T>) {
-        using U = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
-        if (std::isnan(v)) return U(0);
-        if (v == T(0)) v = T(0);  // -0 sorts with +0
-        U bits;
-        std::memcpy(&bits, &v, sizeof bits);
-        const U sign = U(1) << (8 * sizeof(U) - 1);
-        return (bits & sign) ? U(~bits) : U(bits | sign);
-    } else {
-        using U = std::make_unsigned_t<T>;
-        return U(U(v) ^ (std::is_signed_v<T> ? U(U(1) << (8 * sizeof(T) - 1)) : U(0)));
-    }
-}
-
-template <class T>
-std::vector<std::uint32_t> radixSort(const T* values, std::uint32_t n) {
-    constexpr int kKeyBits = 8 * sizeof(T), kDigitBits = kKeyBits < 16 ? kKeyBits : 16;
-    constexpr std::size_t kBuckets = std::size_t(1) << kDigitBits;
-    std::vector<std::uint32_t> order(n), spare(kKeyBits > kDigitBits ? n : 0);
-    std::vector<std::uint32_t> count(kBuckets);
-    for (int shift = 0; shift < kKeyBits; shift += kDigitBits) {
-        const bool first = shift == 0;
-        const std::uint32_t* in = first ? nullptr : order.data();
-        std::uint32_t* out = first ? order.data() : spare.data();
-        auto digit = [&](std::uint32_t s) { return std::size_t(sortKey(values[s]) >> shift) & (kBuckets - 1); };
-        std::fill(count.begin(), count.end(), 0u);
-        for (std::uint32_t i = 0; i < n; ++i) ++count[digit(first ? i : in[i])];
-        if (count[digit(first ? 0 : in[0])] == n) {  // one digit for all: nothing moves
-            if (first) std::iota(order.begin(), order.end(), 0u);
-            continue;
-        }
-        std::uint32_t sum = 0;
-        for (std::uint32_t& c : count) sum += std::exchange(c, sum);
-        for (std::uint32_t i = 0; i < n; ++i) {
-            const std::uint32_t s = first ? i : in[i];
-            out[count[digit(s)]++] = s;
-        }
-        if (!first) order.swap(spare);
-    }
-    return order;
-}
 
 // The union-find forest of a sweep, 4 bytes a sample: a sample's entry is its
 // parent, or for a root, kRootBit and its component's newest sample (the one
@@ -173,17 +126,52 @@ std::uint32_t liveLink(std::vector<std::uint32_t>& link, const std::vector<std::
     return t;
 }
 
+// Renumbers the two trees by rank (position in the order): the merge walks
+// each arc in value order, and a rank is where the next sample of the arc
+// lies when arcs do not interleave, where a sample index is anywhere in the
+// grid. Link values are mapped first (in place, on two threads), then each
+// array is permuted, its ranks split between the threads.
+void toRankSpace(const std::vector<std::uint32_t>& order, std::vector<std::uint32_t>& joinDown,
+                 std::vector<std::uint32_t>& splitUp, int threads) {
+    const auto n = std::uint32_t(order.size());
+    std::vector<std::uint32_t> rank(n);
+    for (std::uint32_t k = 0; k < n; ++k) rank[order[k]] = k;
+    auto onThreads = [&](auto&& part) {  // part(begin, end) over [0, n)
+        if (threads < 2) return part(0u, n);
+        std::thread helper([&] { part(0u, n / 2); });
+        part(n / 2, n);
+        helper.join();
+    };
+    onThreads([&](std::uint32_t begin, std::uint32_t end) {
+        for (std::uint32_t s = begin; s < end; ++s) {
+            if (joinDown[s] != kNoSample) joinDown[s] = rank[joinDown[s]];
+            if (splitUp[s] != kNoSample) splitUp[s] = rank[splitUp[s]];
+        }
+    });
+    std::vector<std::uint32_t>().swap(rank);
+    for (std::vector<std::uint32_t>* link : {&joinDown, &splitUp}) {
+        std::vector<std::uint32_t> byRank(n);
+        onThreads([&](std::uint32_t begin, std::uint32_t end) {
+            for (std::uint32_t k = begin; k < end; ++k) byRank[k] = (*link)[order[k]];
+        });
+        link->swap(byRank);
+    }
+}
+
 // Carr's merge: peels the leaves of the join and split trees, whose arcs are
 // counted in state. The peel walks each chain of regular samples sample after
 // sample, a miss for each; the link of the next one is requested as soon as
 // the sample is known, beside its state.
 std::vector<std::uint32_t> mergeTrees(std::vector<std::uint32_t>& joinDown, std::vector<std::uint32_t>& splitUp,
-                                      std::vector<std::uint8_t>& state, const BuildProgress& progress) {
+                                      std::vector<std::uint8_t>& state, const std::vector<std::uint32_t>& order,
+                                      const BuildProgress& progress) {
     const auto n = std::uint32_t(state.size());
     std::vector<std::uint32_t> next(n, kNoSample), leaves;
-    for (std::uint32_t s = 0; s < n; ++s) {
-        if (isLeaf(state[s])) leaves.push_back(s);
+    for (std::uint32_t k = 0; k < n; ++k) {
+        if (isLeaf(state[k])) leaves.push_back(k);
     }
+    // Peeled first from the stack's top: the leaves in the order of their samples.
+    std::sort(leaves.begin(), leaves.end(), [&](std::uint32_t a, std::uint32_t b) { return order[a] < order[b]; });
     std::uint32_t remaining = n;
     while (!leaves.empty() && remaining > 1) {
         const std::uint32_t s = leaves.back();
@@ -213,11 +201,6 @@ std::vector<std::uint32_t> mergeTrees(std::vector<std::uint32_t>& joinDown, std:
 
 }  // namespace
 
-std::vector<std::uint32_t> sortSamples(const Volume& volume) {
-    const auto n = std::uint32_t(volume.sampleCount());
-    return visitSamples(volume, [&](const auto* values) { return radixSort(values, n); });
-}
-
 AugmentedTree augmentedContourTree(const Volume& volume, int threads, const BuildProgress& progress) {
     const Dims& dims = volume.dims();
     if (dims[0] < 2 || dims[1] < 2 || dims[2] < 2) {
@@ -229,7 +212,7 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
     AugmentedTree tree;
     const auto n = std::uint64_t(volume.sampleCount());
     progress.start(ContourTreeProgress::Phase::Sorting, 0);
-    tree.order = sortSamples(volume);
+    tree.order = sortSamples(volume, threads);
     progress.start(ContourTreeProgress::Phase::Sweeping, 2 * n);  // both sweeps count
     SampleClasses classes = classifySamples(volume, threads);
     progress.check();
@@ -251,10 +234,14 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
     std::vector<std::uint8_t>().swap(classes.classes);
     progress.check();
     progress.start(ContourTreeProgress::Phase::Merging, n);
-    std::vector<std::uint8_t>& state = up;
-    for (std::size_t s = 0; s < up.size(); ++s) state[s] = std::uint8_t(up[s] | down[s] << 3);
-    std::vector<std::uint8_t>().swap(down);
-    tree.next = mergeTrees(joinDown, splitUp, state, progress);
+    std::vector<std::uint8_t> state(n);
+    for (std::uint32_t k = 0; k < n; ++k) {
+        const std::uint32_t s = tree.order[k];
+        state[k] = std::uint8_t(up[s] | down[s] << 3);
+    }
+    std::vector<std::uint8_t>().swap(up), std::vector<std::uint8_t>().swap(down);
+    toRankSpace(tree.order, joinDown, splitUp, threads);
+    tree.next = mergeTrees(joinDown, splitUp, state, tree.order, progress);
     return tree;
 }
 

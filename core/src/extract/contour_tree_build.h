@@ -56,8 +56,9 @@ struct Neighbours {
     }
 };
 
-// The augmented contour tree as the merge leaves it: each sample but the last
-// has one edge, to next[s] & kIndexMask, going down when kDownBit is set.
+// The augmented contour tree as the merge leaves it, by rank (the position in
+// order): each rank but the last has one edge, to rank next[k] & kIndexMask,
+// going down when kDownBit is set.
 struct AugmentedTree {
     static constexpr std::uint32_t kDownBit = 0x80000000u;
     static constexpr std::uint32_t kIndexMask = 0x7fffffffu;
@@ -111,8 +112,9 @@ SampleClasses classifySamples(const Volume& volume, int threads);
 // The index offset of neighbour position p (0-5 the faces -x +x -y +y -z +z, then the edges).
 std::int64_t neighbourOffset(const Dims& dims, std::uint8_t position);
 
-// Samples sorted ascending in the order above (a stable radix sort).
-std::vector<std::uint32_t> sortSamples(const Volume& volume);
+// Samples sorted ascending in the order above (a stable radix sort, on up to
+// `threads` threads).
+std::vector<std::uint32_t> sortSamples(const Volume& volume, int threads);
 // Join tree, split tree and their merge (Carr et al.'s algorithm).
 AugmentedTree augmentedContourTree(const Volume& volume, int threads,
                                    const BuildProgress& progress = BuildProgress{nullptr});
