@@ -98,9 +98,11 @@ std::uint32_t numberChains(const AugmentedTree& tree, const Degrees& d, std::vec
 }
 
 // Gives each arc its end nodes; an edge between two nodes is an arc of its own.
-void linkArcs(const AugmentedTree& tree, const Degrees& d, const std::vector<std::uint32_t>& arcOf, ContourTree& out) {
+// nodeOf holds the node of each rank that is one.
+void linkArcs(const AugmentedTree& tree, const Degrees& d, const std::vector<std::uint32_t>& arcOf,
+              const std::vector<std::uint32_t>& nodeOf, ContourTree& out) {
     const auto n = std::uint32_t(tree.next.size());
-    auto node = [&](std::uint32_t k) { return std::uint32_t(out.nodeAt(tree.order[k])); };
+    auto node = [&](std::uint32_t k) { return nodeOf[k]; };
     std::vector<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>> between;  // holder's sample, lower, upper
     for (std::uint32_t k = 0; k < n; ++k) {
         if (tree.next[k] == kNoSample) continue;
@@ -166,21 +168,27 @@ ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented)
     {
         const Degrees d = countDegrees(augmented);
         const auto n = std::uint32_t(augmented.next.size());
+        std::vector<std::uint32_t> nodeRanks;  // by sample
+        for (std::uint32_t k = 0; k < n; ++k) {
+            if (!d.regular(k)) nodeRanks.push_back(k);
+        }
+        std::sort(nodeRanks.begin(), nodeRanks.end(),
+                  [&](std::uint32_t a, std::uint32_t b) { return augmented.order[a] < augmented.order[b]; });
+        std::vector<std::uint32_t> nodeOf(n, kNoSample);
+        out.nodes.resize(nodeRanks.size());
         visitSamples(volume, [&](const auto* values) {
-            for (std::uint32_t k = 0; k < n; ++k) {
-                if (d.regular(k)) continue;
-                ContourTree::Node node;
+            for (std::uint32_t i = 0; i < nodeRanks.size(); ++i) {
+                const std::uint32_t k = nodeRanks[i];
+                ContourTree::Node& node = out.nodes[i];
                 node.sample = augmented.order[k];
                 node.value = double(values[node.sample]);
                 node.up = d.up[k], node.down = d.down[k];
-                out.nodes.push_back(node);
+                nodeOf[k] = i;
             }
         });
-        std::sort(out.nodes.begin(), out.nodes.end(),
-                  [](const ContourTree::Node& a, const ContourTree::Node& b) { return a.sample < b.sample; });
         chains = numberChains(augmented, d, arcOf);
         out.arcs.resize(chains);
-        linkArcs(augmented, d, arcOf, out);
+        linkArcs(augmented, d, arcOf, nodeOf, out);
     }
     std::vector<std::uint32_t>().swap(augmented.next);
     fillSamples(augmented, arcOf, chains, out);

@@ -18,7 +18,9 @@
 // of its sweep), one neighbour to join through, or a candidate.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <thread>
+#include <type_traits>
 
 #include "contour_tree_build.h"
 
@@ -100,6 +102,18 @@ const ClassTables& classTables() {
     return tables;
 }
 
+// SampleOrder's below(s + offset, s), with the index tie decided by the
+// offset's sign and no branch but a rarely taken one for NaN.
+template <class T>
+bool belowAt(const T* values, std::uint32_t s, std::int64_t offset) {
+    const T x = values[std::int64_t(s) + offset], y = values[s];
+    if constexpr (std::is_floating_point_v<T>) {
+        if (std::isnan(x) || std::isnan(y))
+            return SampleOrder<T>{values}.below(std::uint32_t(std::int64_t(s) + offset), s);
+    }
+    return (x < y) | ((x == y) & (offset < 0));
+}
+
 template <class T>
 void classifyRange(const T* values, const Dims& dims, int z0, int z1, SampleClasses& out) {
     const ClassTables& tables = classTables();
@@ -132,10 +146,17 @@ void classifyRange(const T* values, const Dims& dims, int z0, int z1, SampleClas
                 const std::uint32_t s = first + std::uint32_t(x);
                 const std::uint32_t border = edgeYZ | (x == 0 ? 1u : 0u) | (x + 1 == dims[0] ? 2u : 0u);
                 std::uint32_t below = 0, above = 0;
-                for (std::uint32_t in = inside[border]; in; in &= in - 1) {
-                    const std::uint32_t p = lowestBit(in);
-                    const auto m = std::uint32_t(std::int64_t(s) + offset[p]);
-                    (cmp.below(m, s) ? below : above) |= 1u << p;
+                if (border == 0) {  // inside: every position, without a branch on the values
+                    for (int p = 0; p < kPositions; ++p) {
+                        const bool lower = belowAt(values, s, offset[p]);
+                        below |= std::uint32_t(lower) << p, above |= std::uint32_t(!lower) << p;
+                    }
+                } else {
+                    for (std::uint32_t in = inside[border]; in; in &= in - 1) {
+                        const std::uint32_t p = lowestBit(in);
+                        const auto m = std::uint32_t(std::int64_t(s) + offset[p]);
+                        (cmp.below(m, s) ? below : above) |= 1u << p;
+                    }
                 }
                 const std::uint8_t join = tables.join[above], split = tables.split[below];
                 out.classes[s] = std::uint8_t(join | split << 3);
