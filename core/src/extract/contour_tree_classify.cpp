@@ -102,16 +102,37 @@ const ClassTables& classTables() {
     return tables;
 }
 
-// SampleOrder's below(s + offset, s), with the index tie decided by the
-// offset's sign and no branch but a rarely taken one for NaN.
+// The below masks of a row's inner samples (x from 1 to n - 2) whose
+// neighbourhoods lie inside the grid and hold no NaN, a position at a time
+// along the row, so that the compiler compares many samples at once.
 template <class T>
-bool belowAt(const T* values, std::uint32_t s, std::int64_t offset) {
-    const T x = values[std::int64_t(s) + offset], y = values[s];
-    if constexpr (std::is_floating_point_v<T>) {
-        if (std::isnan(x) || std::isnan(y))
-            return SampleOrder<T>{values}.below(std::uint32_t(std::int64_t(s) + offset), s);
+void interiorRow(const T* values, std::uint32_t first, const std::array<std::int64_t, kPositions>& offset,
+                 std::vector<std::uint32_t>& belowRow) {
+    const std::size_t n = belowRow.size() - 1;
+    const T* __restrict centre = values + first;
+    std::uint32_t* __restrict below = belowRow.data();
+    std::fill(belowRow.begin(), belowRow.end(), 0u);
+    for (int p = 0; p < kPositions; ++p) {
+        const T* __restrict neighbour = centre + offset[p];
+        const std::uint32_t bit = 1u << p, tie = offset[p] < 0 ? bit : 0u;  // a lower index wins a tie
+        for (std::size_t x = 1; x < n; ++x) {
+            const T a = neighbour[x], b = centre[x];
+            below[x] |= a < b ? bit : (a == b ? tie : 0u);
+        }
     }
-    return (x < y) | ((x == y) & (offset < 0));
+}
+
+// Whether the planes z0 - 1 to z1 (those a slab's neighbourhoods read) hold a NaN.
+template <class T>
+bool anyNaN(const T* values, const Dims& dims, int z0, int z1) {
+    if constexpr (std::is_floating_point_v<T>) {
+        const std::int64_t plane = std::int64_t(dims[0]) * dims[1];
+        const T* begin = values + std::max(0, z0 - 1) * plane;
+        const T* end = values + std::min(dims[2], z1 + 1) * plane;
+        return std::any_of(begin, end, [](T v) { return std::isnan(v); });
+    } else {
+        return false;
+    }
 }
 
 template <class T>
@@ -137,32 +158,41 @@ void classifyRange(const T* values, const Dims& dims, int z0, int z1, SampleClas
             if (in) inside[border] |= 1u << p;
         }
     }
+    auto store = [&](std::uint32_t s, std::uint32_t below, std::uint32_t above) {
+        const std::uint8_t join = tables.join[above], split = tables.split[below];
+        out.classes[s] = std::uint8_t(join | split << 3);
+        out.up[s] = join != 0 && join != kJoinCandidate;
+        out.down[s] = split != 0 && split != kSplitCandidate;
+    };
+    auto classifyOne = [&](std::uint32_t s, std::uint32_t border) {
+        std::uint32_t below = 0, above = 0;
+        for (std::uint32_t in = inside[border]; in; in &= in - 1) {
+            const std::uint32_t p = lowestBit(in);
+            const auto m = std::uint32_t(std::int64_t(s) + offset[p]);
+            (cmp.below(m, s) ? below : above) |= 1u << p;
+        }
+        store(s, below, above);
+    };
+    std::vector<std::uint32_t> belowRow(static_cast<std::size_t>(dims[0]));
+    const bool nan = anyNaN(values, dims, z0, z1);  // then one sample at a time, as SampleOrder orders NaN
     for (int z = z0; z < z1; ++z) {
         for (int y = 0; y < dims[1]; ++y) {
             const std::uint32_t edgeYZ =
                 (y == 0 ? 4u : 0u) | (y + 1 == dims[1] ? 8u : 0u) | (z == 0 ? 16u : 0u) | (z + 1 == dims[2] ? 32u : 0u);
             const std::uint32_t first = std::uint32_t(z * plane + y * row);
-            for (int x = 0; x < dims[0]; ++x) {
-                const std::uint32_t s = first + std::uint32_t(x);
-                const std::uint32_t border = edgeYZ | (x == 0 ? 1u : 0u) | (x + 1 == dims[0] ? 2u : 0u);
-                std::uint32_t below = 0, above = 0;
-                if (border == 0) {  // inside: every position, without a branch on the values
-                    for (int p = 0; p < kPositions; ++p) {
-                        const bool lower = belowAt(values, s, offset[p]);
-                        below |= std::uint32_t(lower) << p, above |= std::uint32_t(!lower) << p;
-                    }
-                } else {
-                    for (std::uint32_t in = inside[border]; in; in &= in - 1) {
-                        const std::uint32_t p = lowestBit(in);
-                        const auto m = std::uint32_t(std::int64_t(s) + offset[p]);
-                        (cmp.below(m, s) ? below : above) |= 1u << p;
-                    }
+            const std::uint32_t last = first + std::uint32_t(dims[0] - 1);
+            if (edgeYZ != 0 || dims[0] < 3 || nan) {
+                for (std::uint32_t s = first; s <= last; ++s) {
+                    classifyOne(s, edgeYZ | (s == first ? 1u : 0u) | (s == last ? 2u : 0u));
                 }
-                const std::uint8_t join = tables.join[above], split = tables.split[below];
-                out.classes[s] = std::uint8_t(join | split << 3);
-                out.up[s] = join != 0 && join != kJoinCandidate;
-                out.down[s] = split != 0 && split != kSplitCandidate;
+                continue;
             }
+            interiorRow(values, first, offset, belowRow);
+            classifyOne(first, 1u);
+            for (std::uint32_t x = 1; x + 1 < std::uint32_t(dims[0]); ++x) {
+                store(first + x, belowRow[x], ~belowRow[x] & ((1u << kPositions) - 1));
+            }
+            classifyOne(last, 2u);
         }
     }
 }
