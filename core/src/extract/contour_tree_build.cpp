@@ -9,13 +9,18 @@
 // Passes: sortSamples (stable radix sort on the native values, so ties stay in
 // index order), classifySamples (in grid order: which samples meet exactly one
 // component in each sweep, and through which neighbour), the two sweeps
-// (union-find with randomized linking and path halving, each root keeping its
-// component's newest sample; only candidates read their whole neighbourhood),
-// mergeTrees. Memory: the order, the two trees and their two union-find
-// forests, 4 bytes each per sample, the class byte and a degree byte per tree:
-// 23 bytes per sample at the peak. The forests and classes are gone by the
-// merge, which packs the degrees into one byte and adds the contour tree's
-// edges (4 bytes) and its stack of leaves (at most 4 bytes): 21 at most.
+// (union-find with randomized linking and path halving, each root keeping the
+// rank of its component's newest sample; only candidates read their whole
+// neighbourhood), mergeTrees. The sweeps write the trees and degrees by rank,
+// the position in the order: the merge walks each arc in value order, and
+// where arcs do not interleave the next sample of an arc is the next rank, so
+// it reads memory in sequence instead of anywhere in the grid.
+//
+// Memory: the order, the two trees and their two union-find forests, 4 bytes
+// each per sample, the class byte and a degree byte per tree: 23 bytes per
+// sample at the peak. The forests and classes are gone by the merge, which
+// packs the degrees into one byte and adds the contour tree's edges (4 bytes)
+// and its stack of leaves (at most 4 bytes): 21 at most.
 #include <algorithm>
 #include <iterator>
 #include <thread>
@@ -56,9 +61,11 @@ std::uint32_t linkPriority(std::uint32_t s) {
 constexpr std::uint32_t kPrefetchDistance = 16;
 
 // One sweep: the join tree when Up (from the top, 6 neighbours), the split tree
-// otherwise (from the bottom, 18 neighbours). When sample s meets a component,
-// the component's newest sample gets link = s; degree[s] counts the components
-// s meets. A sample of one class (classifySamples) meets the component of the
+// otherwise (from the bottom, 18 neighbours), both by rank (k, the position in
+// the order). When the sample of rank k meets a component, the rank of the
+// component's newest sample gets link = k, and degree[k] counts the components
+// it meets; both are written where the merge reads them, with no renumbering
+// after. A sample of one class (classifySamples) meets the component of the
 // one neighbour its class names, or none; only candidates read their whole
 // neighbourhood.
 template <bool Up, class T>
@@ -72,41 +79,43 @@ void sweep(const T* values, const Dims& dims, const std::vector<std::uint32_t>& 
     std::int64_t offset[kCandidate];
     for (std::uint8_t c = 1; c < kCandidate; ++c) offset[c] = neighbourOffset(dims, std::uint8_t(c - 1));
     auto classOf = [&](std::uint32_t s) { return std::uint8_t(Up ? classes[s] & 7u : classes[s] >> 3); };
-    auto sampleAt = [&](std::uint32_t k) { return order[Up ? n - 1 - k : k]; };
-    std::vector<std::uint32_t> forest(n);
+    auto rankAt = [&](std::uint32_t step) { return Up ? n - 1 - step : step; };
+    std::vector<std::uint32_t> forest(n);  // by sample; a root holds the rank of its newest sample
     link.assign(n, kNoSample);
-    auto meet = [&](std::uint32_t s, std::uint32_t& root, std::uint32_t r) {
-        link[forest[r] & ~kRootBit] = s;
+    degree.assign(n, 0);
+    auto meet = [&](std::uint32_t k, std::uint32_t& root, std::uint32_t r) {
+        link[forest[r] & ~kRootBit] = k;
         const bool keep = linkPriority(root) > linkPriority(r);
         const std::uint32_t winner = keep ? root : r;
         forest[keep ? r : root] = winner;
-        forest[winner] = s | kRootBit;
+        forest[winner] = k | kRootBit;
         root = winner;
     };
-    for (std::uint32_t k = 0; k < n; ++k) {
-        if (progress.step(k)) return;  // cancelled: the caller throws
-        if (k + 2 * kPrefetchDistance < n) __builtin_prefetch(&classes[sampleAt(k + 2 * kPrefetchDistance)]);
-        if (k + kPrefetchDistance < n) {
-            const std::uint32_t later = sampleAt(k + kPrefetchDistance);
+    for (std::uint32_t step = 0; step < n; ++step) {
+        if (progress.step(step)) return;  // cancelled: the caller throws
+        if (step + 2 * kPrefetchDistance < n) __builtin_prefetch(&classes[order[rankAt(step + 2 * kPrefetchDistance)]]);
+        if (step + kPrefetchDistance < n) {
+            const std::uint32_t later = order[rankAt(step + kPrefetchDistance)];
             const std::uint8_t c = classOf(later);
             __builtin_prefetch(&forest[later], 1);
             if (c != 0 && c != kCandidate) __builtin_prefetch(&forest[std::int64_t(later) + offset[c]]);
         }
-        const std::uint32_t s = sampleAt(k);
+        const std::uint32_t k = rankAt(step), s = order[k];
         const std::uint8_t c = classOf(s);
-        forest[s] = s | kRootBit;
+        forest[s] = k | kRootBit;
         std::uint32_t root = s;
         if (c == 0) continue;
         if (c != kCandidate) {
-            meet(s, root, findRoot(forest, std::uint32_t(std::int64_t(s) + offset[c])));
+            degree[k] = 1;
+            meet(k, root, findRoot(forest, std::uint32_t(std::int64_t(s) + offset[c])));
             continue;
         }
         neighbours.forEach<Up ? 6 : 18>(s, [&](std::uint32_t m) {
             if (Up ? !cmp.below(s, m) : !cmp.below(m, s)) return;  // not swept yet
             const std::uint32_t r = findRoot(forest, m);
             if (r == root) return;
-            ++degree[s];
-            meet(s, root, r);
+            ++degree[k];
+            meet(k, root, r);
         });
     }
 }
@@ -124,38 +133,6 @@ std::uint32_t liveLink(std::vector<std::uint32_t>& link, const std::vector<std::
     while (t != kNoSample && isGone(state[t])) t = link[t];
     for (std::uint32_t u = s; u != t;) u = std::exchange(link[u], t);  // the whole path points past them now
     return t;
-}
-
-// Renumbers the two trees by rank (position in the order): the merge walks
-// each arc in value order, and a rank is where the next sample of the arc
-// lies when arcs do not interleave, where a sample index is anywhere in the
-// grid. Link values are mapped first (in place, on two threads), then each
-// array is permuted, its ranks split between the threads.
-void toRankSpace(const std::vector<std::uint32_t>& order, std::vector<std::uint32_t>& joinDown,
-                 std::vector<std::uint32_t>& splitUp, int threads) {
-    const auto n = std::uint32_t(order.size());
-    std::vector<std::uint32_t> rank(n);
-    for (std::uint32_t k = 0; k < n; ++k) rank[order[k]] = k;
-    auto onThreads = [&](auto&& part) {  // part(begin, end) over [0, n)
-        if (threads < 2) return part(0u, n);
-        std::thread helper([&] { part(0u, n / 2); });
-        part(n / 2, n);
-        helper.join();
-    };
-    onThreads([&](std::uint32_t begin, std::uint32_t end) {
-        for (std::uint32_t s = begin; s < end; ++s) {
-            if (joinDown[s] != kNoSample) joinDown[s] = rank[joinDown[s]];
-            if (splitUp[s] != kNoSample) splitUp[s] = rank[splitUp[s]];
-        }
-    });
-    std::vector<std::uint32_t>().swap(rank);
-    for (std::vector<std::uint32_t>* link : {&joinDown, &splitUp}) {
-        std::vector<std::uint32_t> byRank(n);
-        onThreads([&](std::uint32_t begin, std::uint32_t end) {
-            for (std::uint32_t k = begin; k < end; ++k) byRank[k] = (*link)[order[k]];
-        });
-        link->swap(byRank);
-    }
 }
 
 // Carr's merge: peels the leaves of the join and split trees, whose arcs are
@@ -214,14 +191,13 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
     progress.start(ContourTreeProgress::Phase::Sorting, 0);
     tree.order = sortSamples(volume, threads);
     progress.start(ContourTreeProgress::Phase::Sweeping, 2 * n);  // both sweeps count
-    SampleClasses classes = classifySamples(volume, threads);
+    std::vector<std::uint8_t> classes = classifySamples(volume, threads);
     progress.check();
     std::vector<std::uint32_t> joinDown, splitUp;
-    std::vector<std::uint8_t>& up = classes.up;
-    std::vector<std::uint8_t>& down = classes.down;
+    std::vector<std::uint8_t> up, down;  // by rank
     visitSamples(volume, [&](const auto* values) {
-        auto join = [&] { sweep<true>(values, dims, tree.order, classes.classes, joinDown, up, progress); };
-        auto split = [&] { sweep<false>(values, dims, tree.order, classes.classes, splitUp, down, progress); };
+        auto join = [&] { sweep<true>(values, dims, tree.order, classes, joinDown, up, progress); };
+        auto split = [&] { sweep<false>(values, dims, tree.order, classes, splitUp, down, progress); };
         if (threads > 1) {
             std::thread joiner(join);
             split();
@@ -231,16 +207,12 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
             split();
         }
     });
-    std::vector<std::uint8_t>().swap(classes.classes);
+    std::vector<std::uint8_t>().swap(classes);
     progress.check();
     progress.start(ContourTreeProgress::Phase::Merging, n);
-    std::vector<std::uint8_t> state(n);
-    for (std::uint32_t k = 0; k < n; ++k) {
-        const std::uint32_t s = tree.order[k];
-        state[k] = std::uint8_t(up[s] | down[s] << 3);
-    }
-    std::vector<std::uint8_t>().swap(up), std::vector<std::uint8_t>().swap(down);
-    toRankSpace(tree.order, joinDown, splitUp, threads);
+    std::vector<std::uint8_t>& state = up;
+    for (std::size_t k = 0; k < state.size(); ++k) state[k] = std::uint8_t(up[k] | down[k] << 3);
+    std::vector<std::uint8_t>().swap(down);
     tree.next = mergeTrees(joinDown, splitUp, state, tree.order, progress);
     return tree;
 }

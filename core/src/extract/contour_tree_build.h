@@ -97,18 +97,14 @@ private:
     ContourTreeProgress* progress_;
 };
 
-// Each sample's class for the two sweeps (contour_tree_classify.cpp): in
-// classes, the join sweep's in the low 3 bits and the split sweep's above them.
-// 0 is an extremum of that sweep, kJoinCandidate or kSplitCandidate a sample
-// whose swept neighbours may be apart (the sweep reads them all), and any other
-// c a sample joining exactly the component of its neighbour at position c - 1
-// (neighbourOffset). up and down are the sweeps' degrees: 1 for those joining
-// one component, 0 for extrema and for candidates, which the sweeps count.
+// Each sample's class for the two sweeps (contour_tree_classify.cpp): the join
+// sweep's in the low 3 bits, the split sweep's above them. 0 is an extremum of
+// that sweep, kJoinCandidate or kSplitCandidate a sample whose swept
+// neighbours may be apart (the sweep reads them all), and any other c a sample
+// joining exactly the component of its neighbour at position c - 1
+// (neighbourOffset).
 constexpr std::uint8_t kJoinCandidate = 7, kSplitCandidate = 31;
-struct SampleClasses {
-    std::vector<std::uint8_t> classes, up, down;
-};
-SampleClasses classifySamples(const Volume& volume, int threads);
+std::vector<std::uint8_t> classifySamples(const Volume& volume, int threads);
 // The index offset of neighbour position p (0-5 the faces -x +x -y +y -z +z, then the edges).
 std::int64_t neighbourOffset(const Dims& dims, std::uint8_t position);
 

@@ -136,7 +136,7 @@ bool anyNaN(const T* values, const Dims& dims, int z0, int z1) {
 }
 
 template <class T>
-void classifyRange(const T* values, const Dims& dims, int z0, int z1, SampleClasses& out) {
+void classifyRange(const T* values, const Dims& dims, int z0, int z1, std::vector<std::uint8_t>& out) {
     const ClassTables& tables = classTables();
     const SampleOrder<T> cmp{values};
     const std::int64_t row = dims[0], plane = std::int64_t(dims[0]) * dims[1];
@@ -160,9 +160,7 @@ void classifyRange(const T* values, const Dims& dims, int z0, int z1, SampleClas
     }
     auto store = [&](std::uint32_t s, std::uint32_t below, std::uint32_t above) {
         const std::uint8_t join = tables.join[above], split = tables.split[below];
-        out.classes[s] = std::uint8_t(join | split << 3);
-        out.up[s] = join != 0 && join != kJoinCandidate;
-        out.down[s] = split != 0 && split != kSplitCandidate;
+        out[s] = std::uint8_t(join | split << 3);
     };
     auto classifyOne = [&](std::uint32_t s, std::uint32_t border) {
         std::uint32_t below = 0, above = 0;
@@ -204,11 +202,10 @@ std::int64_t neighbourOffset(const Dims& dims, std::uint8_t position) {
     return p[0] + std::int64_t(p[1]) * dims[0] + std::int64_t(p[2]) * dims[0] * dims[1];
 }
 
-SampleClasses classifySamples(const Volume& volume, int threads) {
+std::vector<std::uint8_t> classifySamples(const Volume& volume, int threads) {
     const Dims& dims = volume.dims();
     const std::size_t n = volume.sampleCount();
-    SampleClasses out;
-    out.classes.resize(n), out.up.resize(n), out.down.resize(n);
+    std::vector<std::uint8_t> out(n);
     classTables();  // built once, before the threads share it
     visitSamples(volume, [&](const auto* values) {
         const int parts = std::max(1, std::min(threads, dims[2]));
