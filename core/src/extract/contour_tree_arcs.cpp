@@ -87,8 +87,7 @@ std::uint32_t numberChains(const AugmentedTree& tree, const Degrees& d, std::vec
     }
     std::vector<std::uint32_t> byFirst(smallest.size());
     for (std::uint32_t c = 0; c < byFirst.size(); ++c) byFirst[c] = c;
-    std::sort(byFirst.begin(), byFirst.end(),
-              [&](std::uint32_t a, std::uint32_t b) { return smallest[a] < smallest[b]; });
+    sortByKey(byFirst, [&](std::uint32_t c) { return smallest[c]; });
     std::vector<std::uint32_t>& renumber = smallest;  // reused: provisional -> final
     for (std::uint32_t c = 0; c < byFirst.size(); ++c) renumber[byFirst[c]] = c;
     for (std::uint32_t& a : arcOf) {
@@ -172,8 +171,7 @@ ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented)
         for (std::uint32_t k = 0; k < n; ++k) {
             if (!d.regular(k)) nodeRanks.push_back(k);
         }
-        std::sort(nodeRanks.begin(), nodeRanks.end(),
-                  [&](std::uint32_t a, std::uint32_t b) { return augmented.order[a] < augmented.order[b]; });
+        sortByKey(nodeRanks, [&](std::uint32_t k) { return augmented.order[k]; });
         std::vector<std::uint32_t> nodeOf(n, kNoSample);
         out.nodes.resize(nodeRanks.size());
         visitSamples(volume, [&](const auto* values) {

@@ -148,7 +148,7 @@ std::vector<std::uint32_t> mergeTrees(std::vector<std::uint32_t>& joinDown, std:
         if (isLeaf(state[k])) leaves.push_back(k);
     }
     // Peeled first from the stack's top: the leaves in the order of their samples.
-    std::sort(leaves.begin(), leaves.end(), [&](std::uint32_t a, std::uint32_t b) { return order[a] < order[b]; });
+    sortByKey(leaves, [&](std::uint32_t k) { return order[k]; });
     std::uint32_t remaining = n;
     while (!leaves.empty() && remaining > 1) {
         const std::uint32_t s = leaves.back();

@@ -1,5 +1,6 @@
 #pragma once
 // The passes of computeContourTree, shared by its files.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <type_traits>
@@ -96,6 +97,16 @@ public:
 private:
     ContourTreeProgress* progress_;
 };
+
+// Sorts items by key(item), a 32-bit key each, read once: the pairs are sorted
+// in place of comparisons that would read the keys anywhere in memory.
+template <class Key>
+void sortByKey(std::vector<std::uint32_t>& items, Key&& key) {
+    std::vector<std::uint64_t> pairs(items.size());
+    for (std::size_t i = 0; i < items.size(); ++i) pairs[i] = std::uint64_t(key(items[i])) << 32 | items[i];
+    std::sort(pairs.begin(), pairs.end());
+    for (std::size_t i = 0; i < items.size(); ++i) items[i] = std::uint32_t(pairs[i]);
+}
 
 // Each sample's class for the two sweeps (contour_tree_classify.cpp): the join
 // sweep's in the low 3 bits, the split sweep's above them. 0 is an extremum of
