@@ -4,13 +4,15 @@
 //
 // Passes of compressContourTree, all by rank (the position in the sorted
 // order, as the merge leaves the tree), so that an arc's samples are near each
-// other: countDegrees (arcs above and below each sample), the nodes (samples
-// with other than one arc each way, numbered by sample index), chains
-// (union-find over the edges between regular samples: each chain is an arc,
-// numbered by its smallest sample index), endpoints (an edge from a chain to a
-// node gives that arc its end; edges between two nodes are arcs of their own,
-// in the order of the sample holding the edge), and the arcs' sample lists
-// (the ranks in order, bucketed by arc, so each stays sorted).
+// other: countDegrees (arcs above and below each sample), chains (union-find
+// over the edges between regular samples: each chain is an arc, numbered by
+// its smallest sample index), the nodes (samples with other than one arc each
+// way, numbered by sample index), endpoints (an edge from a chain to a node
+// gives that arc its end; edges between two nodes are arcs of their own, in
+// the order of the sample holding the edge), and the arcs' sample lists (the
+// ranks in order, bucketed by arc, so each stays sorted). One array of 4 bytes
+// a rank says which chain or node each is; with the edges and the order, 12
+// bytes a sample besides the tree itself, 18 while the chains are found.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -22,13 +24,13 @@ namespace isotrack::detail {
 namespace {
 
 struct Degrees {
-    std::vector<std::uint8_t> up, down;
+    Buffer<std::uint8_t> up, down;
     bool regular(std::uint32_t k) const { return up[k] == 1 && down[k] == 1; }
 };
 
 Degrees countDegrees(const AugmentedTree& tree) {
     const std::size_t n = tree.next.size();
-    Degrees d{std::vector<std::uint8_t>(n, 0), std::vector<std::uint8_t>(n, 0)};
+    Degrees d{Buffer<std::uint8_t>(n, 0), Buffer<std::uint8_t>(n, 0)};
     for (std::uint32_t k = 0; k < n; ++k) {
         if (tree.next[k] == kNoSample) continue;
         const std::uint32_t t = tree.next[k] & AugmentedTree::kIndexMask;
@@ -41,7 +43,7 @@ Degrees countDegrees(const AugmentedTree& tree) {
     return d;
 }
 
-std::uint32_t chainRoot(std::vector<std::uint32_t>& forest, std::uint32_t k) {
+std::uint32_t chainRoot(Buffer<std::uint32_t>& forest, std::uint32_t k) {
     while (forest[k] != k) {
         forest[k] = forest[forest[k]];
         k = forest[k];
@@ -51,9 +53,9 @@ std::uint32_t chainRoot(std::vector<std::uint32_t>& forest, std::uint32_t k) {
 
 // Numbers the chains of regular samples by their smallest sample index:
 // arcOf[k] for each regular rank; returns the number of chains.
-std::uint32_t numberChains(const AugmentedTree& tree, const Degrees& d, std::vector<std::uint32_t>& arcOf) {
+std::uint32_t numberChains(const AugmentedTree& tree, const Degrees& d, Buffer<std::uint32_t>& arcOf) {
     const auto n = std::uint32_t(tree.next.size());
-    std::vector<std::uint32_t> forest(n);
+    Buffer<std::uint32_t> forest(n);
     for (std::uint32_t k = 0; k < n; ++k) forest[k] = k;
     for (std::uint32_t k = 0; k < n; ++k) {
         if (tree.next[k] == kNoSample || !d.regular(k)) continue;
@@ -96,17 +98,41 @@ std::uint32_t numberChains(const AugmentedTree& tree, const Degrees& d, std::vec
     return std::uint32_t(byFirst.size());
 }
 
-// Gives each arc its end nodes; an edge between two nodes is an arc of its own.
-// nodeOf holds the node of each rank that is one.
-void linkArcs(const AugmentedTree& tree, const Degrees& d, const std::vector<std::uint32_t>& arcOf,
-              const std::vector<std::uint32_t>& nodeOf, ContourTree& out) {
+// arcOf after numberNodes: a regular rank's chain, or a node's number with kNodeBit.
+constexpr std::uint32_t kNodeBit = 0x80000000u;
+bool isNode(std::uint32_t entry) { return (entry & kNodeBit) != 0; }
+
+// The nodes, numbered by sample index, with their degrees; marked in arcOf.
+void numberNodes(const Volume& volume, const AugmentedTree& tree, const Degrees& d, Buffer<std::uint32_t>& arcOf,
+                 ContourTree& out) {
     const auto n = std::uint32_t(tree.next.size());
-    auto node = [&](std::uint32_t k) { return nodeOf[k]; };
+    std::vector<std::uint32_t> nodeRanks;  // by sample
+    for (std::uint32_t k = 0; k < n; ++k) {
+        if (!d.regular(k)) nodeRanks.push_back(k);
+    }
+    sortByKey(nodeRanks, [&](std::uint32_t k) { return tree.order[k]; });
+    out.nodes.resize(nodeRanks.size());
+    visitSamples(volume, [&](const auto* values) {
+        for (std::uint32_t i = 0; i < nodeRanks.size(); ++i) {
+            const std::uint32_t k = nodeRanks[i];
+            ContourTree::Node& node = out.nodes[i];
+            node.sample = tree.order[k];
+            node.value = double(values[node.sample]);
+            node.up = d.up[k], node.down = d.down[k];
+            arcOf[k] = i | kNodeBit;
+        }
+    });
+}
+
+// Gives each arc its end nodes; an edge between two nodes is an arc of its own.
+void linkArcs(const AugmentedTree& tree, const Buffer<std::uint32_t>& arcOf, ContourTree& out) {
+    const auto n = std::uint32_t(tree.next.size());
+    auto node = [&](std::uint32_t k) { return arcOf[k] & ~kNodeBit; };
     std::vector<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>> between;  // holder's sample, lower, upper
     for (std::uint32_t k = 0; k < n; ++k) {
         if (tree.next[k] == kNoSample) continue;
         const std::uint32_t t = tree.next[k] & AugmentedTree::kIndexMask;
-        const bool rk = d.regular(k), rt = d.regular(t);
+        const bool rk = !isNode(arcOf[k]), rt = !isNode(arcOf[t]);
         if (rk && rt) continue;
         const std::uint32_t lo = std::min(k, t), hi = std::max(k, t);
         if (!rk && !rt) {
@@ -129,11 +155,11 @@ void linkArcs(const AugmentedTree& tree, const Degrees& d, const std::vector<std
 }
 
 // The arcs' regular samples, bucketed in ascending order.
-void fillSamples(const AugmentedTree& tree, const std::vector<std::uint32_t>& arcOf, std::uint32_t chains,
+void fillSamples(const AugmentedTree& tree, const Buffer<std::uint32_t>& arcOf, std::uint32_t chains,
                  ContourTree& out) {
     std::vector<std::size_t> start(std::size_t(chains) + 1, 0);
     for (const std::uint32_t a : arcOf) {
-        if (a != kNoSample) ++start[a + 1];
+        if (!isNode(a)) ++start[a + 1];
     }
     for (std::size_t a = 0; a < chains; ++a) start[a + 1] += start[a];
     for (std::size_t a = 0; a < chains; ++a) out.arcs[a].begin = out.arcs[a].end = start[a];
@@ -141,7 +167,7 @@ void fillSamples(const AugmentedTree& tree, const std::vector<std::uint32_t>& ar
     const auto n = std::uint32_t(arcOf.size());
     for (std::uint32_t k = 0; k < n; ++k) {
         const std::uint32_t a = arcOf[k];
-        if (a != kNoSample) out.samples[out.arcs[a].end++] = tree.order[k];
+        if (!isNode(a)) out.samples[out.arcs[a].end++] = tree.order[k];
     }
 }
 
@@ -162,34 +188,18 @@ void indexNodeArcs(ContourTree& out) {
 ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented) {
     ContourTree out;
     out.dims = volume.dims();
-    std::vector<std::uint32_t> arcOf;
+    Buffer<std::uint32_t> arcOf;
     std::uint32_t chains = 0;
     {
         const Degrees d = countDegrees(augmented);
-        const auto n = std::uint32_t(augmented.next.size());
-        std::vector<std::uint32_t> nodeRanks;  // by sample
-        for (std::uint32_t k = 0; k < n; ++k) {
-            if (!d.regular(k)) nodeRanks.push_back(k);
-        }
-        sortByKey(nodeRanks, [&](std::uint32_t k) { return augmented.order[k]; });
-        std::vector<std::uint32_t> nodeOf(n, kNoSample);
-        out.nodes.resize(nodeRanks.size());
-        visitSamples(volume, [&](const auto* values) {
-            for (std::uint32_t i = 0; i < nodeRanks.size(); ++i) {
-                const std::uint32_t k = nodeRanks[i];
-                ContourTree::Node& node = out.nodes[i];
-                node.sample = augmented.order[k];
-                node.value = double(values[node.sample]);
-                node.up = d.up[k], node.down = d.down[k];
-                nodeOf[k] = i;
-            }
-        });
         chains = numberChains(augmented, d, arcOf);
-        out.arcs.resize(chains);
-        linkArcs(augmented, d, arcOf, nodeOf, out);
+        numberNodes(volume, augmented, d, arcOf, out);
     }
-    std::vector<std::uint32_t>().swap(augmented.next);
+    out.arcs.resize(chains);
+    linkArcs(augmented, arcOf, out);
+    Buffer<std::uint32_t>().swap(augmented.next);
     fillSamples(augmented, arcOf, chains, out);
+    Buffer<std::uint32_t>().swap(arcOf), Buffer<std::uint32_t>().swap(augmented.order);
     indexNodeArcs(out);
     return out;
 }

@@ -39,7 +39,7 @@ namespace {
 // path halving, without storing ranks).
 constexpr std::uint32_t kRootBit = 0x80000000u;
 
-std::uint32_t findRoot(std::vector<std::uint32_t>& forest, std::uint32_t s) {
+std::uint32_t findRoot(Buffer<std::uint32_t>& forest, std::uint32_t s) {
     for (;;) {
         const std::uint32_t parent = forest[s];
         if (parent & kRootBit) return s;
@@ -69,9 +69,8 @@ constexpr std::uint32_t kPrefetchDistance = 16;
 // one neighbour its class names, or none; only candidates read their whole
 // neighbourhood.
 template <bool Up, class T>
-void sweep(const T* values, const Dims& dims, const std::vector<std::uint32_t>& order,
-           const std::vector<std::uint8_t>& classes, std::vector<std::uint32_t>& link,
-           std::vector<std::uint8_t>& degree, const BuildProgress& progress) {
+void sweep(const T* values, const Dims& dims, const Buffer<std::uint32_t>& order, const Buffer<std::uint8_t>& classes,
+           Buffer<std::uint32_t>& link, Buffer<std::uint8_t>& degree, const BuildProgress& progress) {
     const auto n = std::uint32_t(order.size());
     const SampleOrder<T> cmp{values};
     const Neighbours neighbours{dims};
@@ -80,7 +79,7 @@ void sweep(const T* values, const Dims& dims, const std::vector<std::uint32_t>& 
     for (std::uint8_t c = 1; c < kCandidate; ++c) offset[c] = neighbourOffset(dims, std::uint8_t(c - 1));
     auto classOf = [&](std::uint32_t s) { return std::uint8_t(Up ? classes[s] & 7u : classes[s] >> 3); };
     auto rankAt = [&](std::uint32_t step) { return Up ? n - 1 - step : step; };
-    std::vector<std::uint32_t> forest(n);  // by sample; a root holds the rank of its newest sample
+    Buffer<std::uint32_t> forest(n);  // by sample; a root holds the rank of its newest sample
     link.assign(n, kNoSample);
     degree.assign(n, 0);
     auto meet = [&](std::uint32_t k, std::uint32_t& root, std::uint32_t r) {
@@ -128,7 +127,7 @@ bool isGone(std::uint8_t state) { return (state & 7u) == 7u; }
 bool isLeaf(std::uint8_t state) { return !isGone(state) && (state & 7u) + (state >> 3) == 1; }
 
 // Follows link past removed samples, shortening the path on the way.
-std::uint32_t liveLink(std::vector<std::uint32_t>& link, const std::vector<std::uint8_t>& state, std::uint32_t s) {
+std::uint32_t liveLink(Buffer<std::uint32_t>& link, const Buffer<std::uint8_t>& state, std::uint32_t s) {
     std::uint32_t t = link[s];
     while (t != kNoSample && isGone(state[t])) t = link[t];
     for (std::uint32_t u = s; u != t;) u = std::exchange(link[u], t);  // the whole path points past them now
@@ -139,11 +138,12 @@ std::uint32_t liveLink(std::vector<std::uint32_t>& link, const std::vector<std::
 // counted in state. The peel walks each chain of regular samples sample after
 // sample, a miss for each; the link of the next one is requested as soon as
 // the sample is known, beside its state.
-std::vector<std::uint32_t> mergeTrees(std::vector<std::uint32_t>& joinDown, std::vector<std::uint32_t>& splitUp,
-                                      std::vector<std::uint8_t>& state, const std::vector<std::uint32_t>& order,
-                                      const BuildProgress& progress) {
+Buffer<std::uint32_t> mergeTrees(Buffer<std::uint32_t>& joinDown, Buffer<std::uint32_t>& splitUp,
+                                 Buffer<std::uint8_t>& state, const Buffer<std::uint32_t>& order,
+                                 const BuildProgress& progress) {
     const auto n = std::uint32_t(state.size());
-    std::vector<std::uint32_t> next(n, kNoSample), leaves;
+    Buffer<std::uint32_t> next(n, kNoSample);
+    std::vector<std::uint32_t> leaves;
     for (std::uint32_t k = 0; k < n; ++k) {
         if (isLeaf(state[k])) leaves.push_back(k);
     }
@@ -191,10 +191,10 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
     progress.start(ContourTreeProgress::Phase::Sorting, 0);
     tree.order = sortSamples(volume, threads);
     progress.start(ContourTreeProgress::Phase::Sweeping, 2 * n);  // both sweeps count
-    std::vector<std::uint8_t> classes = classifySamples(volume, threads);
+    Buffer<std::uint8_t> classes = classifySamples(volume, threads);
     progress.check();
-    std::vector<std::uint32_t> joinDown, splitUp;
-    std::vector<std::uint8_t> up, down;  // by rank
+    Buffer<std::uint32_t> joinDown, splitUp;
+    Buffer<std::uint8_t> up, down;  // by rank
     visitSamples(volume, [&](const auto* values) {
         auto join = [&] { sweep<true>(values, dims, tree.order, classes, joinDown, up, progress); };
         auto split = [&] { sweep<false>(values, dims, tree.order, classes, splitUp, down, progress); };
@@ -207,12 +207,12 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
             split();
         }
     });
-    std::vector<std::uint8_t>().swap(classes);
+    Buffer<std::uint8_t>().swap(classes);
     progress.check();
     progress.start(ContourTreeProgress::Phase::Merging, n);
-    std::vector<std::uint8_t>& state = up;
+    Buffer<std::uint8_t>& state = up;
     for (std::size_t k = 0; k < state.size(); ++k) state[k] = std::uint8_t(up[k] | down[k] << 3);
-    std::vector<std::uint8_t>().swap(down);
+    Buffer<std::uint8_t>().swap(down);
     tree.next = mergeTrees(joinDown, splitUp, state, tree.order, progress);
     return tree;
 }
@@ -242,9 +242,9 @@ const char* contourTreePhaseName(ContourTreeProgress::Phase phase) {
 }
 
 double ContourTreeProgress::fraction() const {
-    // Shares of the build's time (sphere, gyroid and CT profiles): sort 10%,
-    // sweeps 55%, merge 20%, arcs 15%.
-    constexpr double kStart[] = {0.0, 0.10, 0.65, 0.85, 1.0};
+    // Shares of the build's time (sphere:256 and CT profiles, one thread): sort
+    // 15%, classes and sweeps 55%, merge 10%, arcs 20%.
+    constexpr double kStart[] = {0.0, 0.15, 0.70, 0.80, 1.0};
     const auto p = std::size_t(phase.load(std::memory_order_relaxed));
     if (p + 1 >= std::size(kStart)) return 1.0;
     const std::uint64_t t = total.load(std::memory_order_relaxed);

@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <new>
 #include <type_traits>
 #include <vector>
+
+#include <sys/mman.h>
 
 #include "isotrack/contour_tree.h"
 #include "isotrack/errors.h"
@@ -12,6 +15,44 @@
 namespace isotrack::detail {
 
 constexpr std::uint32_t kNoSample = ~std::uint32_t(0);
+
+// The build's arrays of a few bytes per sample live in pages of their own,
+// handed back to the kernel when freed. The executable asks glibc to keep
+// freed memory for reuse (app/main.cpp), which would keep every array the
+// build has freed resident, while the next one may not fit where it was.
+template <class T>
+struct MappedAllocator {
+    using value_type = T;
+    static constexpr std::size_t kMapped = std::size_t(1) << 20;  // smaller blocks: operator new
+    MappedAllocator() = default;
+    template <class U>
+    MappedAllocator(const MappedAllocator<U>&) {}
+    T* allocate(std::size_t count) {
+        const std::size_t bytes = count * sizeof(T);
+        if (bytes < kMapped) return static_cast<T*>(::operator new(bytes));
+        void* pages = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        if (pages == MAP_FAILED) throw std::bad_alloc();
+        return static_cast<T*>(pages);
+    }
+    void deallocate(T* block, std::size_t count) {
+        const std::size_t bytes = count * sizeof(T);
+        if (bytes < kMapped) {
+            ::operator delete(block);
+        } else {
+            munmap(block, bytes);
+        }
+    }
+    template <class U>
+    bool operator==(const MappedAllocator<U>&) const {
+        return true;
+    }
+    template <class U>
+    bool operator!=(const MappedAllocator<U>&) const {
+        return false;
+    }
+};
+template <class T>
+using Buffer = std::vector<T, MappedAllocator<T>>;
 
 // The total order of the samples: by value, NaN lowest, ties by index.
 template <class T>
@@ -63,8 +104,8 @@ struct Neighbours {
 struct AugmentedTree {
     static constexpr std::uint32_t kDownBit = 0x80000000u;
     static constexpr std::uint32_t kIndexMask = 0x7fffffffu;
-    std::vector<std::uint32_t> order;  // the samples, ascending
-    std::vector<std::uint32_t> next;
+    Buffer<std::uint32_t> order;  // the samples, ascending
+    Buffer<std::uint32_t> next;
 };
 
 // Reports progress to a ContourTreeProgress, if any, every kStride samples,
@@ -115,13 +156,13 @@ void sortByKey(std::vector<std::uint32_t>& items, Key&& key) {
 // joining exactly the component of its neighbour at position c - 1
 // (neighbourOffset).
 constexpr std::uint8_t kJoinCandidate = 7, kSplitCandidate = 31;
-std::vector<std::uint8_t> classifySamples(const Volume& volume, int threads);
+Buffer<std::uint8_t> classifySamples(const Volume& volume, int threads);
 // The index offset of neighbour position p (0-5 the faces -x +x -y +y -z +z, then the edges).
 std::int64_t neighbourOffset(const Dims& dims, std::uint8_t position);
 
 // Samples sorted ascending in the order above (a stable radix sort, on up to
 // `threads` threads).
-std::vector<std::uint32_t> sortSamples(const Volume& volume, int threads);
+Buffer<std::uint32_t> sortSamples(const Volume& volume, int threads);
 // Join tree, split tree and their merge (Carr et al.'s algorithm).
 AugmentedTree augmentedContourTree(const Volume& volume, int threads,
                                    const BuildProgress& progress = BuildProgress{nullptr});

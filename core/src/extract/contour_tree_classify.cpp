@@ -136,7 +136,7 @@ bool anyNaN(const T* values, const Dims& dims, int z0, int z1) {
 }
 
 template <class T>
-void classifyRange(const T* values, const Dims& dims, int z0, int z1, std::vector<std::uint8_t>& out) {
+void classifyRange(const T* values, const Dims& dims, int z0, int z1, Buffer<std::uint8_t>& out) {
     const ClassTables& tables = classTables();
     const SampleOrder<T> cmp{values};
     const std::int64_t row = dims[0], plane = std::int64_t(dims[0]) * dims[1];
@@ -202,10 +202,10 @@ std::int64_t neighbourOffset(const Dims& dims, std::uint8_t position) {
     return p[0] + std::int64_t(p[1]) * dims[0] + std::int64_t(p[2]) * dims[0] * dims[1];
 }
 
-std::vector<std::uint8_t> classifySamples(const Volume& volume, int threads) {
+Buffer<std::uint8_t> classifySamples(const Volume& volume, int threads) {
     const Dims& dims = volume.dims();
     const std::size_t n = volume.sampleCount();
-    std::vector<std::uint8_t> out(n);
+    Buffer<std::uint8_t> out(n);
     classTables();  // built once, before the threads share it
     visitSamples(volume, [&](const auto* values) {
         const int parts = std::max(1, std::min(threads, dims[2]));

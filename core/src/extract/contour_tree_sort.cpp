@@ -41,10 +41,10 @@ auto sortKey(T v) {
 }
 
 template <class T>
-std::vector<std::uint32_t> radixSort(const T* values, std::uint32_t n) {
+Buffer<std::uint32_t> radixSort(const T* values, std::uint32_t n) {
     constexpr int kKeyBits = 8 * sizeof(T), kDigitBits = kKeyBits < 16 ? kKeyBits : 16;
     constexpr std::size_t kBuckets = std::size_t(1) << kDigitBits;
-    std::vector<std::uint32_t> order(n), spare(kKeyBits > kDigitBits ? n : 0);
+    Buffer<std::uint32_t> order(n), spare(kKeyBits > kDigitBits ? n : 0);
     std::vector<std::uint32_t> count(kBuckets);
     for (int shift = 0; shift < kKeyBits; shift += kDigitBits) {
         const bool first = shift == 0;
@@ -79,11 +79,11 @@ void inParts(std::uint32_t n, int parts, Part&& part) {
 }
 
 template <class T>
-std::vector<std::uint32_t> radixSortPairs(const T* values, std::uint32_t n, int threads) {
+Buffer<std::uint32_t> radixSortPairs(const T* values, std::uint32_t n, int threads) {
     constexpr int kKeyBits = 8 * sizeof(T), kDigitBits = kKeyBits <= 16 ? 8 : 11;
     constexpr std::uint32_t kBuckets = 1u << kDigitBits;
     const int parts = n < (1u << 16) ? 1 : std::max(1, threads);
-    std::vector<std::uint64_t> pairs(n), spare(n);
+    Buffer<std::uint64_t> pairs(n), spare(n);
     std::vector<std::uint32_t> count(std::size_t(parts) * kBuckets);
     bool inPairs = false;  // false: the input is still the values, in index order
     auto pairAt = [&](std::uint32_t i) { return inPairs ? pairs[i] : (std::uint64_t(sortKey(values[i])) << 32 | i); };
@@ -114,15 +114,15 @@ std::vector<std::uint32_t> radixSortPairs(const T* values, std::uint32_t n, int 
         if (inPairs) pairs.swap(spare);
         inPairs = true;
     }
-    std::vector<std::uint64_t>().swap(spare);
-    std::vector<std::uint32_t> order(n);
+    Buffer<std::uint64_t>().swap(spare);
+    Buffer<std::uint32_t> order(n);
     for (std::uint32_t i = 0; i < n; ++i) order[i] = std::uint32_t(pairs[i]);
     return order;
 }
 
 }  // namespace
 
-std::vector<std::uint32_t> sortSamples(const Volume& volume, int threads) {
+Buffer<std::uint32_t> sortSamples(const Volume& volume, int threads) {
     const auto n = std::uint32_t(volume.sampleCount());
     return visitSamples(volume, [&](const auto* values) {
         using T = std::remove_const_t<std::remove_pointer_t<decltype(values)>>;
