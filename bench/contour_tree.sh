@@ -66,7 +66,7 @@ print(info["samples"], info["samples"] * size[info["scalar_type"]])')
         ms=$(median < "$work/ms.$b")
         kib=$(median < "$work/kib.$b")
         printf '| %s | %s | %s | %s | %.2f s | %.0f | %.2f s, %.2f s | %.0f MB | %.1f B/sample |\n' \
-            "$(basename "$(dirname "$(dirname "${binaries[$b]}")")")/$(basename "${binaries[$b]}")" \
+            "${binaries[$b]#"$repo"/}" \
             "$(basename "$volume")" "$samples" "$(cat "$work/shape.$b")" "$(echo "$ms / 1000" | bc -l)" \
             "$(echo "$ms * 1000000 / $samples" | bc -l)" "$(median < "$work/wall.$b")" "$(median < "$work/cpu.$b")" \
             "$(echo "$kib / 1000" | bc -l)" "$(echo "($kib * 1024 - $bytes) / $samples" | bc -l)"
