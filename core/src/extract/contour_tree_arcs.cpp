@@ -1,114 +1,33 @@
-// The contour tree's arcs: the augmented tree (one edge per sample) compressed
-// into arcs between its critical samples, each arc keeping its regular samples
-// in ascending order; and the queries on the compressed tree.
+// The contour tree's arcs: the merge's chains and edges between nodes made
+// into arcs between the critical samples (nodes), each arc keeping its regular
+// samples in ascending order; and the queries on the compressed tree.
 //
-// Passes of compressContourTree, all by rank (the position in the sorted
-// order, as the merge leaves the tree), so that an arc's samples are near each
-// other: countDegrees (arcs above and below each sample), chains (union-find
-// over the edges between regular samples: each chain is an arc, numbered by
-// its smallest sample index), the nodes (samples with other than one arc each
-// way, numbered by sample index), endpoints (an edge from a chain to a node
-// gives that arc its end; edges between two nodes are arcs of their own, in
-// the order of the sample holding the edge), and the arcs' sample lists (the
-// ranks in order, bucketed by arc, so each stays sorted). One array of 4 bytes
-// a rank says which chain or node each is; with the edges and the order, 12
-// bytes a sample besides the tree itself, 18 while the chains are found.
+// Passes of compressContourTree, by rank (the position in the sorted order,
+// as the merge leaves the tree): the nodes (the ranks on no chain, numbered by
+// sample index and marked in arcOf), the arcs (the chains numbered by their
+// smallest sample index, then the edges between two nodes in the order of the
+// sample the merge peeled them from; degrees counted from the arcs), and the
+// arcs' sample lists (the ranks in order, bucketed by arc, so each stays
+// sorted). Besides the tree itself: the order and arcOf, 8 bytes a sample.
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <tuple>
 
 #include "contour_tree_build.h"
 
 namespace isotrack::detail {
 namespace {
 
-struct Degrees {
-    Buffer<std::uint8_t> up, down;
-    bool regular(std::uint32_t k) const { return up[k] == 1 && down[k] == 1; }
-};
-
-Degrees countDegrees(const AugmentedTree& tree) {
-    const std::size_t n = tree.next.size();
-    Degrees d{Buffer<std::uint8_t>(n, 0), Buffer<std::uint8_t>(n, 0)};
-    for (std::uint32_t k = 0; k < n; ++k) {
-        if (tree.next[k] == kNoSample) continue;
-        const std::uint32_t t = tree.next[k] & AugmentedTree::kIndexMask;
-        if (tree.next[k] & AugmentedTree::kDownBit) {
-            ++d.down[k], ++d.up[t];
-        } else {
-            ++d.up[k], ++d.down[t];
-        }
-    }
-    return d;
-}
-
-std::uint32_t chainRoot(Buffer<std::uint32_t>& forest, std::uint32_t k) {
-    while (forest[k] != k) {
-        forest[k] = forest[forest[k]];
-        k = forest[k];
-    }
-    return k;
-}
-
-// Numbers the chains of regular samples by their smallest sample index:
-// arcOf[k] for each regular rank; returns the number of chains.
-std::uint32_t numberChains(const AugmentedTree& tree, const Degrees& d, Buffer<std::uint32_t>& arcOf) {
-    const auto n = std::uint32_t(tree.next.size());
-    Buffer<std::uint32_t> forest(n);
-    for (std::uint32_t k = 0; k < n; ++k) forest[k] = k;
-    for (std::uint32_t k = 0; k < n; ++k) {
-        if (tree.next[k] == kNoSample || !d.regular(k)) continue;
-        const std::uint32_t t = tree.next[k] & AugmentedTree::kIndexMask;
-        if (d.regular(t)) forest[chainRoot(forest, k)] = chainRoot(forest, t);
-    }
-    // Provisional numbers in rank order, kept at each root; then renumbered.
-    constexpr std::uint32_t kNumbered = 0x80000000u;
-    std::vector<std::uint32_t> smallest;  // by provisional number
-    arcOf.assign(n, kNoSample);
-    auto numberedRoot = [&](std::uint32_t k) {  // chainRoot, where a numbered entry is a root too
-        for (;;) {
-            const std::uint32_t parent = forest[k];
-            if (parent == k || (parent & kNumbered)) return k;
-            const std::uint32_t grandparent = forest[parent];
-            if (grandparent == parent || (grandparent & kNumbered)) return parent;
-            forest[k] = grandparent;
-            k = grandparent;
-        }
-    };
-    for (std::uint32_t k = 0; k < n; ++k) {
-        if (!d.regular(k)) continue;
-        const std::uint32_t r = numberedRoot(k);
-        if (!(forest[r] & kNumbered)) {
-            forest[r] = std::uint32_t(smallest.size()) | kNumbered;
-            smallest.push_back(tree.order[k]);
-        }
-        const std::uint32_t chain = forest[r] & ~kNumbered;
-        smallest[chain] = std::min(smallest[chain], tree.order[k]);
-        arcOf[k] = chain;
-    }
-    std::vector<std::uint32_t> byFirst(smallest.size());
-    for (std::uint32_t c = 0; c < byFirst.size(); ++c) byFirst[c] = c;
-    sortByKey(byFirst, [&](std::uint32_t c) { return smallest[c]; });
-    std::vector<std::uint32_t>& renumber = smallest;  // reused: provisional -> final
-    for (std::uint32_t c = 0; c < byFirst.size(); ++c) renumber[byFirst[c]] = c;
-    for (std::uint32_t& a : arcOf) {
-        if (a != kNoSample) a = renumber[a];
-    }
-    return std::uint32_t(byFirst.size());
-}
-
 // arcOf after numberNodes: a regular rank's chain, or a node's number with kNodeBit.
 constexpr std::uint32_t kNodeBit = 0x80000000u;
 bool isNode(std::uint32_t entry) { return (entry & kNodeBit) != 0; }
 
-// The nodes, numbered by sample index, with their degrees; marked in arcOf.
-void numberNodes(const Volume& volume, const AugmentedTree& tree, const Degrees& d, Buffer<std::uint32_t>& arcOf,
-                 ContourTree& out) {
-    const auto n = std::uint32_t(tree.next.size());
+// The nodes, numbered by sample index; marked in arcOf.
+void numberNodes(const Volume& volume, AugmentedTree& tree, ContourTree& out) {
+    const auto n = std::uint32_t(tree.arcOf.size());
     std::vector<std::uint32_t> nodeRanks;  // by sample
     for (std::uint32_t k = 0; k < n; ++k) {
-        if (!d.regular(k)) nodeRanks.push_back(k);
+        if (tree.arcOf[k] == kNoSample) nodeRanks.push_back(k);
     }
     sortByKey(nodeRanks, [&](std::uint32_t k) { return tree.order[k]; });
     out.nodes.resize(nodeRanks.size());
@@ -118,55 +37,52 @@ void numberNodes(const Volume& volume, const AugmentedTree& tree, const Degrees&
             ContourTree::Node& node = out.nodes[i];
             node.sample = tree.order[k];
             node.value = double(values[node.sample]);
-            node.up = d.up[k], node.down = d.down[k];
-            arcOf[k] = i | kNodeBit;
+            tree.arcOf[k] = i | kNodeBit;
         }
     });
 }
 
-// Gives each arc its end nodes; an edge between two nodes is an arc of its own.
-void linkArcs(const AugmentedTree& tree, const Buffer<std::uint32_t>& arcOf, ContourTree& out) {
-    const auto n = std::uint32_t(tree.next.size());
-    auto node = [&](std::uint32_t k) { return arcOf[k] & ~kNodeBit; };
-    std::vector<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>> between;  // holder's sample, lower, upper
-    for (std::uint32_t k = 0; k < n; ++k) {
-        if (tree.next[k] == kNoSample) continue;
-        const std::uint32_t t = tree.next[k] & AugmentedTree::kIndexMask;
-        const bool rk = !isNode(arcOf[k]), rt = !isNode(arcOf[t]);
-        if (rk && rt) continue;
-        const std::uint32_t lo = std::min(k, t), hi = std::max(k, t);
-        if (!rk && !rt) {
-            between.emplace_back(tree.order[k], lo, hi);
-            continue;
-        }
-        const std::uint32_t chain = arcOf[rk ? k : t], end = rk ? t : k;
-        if (end == lo) {
-            out.arcs[chain].lower = node(end);
-        } else {
-            out.arcs[chain].upper = node(end);
-        }
+// The arcs: chains first, by their smallest sample, then the edges between
+// two nodes; arcOf renumbered to match, and each node's degrees counted.
+void numberArcs(AugmentedTree& tree, ContourTree& out) {
+    const auto chains = std::uint32_t(tree.chains.size());
+    std::vector<std::uint32_t> byFirst(chains);
+    for (std::uint32_t c = 0; c < chains; ++c) byFirst[c] = c;
+    sortByKey(byFirst, [&](std::uint32_t c) { return tree.chains[c].smallest; });
+    auto node = [&](std::uint32_t k) { return tree.arcOf[k] & ~kNodeBit; };
+    out.arcs.resize(chains);
+    std::vector<std::uint32_t> renumber(chains);
+    for (std::uint32_t a = 0; a < chains; ++a) {
+        const AugmentedTree::Chain& chain = tree.chains[byFirst[a]];
+        out.arcs[a].lower = node(chain.lower), out.arcs[a].upper = node(chain.upper);
+        renumber[byFirst[a]] = a;
     }
-    std::sort(between.begin(), between.end());
-    for (const auto& [holder, lo, hi] : between) {
+    std::vector<AugmentedTree::Chain>().swap(tree.chains);
+    for (std::uint32_t& a : tree.arcOf) {
+        if (!isNode(a)) a = renumber[a];
+    }
+    std::sort(tree.between.begin(), tree.between.end());
+    for (const AugmentedTree::Between& edge : tree.between) {
         ContourTree::Arc arc;
-        arc.lower = node(lo), arc.upper = node(hi);
+        arc.lower = node(edge.lower), arc.upper = node(edge.upper);
         out.arcs.push_back(arc);
     }
+    std::vector<AugmentedTree::Between>().swap(tree.between);
+    for (const ContourTree::Arc& arc : out.arcs) ++out.nodes[arc.lower].up, ++out.nodes[arc.upper].down;
 }
 
 // The arcs' regular samples, bucketed in ascending order.
-void fillSamples(const AugmentedTree& tree, const Buffer<std::uint32_t>& arcOf, std::uint32_t chains,
-                 ContourTree& out) {
+void fillSamples(const AugmentedTree& tree, std::uint32_t chains, ContourTree& out) {
     std::vector<std::size_t> start(std::size_t(chains) + 1, 0);
-    for (const std::uint32_t a : arcOf) {
+    for (const std::uint32_t a : tree.arcOf) {
         if (!isNode(a)) ++start[a + 1];
     }
     for (std::size_t a = 0; a < chains; ++a) start[a + 1] += start[a];
     for (std::size_t a = 0; a < chains; ++a) out.arcs[a].begin = out.arcs[a].end = start[a];
     out.samples.resize(start[chains]);
-    const auto n = std::uint32_t(arcOf.size());
+    const auto n = std::uint32_t(tree.arcOf.size());
     for (std::uint32_t k = 0; k < n; ++k) {
-        const std::uint32_t a = arcOf[k];
+        const std::uint32_t a = tree.arcOf[k];
         if (!isNode(a)) out.samples[out.arcs[a].end++] = tree.order[k];
     }
 }
@@ -188,18 +104,11 @@ void indexNodeArcs(ContourTree& out) {
 ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented) {
     ContourTree out;
     out.dims = volume.dims();
-    Buffer<std::uint32_t> arcOf;
-    std::uint32_t chains = 0;
-    {
-        const Degrees d = countDegrees(augmented);
-        chains = numberChains(augmented, d, arcOf);
-        numberNodes(volume, augmented, d, arcOf, out);
-    }
-    out.arcs.resize(chains);
-    linkArcs(augmented, arcOf, out);
-    Buffer<std::uint32_t>().swap(augmented.next);
-    fillSamples(augmented, arcOf, chains, out);
-    Buffer<std::uint32_t>().swap(arcOf), Buffer<std::uint32_t>().swap(augmented.order);
+    const auto chains = std::uint32_t(augmented.chains.size());
+    numberNodes(volume, augmented, out);
+    numberArcs(augmented, out);
+    fillSamples(augmented, chains, out);
+    Buffer<std::uint32_t>().swap(augmented.arcOf), Buffer<std::uint32_t>().swap(augmented.order);
     indexNodeArcs(out);
     return out;
 }

@@ -19,9 +19,10 @@
 // Memory: the order, the two trees and their two union-find forests, 4 bytes
 // each per sample, the class byte and a degree byte per tree: 23 bytes per
 // sample at the peak. The forests and classes are gone by the merge, which
-// packs the degrees into one byte and adds the contour tree's edges (4 bytes)
-// and its stack of leaves (at most 4 bytes): 21 at most.
+// packs the degrees into one byte and adds each rank's arc (4 bytes) and its
+// stack of leaves (at most 4 bytes): 21 at most.
 #include <algorithm>
+#include <cassert>
 #include <iterator>
 #include <thread>
 #include <utility>
@@ -136,19 +137,44 @@ std::uint32_t liveLink(Buffer<std::uint32_t>& link, const Buffer<std::uint8_t>& 
 
 // Carr's merge: peels the leaves of the join and split trees, whose arcs are
 // counted in state. The peel walks each chain of regular samples sample after
-// sample, a miss for each; the link of the next one is requested as soon as
-// the sample is known, beside its state.
-Buffer<std::uint32_t> mergeTrees(Buffer<std::uint32_t>& joinDown, Buffer<std::uint32_t>& splitUp,
-                                 Buffer<std::uint8_t>& state, const Buffer<std::uint32_t>& order,
-                                 const BuildProgress& progress) {
+// sample, a miss for each where arcs interleave; the link of the next one is
+// requested as soon as the sample is known, beside its state. A sample is a
+// node of the contour tree when it is one of either tree (Carr et al.: the
+// contour tree's up-degree is the join tree's, its down-degree the split
+// tree's), so the regular ones are known before the merge.
+void mergeTrees(Buffer<std::uint32_t>& joinDown, Buffer<std::uint32_t>& splitUp, Buffer<std::uint8_t>& state,
+                AugmentedTree& tree, const BuildProgress& progress) {
     const auto n = std::uint32_t(state.size());
-    Buffer<std::uint32_t> next(n, kNoSample);
+    constexpr std::uint8_t kRegular = 1 + kOneBelow;
+    constexpr std::uint32_t kUnpeeled = kNoSample - 1;
+    tree.arcOf.resize(n);
     std::vector<std::uint32_t> leaves;
     for (std::uint32_t k = 0; k < n; ++k) {
+        tree.arcOf[k] = state[k] == kRegular ? kUnpeeled : kNoSample;
         if (isLeaf(state[k])) leaves.push_back(k);
     }
     // Peeled first from the stack's top: the leaves in the order of their samples.
-    sortByKey(leaves, [&](std::uint32_t k) { return order[k]; });
+    sortByKey(leaves, [&](std::uint32_t k) { return tree.order[k]; });
+    auto edge = [&](std::uint32_t s, std::uint32_t t) {  // peeled s, its edge to t
+        const bool regularS = tree.arcOf[s] != kNoSample, regularT = tree.arcOf[t] != kNoSample;
+        if (!regularS && !regularT) {
+            tree.between.push_back({tree.order[s], std::min(s, t), std::max(s, t)});
+            return;
+        }
+        if (!regularS) {  // a walk from node s enters a chain
+            tree.arcOf[t] = std::uint32_t(tree.chains.size());
+            tree.chains.push_back({});
+            (s < t ? tree.chains.back().lower : tree.chains.back().upper) = s;
+        }
+        assert(!regularS || tree.arcOf[s] != kUnpeeled);  // a regular sample is peeled only after the walk entered it
+        AugmentedTree::Chain& chain = tree.chains[tree.arcOf[regularS ? s : t]];
+        if (regularT) {
+            tree.arcOf[t] = tree.arcOf[regularS ? s : t];
+            chain.smallest = std::min(chain.smallest, tree.order[t]);
+        } else {  // and leaves it at node t
+            (t < s ? chain.lower : chain.upper) = t;
+        }
+    };
     std::uint32_t remaining = n;
     while (!leaves.empty() && remaining > 1) {
         const std::uint32_t s = leaves.back();
@@ -159,21 +185,19 @@ Buffer<std::uint32_t> mergeTrees(Buffer<std::uint32_t>& joinDown, Buffer<std::ui
             t = liveLink(joinDown, state, s);
             __builtin_prefetch(&joinDown[t]);
             --state[t];
-            next[s] = t | AugmentedTree::kDownBit;
         } else if (here == 1) {  // a minimum: up the split tree
             t = liveLink(splitUp, state, s);
             __builtin_prefetch(&splitUp[t]);
             state[t] = std::uint8_t(state[t] - kOneBelow);
-            next[s] = t;
         } else {
             continue;
         }
+        edge(s, t);
         state[s] = kGone;
         --remaining;
         if (progress.step(n - remaining)) progress.check();
         if (isLeaf(state[t])) leaves.push_back(t);
     }
-    return next;
 }
 
 }  // namespace
@@ -213,7 +237,7 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
     Buffer<std::uint8_t>& state = up;
     for (std::size_t k = 0; k < state.size(); ++k) state[k] = std::uint8_t(up[k] | down[k] << 3);
     Buffer<std::uint8_t>().swap(down);
-    tree.next = mergeTrees(joinDown, splitUp, state, tree.order, progress);
+    mergeTrees(joinDown, splitUp, state, tree, progress);
     return tree;
 }
 

@@ -98,14 +98,26 @@ struct Neighbours {
     }
 };
 
-// The augmented contour tree as the merge leaves it, by rank (the position in
-// order): each rank but the last has one edge, to rank next[k] & kIndexMask,
-// going down when kDownBit is set.
+// The contour tree as the merge leaves it, by rank (the position in order):
+// each rank's arc, and the arcs' ends. The merge peels each arc in one walk
+// from a node, sample after sample, so it numbers the chains of regular
+// samples as it goes (in the order it peels them) and notes their end nodes;
+// an edge between two nodes is an arc of its own, noted with the sample that
+// the merge peeled it from.
 struct AugmentedTree {
-    static constexpr std::uint32_t kDownBit = 0x80000000u;
-    static constexpr std::uint32_t kIndexMask = 0x7fffffffu;
+    static constexpr std::uint32_t kIndexMask = 0x7fffffffu;  // ranks and samples fit below it
+    struct Chain {
+        std::uint32_t lower = kNoSample, upper = kNoSample;  // the ranks of its end nodes
+        std::uint32_t smallest = kNoSample;                  // its smallest sample index
+    };
+    struct Between {
+        std::uint32_t holder, lower, upper;  // the sample peeled, the ranks of the ends
+        bool operator<(const Between& other) const { return holder < other.holder; }
+    };
     Buffer<std::uint32_t> order;  // the samples, ascending
-    Buffer<std::uint32_t> next;
+    Buffer<std::uint32_t> arcOf;  // by rank: a regular sample's chain; kNoSample for a node
+    std::vector<Chain> chains;
+    std::vector<Between> between;
 };
 
 // Reports progress to a ContourTreeProgress, if any, every kStride samples,
