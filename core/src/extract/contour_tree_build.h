@@ -32,6 +32,9 @@ struct MappedAllocator {
         if (bytes < kMapped) return static_cast<T*>(::operator new(bytes));
         void* pages = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
         if (pages == MAP_FAILED) throw std::bad_alloc();
+#if defined(MADV_HUGEPAGE)
+        madvise(pages, bytes, MADV_HUGEPAGE);  // fewer faults and TLB misses; only a hint
+#endif
         return static_cast<T*>(pages);
     }
     void deallocate(T* block, std::size_t count) {
