@@ -267,8 +267,8 @@ const char* contourTreePhaseName(ContourTreeProgress::Phase phase) {
 
 double ContourTreeProgress::fraction() const {
     // Shares of the build's time (sphere:256 and CT profiles, one thread): sort
-    // 15%, classes and sweeps 55%, merge 10%, arcs 20%.
-    constexpr double kStart[] = {0.0, 0.15, 0.70, 0.80, 1.0};
+    // 15%, classes and sweeps 55%, merge 15%, arcs 15%.
+    constexpr double kStart[] = {0.0, 0.15, 0.70, 0.85, 1.0};
     const auto p = std::size_t(phase.load(std::memory_order_relaxed));
     if (p + 1 >= std::size(kStart)) return 1.0;
     const std::uint64_t t = total.load(std::memory_order_relaxed);
