@@ -1,12 +1,14 @@
-// The contour tree's arcs: the augmented tree (one edge per sample) compressed
-// into arcs between its critical samples, each arc keeping its regular samples
-// in ascending order; and the queries on the compressed tree.
+// The contour tree's arcs: the merge's chains and edges between nodes made
+// into arcs between the critical samples (nodes), each arc keeping its regular
+// samples in ascending order; and the queries on the compressed tree.
 //
-// Passes of compressContourTree: countDegrees (arcs above and below each
-// sample), the nodes (samples with other than one arc each way), chains
-// (union-find over the edges between regular samples: each chain is an arc),
-// endpoints (an edge from a chain to a node gives that arc its end), and the
-// arcs' sample lists (the sorted order bucketed by arc, so each stays sorted).
+// Passes of compressContourTree, by rank (the position in the sorted order,
+// as the merge leaves the tree): the nodes (the ranks on no chain, numbered by
+// sample index and marked in arcOf), the arcs (the chains numbered by their
+// smallest sample index, then the edges between two nodes in the order of the
+// sample the merge peeled them from; degrees counted from the arcs), and the
+// arcs' sample lists (the ranks in order, bucketed by arc, so each stays
+// sorted). Besides the tree itself: the order and arcOf, 8 bytes a sample.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -16,97 +18,72 @@
 namespace isotrack::detail {
 namespace {
 
-struct Degrees {
-    std::vector<std::uint8_t> up, down;
-    bool regular(std::uint32_t s) const { return up[s] == 1 && down[s] == 1; }
-};
+// arcOf after numberNodes: a regular rank's chain, or a node's number with kNodeBit.
+constexpr std::uint32_t kNodeBit = 0x80000000u;
+bool isNode(std::uint32_t entry) { return (entry & kNodeBit) != 0; }
 
-Degrees countDegrees(const AugmentedTree& tree) {
-    const std::size_t n = tree.next.size();
-    Degrees d{std::vector<std::uint8_t>(n, 0), std::vector<std::uint8_t>(n, 0)};
-    for (std::uint32_t s = 0; s < n; ++s) {
-        if (tree.next[s] == kNoSample) continue;
-        const std::uint32_t t = tree.next[s] & AugmentedTree::kIndexMask;
-        if (tree.next[s] & AugmentedTree::kDownBit) {
-            ++d.down[s], ++d.up[t];
-        } else {
-            ++d.up[s], ++d.down[t];
-        }
+// The nodes, numbered by sample index; marked in arcOf.
+void numberNodes(const Volume& volume, AugmentedTree& tree, ContourTree& out) {
+    const auto n = std::uint32_t(tree.arcOf.size());
+    std::vector<std::uint32_t> nodeRanks;  // by sample
+    for (std::uint32_t k = 0; k < n; ++k) {
+        if (tree.arcOf[k] == kNoSample) nodeRanks.push_back(k);
     }
-    return d;
+    sortByKey(nodeRanks, [&](std::uint32_t k) { return tree.order[k]; });
+    out.nodes.resize(nodeRanks.size());
+    visitSamples(volume, [&](const auto* values) {
+        for (std::uint32_t i = 0; i < nodeRanks.size(); ++i) {
+            const std::uint32_t k = nodeRanks[i];
+            ContourTree::Node& node = out.nodes[i];
+            node.sample = tree.order[k];
+            node.value = double(values[node.sample]);
+            tree.arcOf[k] = i | kNodeBit;
+        }
+    });
 }
 
-std::uint32_t chainRoot(std::vector<std::uint32_t>& forest, std::uint32_t s) {
-    while (forest[s] != s) {
-        forest[s] = forest[forest[s]];
-        s = forest[s];
+// The arcs: chains first, by their smallest sample, then the edges between
+// two nodes; arcOf renumbered to match, and each node's degrees counted.
+void numberArcs(AugmentedTree& tree, ContourTree& out) {
+    const auto chains = std::uint32_t(tree.chains.size());
+    std::vector<std::uint32_t> byFirst(chains);
+    for (std::uint32_t c = 0; c < chains; ++c) byFirst[c] = c;
+    sortByKey(byFirst, [&](std::uint32_t c) { return tree.chains[c].smallest; });
+    auto node = [&](std::uint32_t k) { return tree.arcOf[k] & ~kNodeBit; };
+    out.arcs.resize(chains);
+    std::vector<std::uint32_t> renumber(chains);
+    for (std::uint32_t a = 0; a < chains; ++a) {
+        const AugmentedTree::Chain& chain = tree.chains[byFirst[a]];
+        out.arcs[a].lower = node(chain.lower), out.arcs[a].upper = node(chain.upper);
+        renumber[byFirst[a]] = a;
     }
-    return s;
-}
-
-// Numbers the chains of regular samples: arcOf[s] for each regular sample;
-// returns the number of chains.
-std::uint32_t numberChains(const AugmentedTree& tree, const Degrees& d, std::vector<std::uint32_t>& arcOf) {
-    const auto n = std::uint32_t(tree.next.size());
-    std::vector<std::uint32_t> forest(n);
-    for (std::uint32_t s = 0; s < n; ++s) forest[s] = s;
-    for (std::uint32_t s = 0; s < n; ++s) {
-        if (tree.next[s] == kNoSample || !d.regular(s)) continue;
-        const std::uint32_t t = tree.next[s] & AugmentedTree::kIndexMask;
-        if (d.regular(t)) forest[chainRoot(forest, s)] = chainRoot(forest, t);
+    std::vector<AugmentedTree::Chain>().swap(tree.chains);
+    for (std::uint32_t& a : tree.arcOf) {
+        if (!isNode(a)) a = renumber[a];
     }
-    arcOf.assign(n, kNoSample);
-    std::uint32_t chains = 0;
-    for (std::uint32_t s = 0; s < n; ++s) {
-        if (!d.regular(s)) continue;
-        const std::uint32_t r = chainRoot(forest, s);
-        if (arcOf[r] == kNoSample) arcOf[r] = chains++;
-        arcOf[s] = arcOf[r];
+    std::sort(tree.between.begin(), tree.between.end());
+    for (const AugmentedTree::Between& edge : tree.between) {
+        ContourTree::Arc arc;
+        arc.lower = node(edge.lower), arc.upper = node(edge.upper);
+        out.arcs.push_back(arc);
     }
-    return chains;
-}
-
-// Gives each arc its end nodes; an edge between two nodes is an arc of its own.
-template <class T>
-void linkArcs(const AugmentedTree& tree, const Degrees& d, const std::vector<std::uint32_t>& arcOf, ContourTree& out,
-              const T* values) {
-    const SampleOrder<T> cmp{values};
-    const auto n = std::uint32_t(tree.next.size());
-    auto node = [&](std::uint32_t s) { return std::uint32_t(out.nodeAt(s)); };
-    for (std::uint32_t s = 0; s < n; ++s) {
-        if (tree.next[s] == kNoSample) continue;
-        const std::uint32_t t = tree.next[s] & AugmentedTree::kIndexMask;
-        const bool rs = d.regular(s), rt = d.regular(t);
-        if (rs && rt) continue;
-        const std::uint32_t lo = cmp.below(s, t) ? s : t, hi = lo == s ? t : s;
-        if (!rs && !rt) {
-            ContourTree::Arc arc;
-            arc.lower = node(lo), arc.upper = node(hi);
-            out.arcs.push_back(arc);
-            continue;
-        }
-        const std::uint32_t chain = arcOf[rs ? s : t], end = rs ? t : s;
-        if (end == lo) {
-            out.arcs[chain].lower = node(end);
-        } else {
-            out.arcs[chain].upper = node(end);
-        }
-    }
+    std::vector<AugmentedTree::Between>().swap(tree.between);
+    for (const ContourTree::Arc& arc : out.arcs) ++out.nodes[arc.lower].up, ++out.nodes[arc.upper].down;
 }
 
 // The arcs' regular samples, bucketed in ascending order.
-void fillSamples(const AugmentedTree& tree, const std::vector<std::uint32_t>& arcOf, std::uint32_t chains,
-                 ContourTree& out) {
+void fillSamples(const AugmentedTree& tree, std::uint32_t chains, ContourTree& out) {
     std::vector<std::size_t> start(std::size_t(chains) + 1, 0);
-    for (const std::uint32_t a : arcOf) {
-        if (a != kNoSample) ++start[a + 1];
+    for (const std::uint32_t a : tree.arcOf) {
+        if (!isNode(a)) ++start[a + 1];
     }
     for (std::size_t a = 0; a < chains; ++a) start[a + 1] += start[a];
     for (std::size_t a = 0; a < chains; ++a) out.arcs[a].begin = out.arcs[a].end = start[a];
     out.samples.resize(start[chains]);
-    for (const std::uint32_t s : tree.order) {
-        const std::uint32_t a = arcOf[s];
-        if (a != kNoSample) out.samples[out.arcs[a].end++] = s;
+    const auto n = std::uint32_t(tree.arcOf.size());
+    for (std::uint32_t k = 0; k < n; ++k) {
+        const std::uint32_t a = tree.arcOf[k];
+        if (!isNode(a)) out.samples[out.arcs[a].end++] = tree.order[k];
     }
 }
 
@@ -127,25 +104,11 @@ void indexNodeArcs(ContourTree& out) {
 ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented) {
     ContourTree out;
     out.dims = volume.dims();
-    std::vector<std::uint32_t> arcOf;
-    std::uint32_t chains = 0;
-    {
-        const Degrees d = countDegrees(augmented);
-        const auto n = std::uint32_t(augmented.next.size());
-        for (std::uint32_t s = 0; s < n; ++s) {
-            if (d.regular(s)) continue;
-            ContourTree::Node node;
-            node.sample = s;
-            node.value = visitSamples(volume, [&](const auto* values) { return double(values[s]); });
-            node.up = d.up[s], node.down = d.down[s];
-            out.nodes.push_back(node);
-        }
-        chains = numberChains(augmented, d, arcOf);
-        out.arcs.resize(chains);
-        visitSamples(volume, [&](const auto* values) { linkArcs(augmented, d, arcOf, out, values); });
-    }
-    std::vector<std::uint32_t>().swap(augmented.next);
-    fillSamples(augmented, arcOf, chains, out);
+    const auto chains = std::uint32_t(augmented.chains.size());
+    numberNodes(volume, augmented, out);
+    numberArcs(augmented, out);
+    fillSamples(augmented, chains, out);
+    Buffer<std::uint32_t>().swap(augmented.arcOf), Buffer<std::uint32_t>().swap(augmented.order);
     indexNodeArcs(out);
     return out;
 }

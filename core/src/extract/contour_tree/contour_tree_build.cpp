@@ -7,16 +7,23 @@
 // contour tree, whose one edge goes to its neighbour in the join (split) tree.
 //
 // Passes: sortSamples (stable radix sort on the native values, so ties stay in
-// index order), the two sweeps (union-find with randomized linking and path
-// halving, each root keeping its component's newest sample), mergeTrees. Memory:
-// the order, the two trees and their two union-find forests, 4 bytes each per
-// sample, and a degree byte per tree: 22 bytes per sample at the peak. The forests are gone
-// by the merge, which adds the contour tree's edges (4 bytes), a byte per
-// sample peeled and its stack of leaves (at most 4 bytes): 23 at most.
+// index order), classifySamples (in grid order: which samples meet exactly one
+// component in each sweep, and through which neighbour), the two sweeps
+// (union-find with randomized linking and path halving, each root keeping the
+// rank of its component's newest sample; only candidates read their whole
+// neighbourhood), mergeTrees. The sweeps write the trees and degrees by rank,
+// the position in the order: the merge walks each arc in value order, and
+// where arcs do not interleave the next sample of an arc is the next rank, so
+// it reads memory in sequence instead of anywhere in the grid.
+//
+// Memory: the order, the two trees and their two union-find forests, 4 bytes
+// each per sample, the class byte and a degree byte per tree: 23 bytes per
+// sample at the peak. The forests and classes are gone by the merge, which
+// packs the degrees into one byte and adds each rank's arc (4 bytes) and its
+// stack of leaves (at most 4 bytes): 21 at most.
 #include <algorithm>
-#include <cstring>
+#include <cassert>
 #include <iterator>
-#include <numeric>
 #include <thread>
 #include <utility>
 
@@ -26,51 +33,6 @@
 namespace isotrack::detail {
 namespace {
 
-// An unsigned key in the order of the values; NaN is 0, below every number.
-template <class T>
-auto sortKey(T v) {
-    if constexpr (std::is_floating_point_v<T>) {
-        using U = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
-        if (std::isnan(v)) return U(0);
-        if (v == T(0)) v = T(0);  // -0 sorts with +0
-        U bits;
-        std::memcpy(&bits, &v, sizeof bits);
-        const U sign = U(1) << (8 * sizeof(U) - 1);
-        return (bits & sign) ? U(~bits) : U(bits | sign);
-    } else {
-        using U = std::make_unsigned_t<T>;
-        return U(U(v) ^ (std::is_signed_v<T> ? U(U(1) << (8 * sizeof(T) - 1)) : U(0)));
-    }
-}
-
-template <class T>
-std::vector<std::uint32_t> radixSort(const T* values, std::uint32_t n) {
-    constexpr int kKeyBits = 8 * sizeof(T), kDigitBits = kKeyBits < 16 ? kKeyBits : 16;
-    constexpr std::size_t kBuckets = std::size_t(1) << kDigitBits;
-    std::vector<std::uint32_t> order(n), spare(kKeyBits > kDigitBits ? n : 0);
-    std::vector<std::uint32_t> count(kBuckets);
-    for (int shift = 0; shift < kKeyBits; shift += kDigitBits) {
-        const bool first = shift == 0;
-        const std::uint32_t* in = first ? nullptr : order.data();
-        std::uint32_t* out = first ? order.data() : spare.data();
-        auto digit = [&](std::uint32_t s) { return std::size_t(sortKey(values[s]) >> shift) & (kBuckets - 1); };
-        std::fill(count.begin(), count.end(), 0u);
-        for (std::uint32_t i = 0; i < n; ++i) ++count[digit(first ? i : in[i])];
-        if (count[digit(first ? 0 : in[0])] == n) {  // one digit for all: nothing moves
-            if (first) std::iota(order.begin(), order.end(), 0u);
-            continue;
-        }
-        std::uint32_t sum = 0;
-        for (std::uint32_t& c : count) sum += std::exchange(c, sum);
-        for (std::uint32_t i = 0; i < n; ++i) {
-            const std::uint32_t s = first ? i : in[i];
-            out[count[digit(s)]++] = s;
-        }
-        if (!first) order.swap(spare);
-    }
-    return order;
-}
-
 // The union-find forest of a sweep, 4 bytes a sample: a sample's entry is its
 // parent, or for a root, kRootBit and its component's newest sample (the one
 // its tree link hangs from), so no array of those is needed. Roots are linked
@@ -78,7 +40,7 @@ std::vector<std::uint32_t> radixSort(const T* values, std::uint32_t n) {
 // path halving, without storing ranks).
 constexpr std::uint32_t kRootBit = 0x80000000u;
 
-std::uint32_t findRoot(std::vector<std::uint32_t>& forest, std::uint32_t s) {
+std::uint32_t findRoot(Buffer<std::uint32_t>& forest, std::uint32_t s) {
     for (;;) {
         const std::uint32_t parent = forest[s];
         if (parent & kRootBit) return s;
@@ -94,89 +56,151 @@ std::uint32_t linkPriority(std::uint32_t s) {
     return s;
 }
 
+// The sweeps visit the samples in value order, a random order in space (the
+// shells of a sphere), so each sample's lines are requested this many samples
+// ahead, and its class twice as far ahead, to have many misses in flight at once.
+constexpr std::uint32_t kPrefetchDistance = 16;
+
 // One sweep: the join tree when Up (from the top, 6 neighbours), the split tree
-// otherwise (from the bottom, 18 neighbours). When sample s meets a component,
-// the component's newest sample gets link = s; degree[s] counts the components
-// s meets.
+// otherwise (from the bottom, 18 neighbours), both by rank (k, the position in
+// the order). When the sample of rank k meets a component, the rank of the
+// component's newest sample gets link = k, and degree[k] counts the components
+// it meets; both are written where the merge reads them, with no renumbering
+// after. A sample of one class (classifySamples) meets the component of the
+// one neighbour its class names, or none; only candidates read their whole
+// neighbourhood.
 template <bool Up, class T>
-void sweep(const T* values, const Dims& dims, const std::vector<std::uint32_t>& order, std::vector<std::uint32_t>& link,
-           std::vector<std::uint8_t>& degree, const BuildProgress& progress) {
+void sweep(const T* values, const Dims& dims, const Buffer<std::uint32_t>& order, const Buffer<std::uint8_t>& classes,
+           Buffer<std::uint32_t>& link, Buffer<std::uint8_t>& degree, const BuildProgress& progress) {
     const auto n = std::uint32_t(order.size());
     const SampleOrder<T> cmp{values};
     const Neighbours neighbours{dims};
-    std::vector<std::uint32_t> forest(n);
+    constexpr std::uint8_t kCandidate = Up ? kJoinCandidate : kSplitCandidate;
+    std::int64_t offset[kCandidate];
+    for (std::uint8_t c = 1; c < kCandidate; ++c) offset[c] = neighbourOffset(dims, std::uint8_t(c - 1));
+    auto classOf = [&](std::uint32_t s) { return std::uint8_t(Up ? classes[s] & 7u : classes[s] >> 3); };
+    auto rankAt = [&](std::uint32_t step) { return Up ? n - 1 - step : step; };
+    Buffer<std::uint32_t> forest(n);  // by sample; a root holds the rank of its newest sample
     link.assign(n, kNoSample);
     degree.assign(n, 0);
-    for (std::uint32_t k = 0; k < n; ++k) {
-        if (progress.step(k)) return;  // cancelled: the caller throws
-        const std::uint32_t s = order[Up ? n - 1 - k : k];
-        forest[s] = s | kRootBit;
+    auto meet = [&](std::uint32_t k, std::uint32_t& root, std::uint32_t r) {
+        link[forest[r] & ~kRootBit] = k;
+        const bool keep = linkPriority(root) > linkPriority(r);
+        const std::uint32_t winner = keep ? root : r;
+        forest[keep ? r : root] = winner;
+        forest[winner] = k | kRootBit;
+        root = winner;
+    };
+    for (std::uint32_t step = 0; step < n; ++step) {
+        if (progress.step(step)) return;  // cancelled: the caller throws
+        if (step + 2 * kPrefetchDistance < n) __builtin_prefetch(&classes[order[rankAt(step + 2 * kPrefetchDistance)]]);
+        if (step + kPrefetchDistance < n) {
+            const std::uint32_t later = order[rankAt(step + kPrefetchDistance)];
+            const std::uint8_t c = classOf(later);
+            __builtin_prefetch(&forest[later], 1);
+            if (c != 0 && c != kCandidate) __builtin_prefetch(&forest[std::int64_t(later) + offset[c]]);
+        }
+        const std::uint32_t k = rankAt(step), s = order[k];
+        const std::uint8_t c = classOf(s);
+        forest[s] = k | kRootBit;
         std::uint32_t root = s;
+        if (c == 0) continue;
+        if (c != kCandidate) {
+            degree[k] = 1;
+            meet(k, root, findRoot(forest, std::uint32_t(std::int64_t(s) + offset[c])));
+            continue;
+        }
         neighbours.forEach<Up ? 6 : 18>(s, [&](std::uint32_t m) {
             if (Up ? !cmp.below(s, m) : !cmp.below(m, s)) return;  // not swept yet
             const std::uint32_t r = findRoot(forest, m);
             if (r == root) return;
-            link[forest[r] & ~kRootBit] = s;
-            ++degree[s];
-            const bool keep = linkPriority(root) > linkPriority(r);
-            const std::uint32_t winner = keep ? root : r;
-            forest[keep ? r : root] = winner;
-            forest[winner] = s | kRootBit;
-            root = winner;
+            ++degree[k];
+            meet(k, root, r);
         });
     }
 }
 
+// The merge's state of a sample, a byte: the join tree's arcs above it (at
+// most 6) in the low 3 bits, the split tree's below it (at most 18) above
+// them, and kGone once it is peeled off.
+constexpr std::uint8_t kGone = 0xff, kOneBelow = 8;
+bool isGone(std::uint8_t state) { return (state & 7u) == 7u; }
+bool isLeaf(std::uint8_t state) { return !isGone(state) && (state & 7u) + (state >> 3) == 1; }
+
 // Follows link past removed samples, shortening the path on the way.
-std::uint32_t liveLink(std::vector<std::uint32_t>& link, const std::vector<std::uint8_t>& removed, std::uint32_t s) {
+std::uint32_t liveLink(Buffer<std::uint32_t>& link, const Buffer<std::uint8_t>& state, std::uint32_t s) {
     std::uint32_t t = link[s];
-    while (t != kNoSample && removed[t]) t = link[t];
+    while (t != kNoSample && isGone(state[t])) t = link[t];
     for (std::uint32_t u = s; u != t;) u = std::exchange(link[u], t);  // the whole path points past them now
     return t;
 }
 
-// Carr's merge: up counts the join tree's arcs above each sample, down the split
-// tree's below; `gone` marks the samples peeled off.
-std::vector<std::uint32_t> mergeTrees(std::vector<std::uint32_t>& joinDown, std::vector<std::uint8_t>& up,
-                                      std::vector<std::uint32_t>& splitUp, std::vector<std::uint8_t>& down,
-                                      const BuildProgress& progress) {
-    const auto n = std::uint32_t(up.size());
-    std::vector<std::uint32_t> next(n, kNoSample), leaves;
-    auto isLeaf = [&](std::uint32_t s) { return up[s] + down[s] == 1; };
-    for (std::uint32_t s = 0; s < n; ++s) {
-        if (isLeaf(s)) leaves.push_back(s);
+// Carr's merge: peels the leaves of the join and split trees, whose arcs are
+// counted in state. The peel walks each chain of regular samples sample after
+// sample, a miss for each where arcs interleave; the link of the next one is
+// requested as soon as the sample is known, beside its state. A sample is a
+// node of the contour tree when it is one of either tree (Carr et al.: the
+// contour tree's up-degree is the join tree's, its down-degree the split
+// tree's), so the regular ones are known before the merge.
+void mergeTrees(Buffer<std::uint32_t>& joinDown, Buffer<std::uint32_t>& splitUp, Buffer<std::uint8_t>& state,
+                AugmentedTree& tree, const BuildProgress& progress) {
+    const auto n = std::uint32_t(state.size());
+    constexpr std::uint8_t kRegular = 1 + kOneBelow;
+    constexpr std::uint32_t kUnpeeled = kNoSample - 1;
+    tree.arcOf.resize(n);
+    std::vector<std::uint32_t> leaves;
+    for (std::uint32_t k = 0; k < n; ++k) {
+        tree.arcOf[k] = state[k] == kRegular ? kUnpeeled : kNoSample;
+        if (isLeaf(state[k])) leaves.push_back(k);
     }
-    std::vector<std::uint8_t> gone(n, 0);
+    // Peeled first from the stack's top: the leaves in the order of their samples.
+    sortByKey(leaves, [&](std::uint32_t k) { return tree.order[k]; });
+    auto edge = [&](std::uint32_t s, std::uint32_t t) {  // peeled s, its edge to t
+        const bool regularS = tree.arcOf[s] != kNoSample, regularT = tree.arcOf[t] != kNoSample;
+        if (!regularS && !regularT) {
+            tree.between.push_back({tree.order[s], std::min(s, t), std::max(s, t)});
+            return;
+        }
+        if (!regularS) {  // a walk from node s enters a chain
+            tree.arcOf[t] = std::uint32_t(tree.chains.size());
+            tree.chains.push_back({});
+            (s < t ? tree.chains.back().lower : tree.chains.back().upper) = s;
+        }
+        assert(!regularS || tree.arcOf[s] != kUnpeeled);  // a regular sample is peeled only after the walk entered it
+        AugmentedTree::Chain& chain = tree.chains[tree.arcOf[regularS ? s : t]];
+        if (regularT) {
+            tree.arcOf[t] = tree.arcOf[regularS ? s : t];
+            chain.smallest = std::min(chain.smallest, tree.order[t]);
+        } else {  // and leaves it at node t
+            (t < s ? chain.lower : chain.upper) = t;
+        }
+    };
     std::uint32_t remaining = n;
     while (!leaves.empty() && remaining > 1) {
         const std::uint32_t s = leaves.back();
         leaves.pop_back();
+        const std::uint8_t here = state[s];
         std::uint32_t t;
-        if (up[s] == 0 && down[s] == 1) {  // a maximum of what is left: its edge goes down the join tree
-            t = liveLink(joinDown, gone, s);
-            --up[t];
-            next[s] = t | AugmentedTree::kDownBit;
-        } else if (down[s] == 0 && up[s] == 1) {  // a minimum: up the split tree
-            t = liveLink(splitUp, gone, s);
-            --down[t];
-            next[s] = t;
+        if (here == kOneBelow) {  // a maximum of what is left: its edge goes down the join tree
+            t = liveLink(joinDown, state, s);
+            __builtin_prefetch(&joinDown[t]);
+            --state[t];
+        } else if (here == 1) {  // a minimum: up the split tree
+            t = liveLink(splitUp, state, s);
+            __builtin_prefetch(&splitUp[t]);
+            state[t] = std::uint8_t(state[t] - kOneBelow);
         } else {
             continue;
         }
-        gone[s] = 1;
+        edge(s, t);
+        state[s] = kGone;
         --remaining;
         if (progress.step(n - remaining)) progress.check();
-        if (isLeaf(t)) leaves.push_back(t);
+        if (isLeaf(state[t])) leaves.push_back(t);
     }
-    return next;
 }
 
 }  // namespace
-
-std::vector<std::uint32_t> sortSamples(const Volume& volume) {
-    const auto n = std::uint32_t(volume.sampleCount());
-    return visitSamples(volume, [&](const auto* values) { return radixSort(values, n); });
-}
 
 AugmentedTree augmentedContourTree(const Volume& volume, int threads, const BuildProgress& progress) {
     const Dims& dims = volume.dims();
@@ -189,13 +213,15 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
     AugmentedTree tree;
     const auto n = std::uint64_t(volume.sampleCount());
     progress.start(ContourTreeProgress::Phase::Sorting, 0);
-    tree.order = sortSamples(volume);
+    tree.order = sortSamples(volume, threads);
     progress.start(ContourTreeProgress::Phase::Sweeping, 2 * n);  // both sweeps count
-    std::vector<std::uint32_t> joinDown, splitUp;
-    std::vector<std::uint8_t> up, down;
+    Buffer<std::uint8_t> classes = classifySamples(volume, threads);
+    progress.check();
+    Buffer<std::uint32_t> joinDown, splitUp;
+    Buffer<std::uint8_t> up, down;  // by rank
     visitSamples(volume, [&](const auto* values) {
-        auto join = [&] { sweep<true>(values, volume.dims(), tree.order, joinDown, up, progress); };
-        auto split = [&] { sweep<false>(values, volume.dims(), tree.order, splitUp, down, progress); };
+        auto join = [&] { sweep<true>(values, dims, tree.order, classes, joinDown, up, progress); };
+        auto split = [&] { sweep<false>(values, dims, tree.order, classes, splitUp, down, progress); };
         if (threads > 1) {
             std::thread joiner(join);
             split();
@@ -205,9 +231,13 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
             split();
         }
     });
+    Buffer<std::uint8_t>().swap(classes);
     progress.check();
     progress.start(ContourTreeProgress::Phase::Merging, n);
-    tree.next = mergeTrees(joinDown, up, splitUp, down, progress);
+    Buffer<std::uint8_t>& state = up;
+    for (std::size_t k = 0; k < state.size(); ++k) state[k] = std::uint8_t(up[k] | down[k] << 3);
+    Buffer<std::uint8_t>().swap(down);
+    mergeTrees(joinDown, splitUp, state, tree, progress);
     return tree;
 }
 
@@ -236,9 +266,9 @@ const char* contourTreePhaseName(ContourTreeProgress::Phase phase) {
 }
 
 double ContourTreeProgress::fraction() const {
-    // Shares of the build's time (sphere, gyroid and CT profiles): sort 10%,
-    // sweeps 55%, merge 20%, arcs 15%.
-    constexpr double kStart[] = {0.0, 0.10, 0.65, 0.85, 1.0};
+    // Shares of the build's time (sphere:256 and CT profiles, one thread): sort
+    // 15%, classes and sweeps 55%, merge 15%, arcs 15%.
+    constexpr double kStart[] = {0.0, 0.15, 0.70, 0.85, 1.0};
     const auto p = std::size_t(phase.load(std::memory_order_relaxed));
     if (p + 1 >= std::size(kStart)) return 1.0;
     const std::uint64_t t = total.load(std::memory_order_relaxed);

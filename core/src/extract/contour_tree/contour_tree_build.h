@@ -7,10 +7,14 @@
 // (contour_tree_layout.cpp). Uses support/ and the public headers only.
 //
 // The passes of computeContourTree, shared by its files.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <new>
 #include <type_traits>
 #include <vector>
+
+#include <sys/mman.h>
 
 #include "isotrack/contour_tree.h"
 #include "isotrack/errors.h"
@@ -18,6 +22,47 @@
 namespace isotrack::detail {
 
 constexpr std::uint32_t kNoSample = ~std::uint32_t(0);
+
+// The build's arrays of a few bytes per sample live in pages of their own,
+// handed back to the kernel when freed. The executable asks glibc to keep
+// freed memory for reuse (app/main.cpp), which would keep every array the
+// build has freed resident, while the next one may not fit where it was.
+template <class T>
+struct MappedAllocator {
+    using value_type = T;
+    static constexpr std::size_t kMapped = std::size_t(1) << 20;  // smaller blocks: operator new
+    MappedAllocator() = default;
+    template <class U>
+    MappedAllocator(const MappedAllocator<U>&) {}
+    T* allocate(std::size_t count) {
+        const std::size_t bytes = count * sizeof(T);
+        if (bytes < kMapped) return static_cast<T*>(::operator new(bytes));
+        void* pages = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        if (pages == MAP_FAILED) throw std::bad_alloc();
+#if defined(MADV_HUGEPAGE)
+        madvise(pages, bytes, MADV_HUGEPAGE);  // fewer faults and TLB misses; only a hint
+#endif
+        return static_cast<T*>(pages);
+    }
+    void deallocate(T* block, std::size_t count) {
+        const std::size_t bytes = count * sizeof(T);
+        if (bytes < kMapped) {
+            ::operator delete(block);
+        } else {
+            munmap(block, bytes);
+        }
+    }
+    template <class U>
+    bool operator==(const MappedAllocator<U>&) const {
+        return true;
+    }
+    template <class U>
+    bool operator!=(const MappedAllocator<U>&) const {
+        return false;
+    }
+};
+template <class T>
+using Buffer = std::vector<T, MappedAllocator<T>>;
 
 // The total order of the samples: by value, NaN lowest, ties by index.
 template <class T>
@@ -63,13 +108,26 @@ struct Neighbours {
     }
 };
 
-// The augmented contour tree as the merge leaves it: each sample but the last
-// has one edge, to next[s] & kIndexMask, going down when kDownBit is set.
+// The contour tree as the merge leaves it, by rank (the position in order):
+// each rank's arc, and the arcs' ends. The merge peels each arc in one walk
+// from a node, sample after sample, so it numbers the chains of regular
+// samples as it goes (in the order it peels them) and notes their end nodes;
+// an edge between two nodes is an arc of its own, noted with the sample that
+// the merge peeled it from.
 struct AugmentedTree {
-    static constexpr std::uint32_t kDownBit = 0x80000000u;
-    static constexpr std::uint32_t kIndexMask = 0x7fffffffu;
-    std::vector<std::uint32_t> order;  // the samples, ascending
-    std::vector<std::uint32_t> next;
+    static constexpr std::uint32_t kIndexMask = 0x7fffffffu;  // ranks and samples fit below it
+    struct Chain {
+        std::uint32_t lower = kNoSample, upper = kNoSample;  // the ranks of its end nodes
+        std::uint32_t smallest = kNoSample;                  // its smallest sample index
+    };
+    struct Between {
+        std::uint32_t holder, lower, upper;  // the sample peeled, the ranks of the ends
+        bool operator<(const Between& other) const { return holder < other.holder; }
+    };
+    Buffer<std::uint32_t> order;  // the samples, ascending
+    Buffer<std::uint32_t> arcOf;  // by rank: a regular sample's chain; kNoSample for a node
+    std::vector<Chain> chains;
+    std::vector<Between> between;
 };
 
 // Reports progress to a ContourTreeProgress, if any, every kStride samples,
@@ -103,8 +161,30 @@ private:
     ContourTreeProgress* progress_;
 };
 
-// Samples sorted ascending in the order above (a stable radix sort).
-std::vector<std::uint32_t> sortSamples(const Volume& volume);
+// Sorts items by key(item), a 32-bit key each, read once: the pairs are sorted
+// in place of comparisons that would read the keys anywhere in memory.
+template <class Key>
+void sortByKey(std::vector<std::uint32_t>& items, Key&& key) {
+    std::vector<std::uint64_t> pairs(items.size());
+    for (std::size_t i = 0; i < items.size(); ++i) pairs[i] = std::uint64_t(key(items[i])) << 32 | items[i];
+    std::sort(pairs.begin(), pairs.end());
+    for (std::size_t i = 0; i < items.size(); ++i) items[i] = std::uint32_t(pairs[i]);
+}
+
+// Each sample's class for the two sweeps (contour_tree_classify.cpp): the join
+// sweep's in the low 3 bits, the split sweep's above them. 0 is an extremum of
+// that sweep, kJoinCandidate or kSplitCandidate a sample whose swept
+// neighbours may be apart (the sweep reads them all), and any other c a sample
+// joining exactly the component of its neighbour at position c - 1
+// (neighbourOffset).
+constexpr std::uint8_t kJoinCandidate = 7, kSplitCandidate = 31;
+Buffer<std::uint8_t> classifySamples(const Volume& volume, int threads);
+// The index offset of neighbour position p (0-5 the faces -x +x -y +y -z +z, then the edges).
+std::int64_t neighbourOffset(const Dims& dims, std::uint8_t position);
+
+// Samples sorted ascending in the order above (a stable radix sort, on up to
+// `threads` threads).
+Buffer<std::uint32_t> sortSamples(const Volume& volume, int threads);
 // Join tree, split tree and their merge (Carr et al.'s algorithm).
 AugmentedTree augmentedContourTree(const Volume& volume, int threads,
                                    const BuildProgress& progress = BuildProgress{nullptr});

@@ -1,6 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <random>
@@ -65,7 +66,90 @@ Volume randomIntegers(int n, int levels, unsigned seed) {
     return volume;
 }
 
+// Uniform random samples: a saddle or an extremum at most samples.
+Volume randomFloats(const Dims& dims, ScalarType type, unsigned seed) {
+    Volume volume(dims, type);
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> pick(0.0, 1000.0);
+    for (int z = 0; z < dims[2]; ++z)
+        for (int y = 0; y < dims[1]; ++y)
+            for (int x = 0; x < dims[0]; ++x) volume.setValue(x, y, z, pick(random));
+    return volume;
+}
+
+// A smooth field with many saddles: a sum of waves of random directions and phases.
+Volume randomWaves(const Dims& dims, unsigned seed) {
+    Volume volume(dims, ScalarType::Float32);
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> pick(-1.0, 1.0);
+    std::vector<std::array<double, 4>> waves(6);
+    for (auto& w : waves) w = {pick(random), pick(random), pick(random), 3.0 * pick(random)};
+    for (int z = 0; z < dims[2]; ++z)
+        for (int y = 0; y < dims[1]; ++y)
+            for (int x = 0; x < dims[0]; ++x) {
+                double v = 0;
+                for (const auto& w : waves) v += std::cos(0.9 * (w[0] * x + w[1] * y + w[2] * z) + w[3]);
+                volume.setValue(x, y, z, v);
+            }
+    return volume;
+}
+
+void requireSameTree(const ContourTree& a, const ContourTree& b) {
+    REQUIRE(a.nodes.size() == b.nodes.size());
+    REQUIRE(a.arcs.size() == b.arcs.size());
+    for (std::size_t n = 0; n < a.nodes.size(); ++n) {
+        CHECK(a.nodes[n].sample == b.nodes[n].sample);
+        CHECK(a.nodes[n].up == b.nodes[n].up);
+        CHECK(a.nodes[n].down == b.nodes[n].down);
+    }
+    for (std::size_t k = 0; k < a.arcs.size(); ++k) {
+        CHECK(a.arcs[k].lower == b.arcs[k].lower);
+        CHECK(a.arcs[k].upper == b.arcs[k].upper);
+        CHECK(a.arcs[k].begin == b.arcs[k].begin);
+        CHECK(a.arcs[k].end == b.arcs[k].end);
+    }
+    CHECK(a.samples == b.samples);
+    CHECK(a.nodeArcs == b.nodeArcs);
+}
+
 }  // namespace
+
+TEST_CASE("contour tree: random fields with many saddles, 50 isovalues", "[core][contour-tree]") {
+    SECTION("uniform random samples") {
+        for (unsigned seed = 1; seed <= 3; ++seed) {
+            const Volume volume = randomFloats({17 + int(seed), 23, 19 - int(seed)}, ScalarType::Float32, seed);
+            requireArcsCountSurfaces(volume, isovalues(volume, 50));
+        }
+    }
+    SECTION("random waves") {
+        for (unsigned seed = 1; seed <= 3; ++seed) {
+            const Volume volume = randomWaves({29, 21 + int(seed), 25}, seed);
+            requireArcsCountSurfaces(volume, isovalues(volume, 50));
+        }
+    }
+    SECTION("noise, and random samples of a few levels (ties)") {
+        const Volume noise = makeField({"noise", 32});
+        requireArcsCountSurfaces(noise, isovalues(noise, 50));
+        const Volume levels = randomIntegers(20, 5, 11);
+        requireArcsCountSurfaces(levels, isovalues(levels, 50));
+    }
+}
+
+TEST_CASE("contour tree: the same tree on any number of threads", "[core][contour-tree]") {
+    // Over 2^16 samples, so that the sort and the class pass work in parts.
+    for (const ScalarType type : {ScalarType::Float32, ScalarType::Int16, ScalarType::UInt8}) {
+        INFO(scalarTypeName(type));
+        const Volume volume = randomFloats({48, 40, 37}, type, 7);
+        const ContourTree one = computeContourTree(volume, 1);
+        CHECK(one.nodes.size() + one.samples.size() == volume.sampleCount());
+        for (const int threads : {2, 3}) {
+            INFO(threads << " threads");
+            requireSameTree(one, computeContourTree(volume, threads));
+        }
+    }
+    const Volume waves = randomWaves({64, 48, 40}, 5);
+    requireSameTree(computeContourTree(waves, 1), computeContourTree(waves, 2));
+}
 
 TEST_CASE("contour tree: arcs crossing v are the surfaces at v", "[core][contour-tree]") {
     SECTION("sphere") { requireArcsCountSurfaces(makeField({"sphere", 24}), isovalues(makeField({"sphere", 24}), 50)); }
