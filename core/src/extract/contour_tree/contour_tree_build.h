@@ -1,6 +1,8 @@
 #pragma once
 // Room extract/contour_tree: the contour tree (isotrack/contour_tree.h) and
-// its plot (isotrack/tree_layout.h): building it (contour_tree_build.cpp),
+// its plot (isotrack/tree_layout.h): building it (contour_tree_build.cpp:
+// the samples sorted in contour_tree_sort.cpp and classified by their
+// neighbourhoods in contour_tree_classify.cpp, then swept and merged),
 // its arcs and their queries (contour_tree_arcs.cpp), simplifying it
 // (contour_tree_simplify.cpp), seeds and the surfaces of its arcs
 // (contour_tree_seeds.cpp, tracked through isotrack/tracking.h) and its layout

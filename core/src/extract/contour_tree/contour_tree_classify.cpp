@@ -22,7 +22,7 @@
 #include <thread>
 #include <type_traits>
 
-#include "contour_tree_build.h"
+#include "extract/contour_tree/contour_tree_build.h"
 
 namespace isotrack::detail {
 namespace {

@@ -18,7 +18,7 @@
 #include <type_traits>
 #include <utility>
 
-#include "contour_tree_build.h"
+#include "extract/contour_tree/contour_tree_build.h"
 
 namespace isotrack::detail {
 namespace {
