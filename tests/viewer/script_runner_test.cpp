@@ -14,7 +14,7 @@ namespace {
 
 // Records what the runner asks; the waits look at the public flags.
 struct FakeHost : ScriptHost {
-    bool busy = false, growingNow = false, shown = true, volume = true, screenshot = false;
+    bool busy = false, growingNow = false, shown = true, volume = true, screenshot = false, playing = false;
     std::vector<std::uint32_t> ids;  // surface ids in list order
     std::vector<ui::Action> actions;
     std::vector<std::string> calls;
@@ -25,6 +25,7 @@ struct FakeHost : ScriptHost {
     bool sourceShown() const override { return shown; }
     bool hasVolume() const override { return volume; }
     bool screenshotPending() const override { return screenshot; }
+    bool timePlaying() const override { return playing; }
     std::size_t surfaceCount() const override { return ids.size(); }
     std::uint32_t surfaceId(std::size_t index) const override { return ids.at(index); }
 
