@@ -268,3 +268,38 @@ TEST_CASE("an extraction error names the command that asked for it", "[viewer][s
     none.frame();  // no request came from the script: the current command is named
     CHECK(std::string(none.runner.extractionError("cannot read").what()) == "s.isotrack:1: cannot read");
 }
+
+TEST_CASE("time waits until its step is shown; play until playback and extraction end", "[viewer][script]") {
+    Session s("speed 8\ntime 3\nplay 2\nplay\niso 1\n");
+    s.host.busy = true;
+    s.host.shown = false;
+    s.frame();
+    REQUIRE(s.host.actions.size() == 2);
+    CHECK(std::get<ui::SetTimeSpeed>(s.host.actions[0]).stepsPerSecond == 8.0f);
+    CHECK(std::get<ui::SetTimeStep>(s.host.actions[1]).step == 3);
+    s.host.busy = false;
+    s.frame();  // not shown yet
+    CHECK(s.host.actions.size() == 2);
+    s.host.shown = true;
+    s.host.playing = true;
+    s.frame();
+    REQUIRE(s.host.actions.size() == 3);
+    const auto& play = std::get<ui::PlayTime>(s.host.actions[2]);
+    CHECK(play.play);
+    CHECK(play.steps == std::optional<std::size_t>(2));
+    s.host.playing = false;
+    s.host.busy = true;  // the last step's extraction still running
+    s.frame();
+    CHECK(s.host.actions.size() == 3);
+    s.host.busy = false;
+    s.frame();
+    REQUIRE(s.host.actions.size() == 4);
+    CHECK_FALSE(std::get<ui::PlayTime>(s.host.actions[3]).steps.has_value());  // to the last step
+    s.host.playing = true;
+    s.frame();
+    CHECK(s.host.actions.size() == 4);
+    s.host.playing = false;
+    s.frame();
+    CHECK(isoValues(s.host.actions) == std::vector<double>{1.0});
+    CHECK(s.runner.finished());
+}

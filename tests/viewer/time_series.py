@@ -9,7 +9,9 @@ its box centred where A is at that step, and its triangles those of the surface
 at A in `isotrack extract --method all` of that step's file alone; `time 3`
 shows step 3 again with the triangles it had during play. A second session
 opened with `--time 2 --array density` shows step 2's surfaces (those of
-extracting steps/blobs_2.vti alone); `--array` naming no array is an error.
+extracting steps/blobs_2.vti alone), and so do numbered files
+(`steps/blobs_%d.vti --time 5`) and a 4D NIfTI of the steps (`--time 4`);
+`--array` naming no array is an error.
 Prints the median frame time while playing.
 
 Usage: /usr/bin/python3 time_series.py ISOTRACK WORK_DIR  (exit 77 without VTK)
@@ -146,6 +148,23 @@ else:
     expected = sorted(s["triangles"] for s in alone(2))
     if summary["time"]["step_shown"] != 2 or got != expected:
         failures.append(f"--time 2: step {summary['time']['step_shown']}, triangles {got}, alone {expected}")
+# The other kinds of series: numbered files, and a 4D NIfTI of the same steps.
+import nibabel  # noqa: E402  (Debian's, beside numpy)
+
+nibabel.save(nibabel.Nifti1Image(np.stack([blobs(t).transpose(2, 1, 0) for t in range(STEPS)], axis=3), np.eye(4)),
+             "blobs_4d.nii")
+for volume, step in (("steps/blobs_%d.vti", 5), ("blobs_4d.nii", 4)):
+    rc, out, err = viewer("--volume", volume, "--time", step, "--iso", ISO, "--script",
+                          os.path.join(HERE, "time_start.isotrack"))
+    if rc != 0:
+        failures.append(f"{volume} --time {step}: exit {rc}: {err.strip()}")
+        continue
+    summary = json.loads(out)
+    got = sorted(s["triangles"] for s in summary["surfaces"])
+    expected = sorted(s["triangles"] for s in alone(step))
+    if (summary["time"]["steps"], summary["time"]["step_shown"]) != (STEPS, step) or got != expected:
+        failures.append(f"{volume} --time {step}: {summary['time']['steps']} steps, step "
+                        f"{summary['time']['step_shown']} shown, triangles {got}, alone {expected}")
 rc, out, err = viewer("--volume", "blobs.pvd", "--array", "nothing", "--iso", ISO, "--script",
                       os.path.join(HERE, "time_start.isotrack"))
 if rc == 0 or "nothing" not in err or len(err.strip().splitlines()) != 1:
