@@ -171,6 +171,8 @@ nlohmann::json TimePlayer::summary() const {
             {"steps_shown_during_play", shownDuringPlay_},
             {"play_frames", playFrameMs_.size()},
             {"play_median_frame_ms", median(playFrameMs_)},
+            {"play_max_frame_ms",
+             playFrameMs_.empty() ? 0.0 : double(*std::max_element(playFrameMs_.begin(), playFrameMs_.end()))},
             {"shown", shown}};
 }
 
