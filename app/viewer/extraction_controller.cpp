@@ -79,7 +79,8 @@ void ExtractionController::setTimeStep(std::size_t step) {
                          (steps == 1 ? " step (0)" : " steps (0.." + std::to_string(steps - 1) + ")"));
     }
     if (step == source_.time) return;
-    if (!iso_) iso_ = shownIso();  // each step's own suggestion would move the isovalue under the surfaces
+    // Each step's own suggestion would move the isovalue under the surfaces: the one shown stays.
+    if (!iso_ && scene_.volume() && scene_.volume()->valuesRead) iso_ = shownIso();
     source_.time = step;
     submit();
 }

@@ -70,10 +70,15 @@ void TimePlayer::setSpeed(double stepsPerSecond) {
 }
 
 void TimePlayer::update() {
-    if (!active()) {
+    if (extraction_.series() != series_) {  // another series (or none): what was seen was another's
+        series_ = extraction_.series();
         playing_ = false;
-        return;
+        shown_.clear();
+        samples_.clear();
+        playFrameMs_.clear();
+        shownDuringPlay_ = 0;
     }
+    if (!active()) return;
     const bool applied = extraction_.appliedCount() != applied_;
     applied_ = extraction_.appliedCount();
     if (applied && scene_.volume()) {

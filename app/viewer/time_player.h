@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -53,7 +54,7 @@ public:
     void setSpeed(double stepsPerSecond);
 
     // Once a frame, after the worker's results are taken: notes a step newly
-    // shown, and moves playback on.
+    // shown, and moves playback on. Another series (a load) starts afresh.
     void update();
 
     // The frame loop's time for one frame (the profiler's), counted while playing.
@@ -89,6 +90,7 @@ private:
 
     ExtractionController& extraction_;
     const Scene& scene_;
+    std::shared_ptr<const TimeSeries> series_;  // the series the rest is about
     bool playing_ = false;
     double speed_ = 4.0;
     std::size_t playLast_ = 0;   // the step playback stops at

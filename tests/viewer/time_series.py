@@ -11,7 +11,8 @@ shows step 3 again with the triangles it had during play. A second session
 opened with `--time 2 --array density` shows step 2's surfaces (those of
 extracting steps/blobs_2.vti alone), and so do numbered files
 (`steps/blobs_%d.vti --time 5`) and a 4D NIfTI of the steps (`--time 4`);
-`--array` naming no array is an error.
+`--array` naming no array is an error, and so are `time 6` and playing onto a step whose grid differs (one line
+each).
 Prints the median frame time while playing.
 
 Usage: /usr/bin/python3 time_series.py ISOTRACK WORK_DIR  (exit 77 without VTK)
@@ -169,6 +170,31 @@ rc, out, err = viewer("--volume", "blobs.pvd", "--array", "nothing", "--iso", IS
                       os.path.join(HERE, "time_start.isotrack"))
 if rc == 0 or "nothing" not in err or len(err.strip().splitlines()) != 1:
     failures.append(f"--array nothing: exit {rc}, stderr {err.strip()!r}; expected one line naming the array")
+
+with open("past_the_end.isotrack", "w") as f:
+    f.write("wait\ntime 6\n")
+rc, out, err = viewer("--volume", "blobs.pvd", "--iso", ISO, "--script", "past_the_end.isotrack")
+if rc != 1 or err.strip() != "isotrack: past_the_end.isotrack:2: time 6: blobs.pvd has 6 steps (0..5)":
+    failures.append(f"time 6: exit {rc}, stderr {err.strip()!r}")
+
+# A step on another grid: an error naming it, and playback stops there.
+img = vtk.vtkImageData()
+img.SetDimensions(32, 32, 16)
+img.GetPointData().SetScalars(numpy_support.numpy_to_vtk(blobs(0)[::2, ::2, ::2].ravel().copy(), deep=True))
+w = vtk.vtkXMLImageDataWriter()
+w.SetFileName("steps/small.vti")
+w.SetInputData(img)
+assert w.Write() == 1
+with open("mixed.pvd", "w") as f:
+    f.write('<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n<Collection>\n'
+            '  <DataSet timestep="0" file="steps/blobs_0.vti"/>\n  <DataSet timestep="1" file="steps/small.vti"/>\n'
+            '</Collection>\n</VTKFile>\n')
+with open("mixed.isotrack", "w") as f:
+    f.write("wait\nplay\n")
+rc, out, err = viewer("--volume", "mixed.pvd", "--iso", ISO, "--script", "mixed.isotrack")
+if rc != 1 or len(err.strip().splitlines()) != 1 or "small.vti" not in err:
+    failures.append(f"a step on another grid: exit {rc}, stderr {err.strip()!r}")
+print(f"a step on another grid: {err.strip()}")
 
 for f in failures:
     print("FAIL:", f)
