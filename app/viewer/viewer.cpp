@@ -20,8 +20,9 @@ namespace {
 constexpr int kDeterministicCellsPerFrame = 4096;
 constexpr int kIdleFramesBeforeSleeping = 3;
 constexpr double kIdleWaitSeconds = 0.25;
-// While only the worker has something to do, frames come no faster than this,
-// so that the frame loop (and llvmpipe, and the X server) leave it the CPU.
+// While only the worker (or playback, waiting for its next step) has something
+// to do, frames come no faster than this, so that the frame loop (and llvmpipe,
+// and the X server) leave the worker the CPU.
 constexpr std::chrono::milliseconds kWaitingFramePeriod{16};
 
 int extractionThreads(int requested) { return requested > 0 ? requested : defaultInteractiveThreadCount(); }
@@ -87,7 +88,7 @@ int Viewer::run() {
         } else if (!idle()) {
             idleFrames_ = 0;
         }
-        if (extraction_.busy() && !(scene_.anyGrowing() && growth_.playing())) {
+        if ((extraction_.busy() || time_.playing()) && !(scene_.anyGrowing() && growth_.playing())) {
             std::this_thread::sleep_until(lastFrame + kWaitingFramePeriod);
         }
         lastFrame = Profiler::Clock::now();
