@@ -15,7 +15,7 @@ extracting steps/blobs_2.vti alone), and so do numbered files
 each).
 Prints the median frame time while playing.
 
-Usage: /usr/bin/python3 time_series.py ISOTRACK WORK_DIR  (exit 77 without VTK)
+Usage: /usr/bin/python3 time_series.py ISOTRACK WORK_DIR  (exit 77 without VTK or nibabel)
 """
 import json
 import os
@@ -26,10 +26,11 @@ import sys
 import numpy as np
 
 try:
+    import nibabel
     import vtk
     from vtk.util import numpy_support
 except ImportError:
-    print("python3-vtk9 is missing: skipped")
+    print("python3-vtk9 or python3-nibabel is missing: skipped")
     sys.exit(77)
 
 ISOTRACK, WORK = sys.argv[1], sys.argv[2]
@@ -150,8 +151,6 @@ else:
     if summary["time"]["step_shown"] != 2 or got != expected:
         failures.append(f"--time 2: step {summary['time']['step_shown']}, triangles {got}, alone {expected}")
 # The other kinds of series: numbered files, and a 4D NIfTI of the same steps.
-import nibabel  # noqa: E402  (Debian's, beside numpy)
-
 nibabel.save(nibabel.Nifti1Image(np.stack([blobs(t).transpose(2, 1, 0) for t in range(STEPS)], axis=3), np.eye(4)),
              "blobs_4d.nii")
 for volume, step in (("steps/blobs_%d.vti", 5), ("blobs_4d.nii", 4)):
