@@ -2,6 +2,7 @@
 // What the panel (and the keyboard, mouse and scripts) ask the viewer to do.
 // The panel records these; the viewer applies them between frames.
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -98,11 +99,23 @@ struct UndoMesh {
 };
 struct FrameSelection {};
 struct FrameAll {};
+// A time series: show step `step`; play or pause; playback speed.
+struct SetTimeStep {
+    std::size_t step = 0;
+};
+struct PlayTime {
+    bool play = true;
+    std::optional<std::size_t> steps;  // how many steps to play; nullopt: to the last
+};
+struct SetTimeSpeed {
+    float stepsPerSecond = 4.0f;
+};
 
 using Action = std::variant<LoadField, LoadFile, SetIso, SetTable, SetMethod, Growth, SetCellsPerFrame, SetGrowthBudget,
                             SetColourByGrowth, Select, SetVisible, Isolate, ShowAll, Delete, Export, SetColour,
                             SetOffset, SetExplode, SetWireframe, SetBoundingBox, SetMinPersistence, SetSurfaceIso,
-                            ConfirmExtraction, CancelExtraction, ProcessMesh, UndoMesh, FrameSelection, FrameAll>;
+                            ConfirmExtraction, CancelExtraction, ProcessMesh, UndoMesh, FrameSelection, FrameAll,
+                            SetTimeStep, PlayTime, SetTimeSpeed>;
 
 inline constexpr const char* kDefaultExportPattern = "surface_{id}.ply";
 

@@ -97,6 +97,9 @@ void Panel::build(const PanelState& state, std::vector<Action>& actions) {
             ImGui::CollapsingHeader("Contour tree", ImGuiTreeNodeFlags_DefaultOpen)) {
             treeSection(state, actions);
         }
+        if (state.time.steps > 1 && ImGui::CollapsingHeader("Time", ImGuiTreeNodeFlags_DefaultOpen)) {
+            timeSection(state, actions);
+        }
         if (ImGui::CollapsingHeader("Growth", ImGuiTreeNodeFlags_DefaultOpen)) growthSection(state, actions);
         if (ImGui::CollapsingHeader("Surfaces", ImGuiTreeNodeFlags_DefaultOpen)) {
             surfacesSection(state, scratch_, actions);

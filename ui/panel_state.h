@@ -58,6 +58,19 @@ struct ExtractionState {
     Method confirmMethod = Method::All;
 };
 
+// A time series of several steps (steps > 1; else the Time section is not shown).
+struct TimeState {
+    std::size_t steps = 0;
+    std::size_t step = 0, shownStep = 0;  // asked for, and on screen
+    double time = 0.0, shownTime = 0.0;   // their time values
+    bool playing = false;
+    float stepsPerSecond = 4.0f;
+    // The selected surface at each step seen so far: its step, area and
+    // enclosed volume (0 when open), for the plot in its details.
+    std::vector<std::size_t> plotSteps;
+    std::vector<float> area, volume;
+};
+
 struct GrowthState {
     bool active = false;  // a surface is growing
     bool playing = true;
@@ -124,6 +137,7 @@ struct ViewState {
 struct PanelState {
     DataState data;
     ExtractionState extraction;
+    TimeState time;
     GrowthState growth;
     std::vector<SurfaceRow> surfaces;
     std::optional<std::uint32_t> selected;  // surface id

@@ -13,6 +13,8 @@ namespace isotrack::ui {
 
 void dataSection(const PanelState& state, PanelScratch& scratch, std::vector<Action>& actions);
 void extractionSection(const PanelState& state, std::vector<Action>& actions);
+void timeSection(const PanelState& state, std::vector<Action>& actions);
+void timePlot(const PanelState& state);  // the selected surface's area and volume over the steps seen
 void growthSection(const PanelState& state, std::vector<Action>& actions);
 void surfacesSection(const PanelState& state, PanelScratch& scratch, std::vector<Action>& actions);
 void viewSection(const PanelState& state, std::vector<Action>& actions);

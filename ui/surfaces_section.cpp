@@ -106,6 +106,7 @@ void selectedDetails(const SurfaceRow& row, const PanelState& state, PanelScratc
                     *row.borderLoops == 1 ? "" : "s");
     }
     if (row.persistence) ImGui::Text("contour-tree arc persistence %.5g", *row.persistence);
+    timePlot(state);
     ownIsoSlider(row, state, actions);
     std::array<float, 3> offset = row.offset;
     if (ImGui::DragFloat3("offset", offset.data(), 0.25f)) actions.push_back(SetOffset{row.id, offset});

@@ -69,6 +69,15 @@ void ActionHandler::apply(const ui::Action& action) {
                    [&](const ui::Delete& a) { scene_.remove(a.id); },
                    [&](const ui::Export& a) { exportSurface(a.id, a.path); },
                    [&](const ui::SetSurfaceIso& a) { extraction_.setSurfaceIso(a.id, a.iso); },
+                   [&](const ui::SetTimeStep& a) { time_.setStep(a.step); },
+                   [&](const ui::PlayTime& a) {
+                       if (a.play) {
+                           time_.play(a.steps);
+                       } else {
+                           time_.pause();
+                       }
+                   },
+                   [&](const ui::SetTimeSpeed& a) { time_.setSpeed(a.stepsPerSecond); },
                    [&](const ui::SetMinPersistence& a) {
                        extraction_.setMinPersistence(std::max(a.persistence, 0.0));
                        extraction_.submit();
@@ -118,6 +127,9 @@ void ActionHandler::applyKey(KeyCommand key) {
         case KeyCommand::DeleteSelected:
             if (selected) apply(ui::Delete{*selected});
             break;
+        case KeyCommand::TimePlayPause: time_.togglePlay(); break;
+        case KeyCommand::TimeBack: time_.stepBy(-1); break;
+        case KeyCommand::TimeForward: time_.stepBy(1); break;
         case KeyCommand::Quit: requests_.quit = true; break;
         case KeyCommand::Screenshot: {
             requests_.screenshotPath = "isotrack_screenshot_" + std::to_string(++requests_.screenshots) + ".png";

@@ -16,16 +16,19 @@
 #include "viewer/growth.h"
 #include "viewer/scene.h"
 #include "viewer/status_line.h"
+#include "viewer/time_player.h"
 
 namespace isotrack::viewer {
 
 class ActionHandler {
 public:
-    ActionHandler(ExtractionController& extraction, Scene& scene, Growth& growth, render::Camera& camera,
-                  const ui::Panel& panel, StatusLine& status, FrameRequests& requests, WorldFrame exportFrame)
+    ActionHandler(ExtractionController& extraction, Scene& scene, Growth& growth, TimePlayer& time,
+                  render::Camera& camera, const ui::Panel& panel, StatusLine& status, FrameRequests& requests,
+                  WorldFrame exportFrame)
         : extraction_(extraction),
           scene_(scene),
           growth_(growth),
+          time_(time),
           camera_(camera),
           panel_(panel),
           status_(status),
@@ -45,6 +48,7 @@ private:
     ExtractionController& extraction_;
     Scene& scene_;
     Growth& growth_;
+    TimePlayer& time_;
     render::Camera& camera_;
     const ui::Panel& panel_;
     StatusLine& status_;

@@ -35,6 +35,9 @@ void readKeys(const std::vector<KeyPress>& presses, std::vector<KeyCommand>& key
         {GLFW_KEY_E, KeyCommand::ExportSelected},
         {GLFW_KEY_W, KeyCommand::ToggleWireframe},
         {GLFW_KEY_G, KeyCommand::ToggleGrowthColour},
+        {GLFW_KEY_P, KeyCommand::TimePlayPause},
+        {GLFW_KEY_LEFT_BRACKET, KeyCommand::TimeBack},
+        {GLFW_KEY_RIGHT_BRACKET, KeyCommand::TimeForward},
     };
     for (const KeyPress& press : presses) {
         if (press.ctrl && press.key == GLFW_KEY_Q) keys.push_back(KeyCommand::Quit);

@@ -8,7 +8,8 @@
 //   alt + left drag: move the selected surface in the view plane
 //   keys: F frame selection, A frame all, Esc deselect, H hide, I isolate,
 //   S show all, Delete delete, E export, Space play/pause, N step growth,
-//   W wireframe, G colour by growth order, F12 screenshot, ctrl + Q quit
+//   W wireframe, G colour by growth order, P play/pause time, [ ] step back
+//   and forward in time, F12 screenshot, ctrl + Q quit
 #include <optional>
 #include <vector>
 
@@ -39,8 +40,11 @@ enum class KeyCommand {
     ExportSelected,
     ToggleWireframe,
     ToggleGrowthColour,
-    Screenshot,  // F12
-    Quit,        // ctrl + Q
+    TimePlayPause,  // P
+    TimeBack,       // [
+    TimeForward,    // ]
+    Screenshot,     // F12
+    Quit,           // ctrl + Q
 };
 
 struct ViewInput {

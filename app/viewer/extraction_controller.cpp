@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <set>
 
@@ -38,6 +39,20 @@ void continueSurface(SurfaceStructure& surface, NextSurface& next, double iso) {
     }
 }
 
+// A file's steps when it is a time series of several (read here: a .pvd or a
+// header, no samples); a file that cannot be read is the worker's to report.
+std::shared_ptr<const TimeSeries> seriesOf(const VolumeSource& source) {
+    if (source.kind != VolumeSource::Kind::File || source.raw || !source.series.empty()) return nullptr;
+    std::error_code error;
+    if (std::filesystem::is_directory(source.text, error)) return nullptr;
+    try {
+        auto series = std::make_shared<const TimeSeries>(readTimeSeries(source.text));
+        return series->steps.size() > 1 ? series : nullptr;
+    } catch (const std::exception&) {
+        return nullptr;
+    }
+}
+
 }  // namespace
 
 ExtractionController::ExtractionController(int threads, std::uint64_t memoryBudget, Scene& scene,
@@ -51,9 +66,26 @@ ExtractionController::ExtractionController(int threads, std::uint64_t memoryBudg
 
 void ExtractionController::setSource(VolumeSource source) {
     if (source != source_) confirmed_.clear();
+    if (!sameSeries(source, source_) || !series_) series_ = seriesOf(source);
     source_ = std::move(source);
     iso_.reset();
 }
+
+void ExtractionController::setTimeStep(std::size_t step) {
+    const std::size_t steps = series_ ? series_->steps.size() : 1;
+    if (step >= steps) {
+        throw InputError("time " + std::to_string(step) + ": " + displayName(source_) + " has " +
+                         std::to_string(steps) +
+                         (steps == 1 ? " step (0)" : " steps (0.." + std::to_string(steps - 1) + ")"));
+    }
+    if (step == source_.time) return;
+    // Each step's own suggestion would move the isovalue under the surfaces: the one shown stays.
+    if (!iso_ && scene_.volume() && scene_.volume()->valuesRead) iso_ = shownIso();
+    source_.time = step;
+    submit();
+}
+
+std::size_t ExtractionController::shownStep() const { return scene_.volume() ? scene_.volume()->source.time : 0; }
 
 void ExtractionController::load(VolumeSource source) {
     confirmation_.reset();
@@ -100,6 +132,9 @@ void ExtractionController::send(bool onlyOwnIsovalues) {
     request.work = ui::methodLabels(method_).work;
     request.minPersistence = minPersistence_;
     request.confirmed = confirmed_.count(method_) != 0;
+    request.series = series_;
+    const std::shared_ptr<const LoadedVolume>& shown = scene_.volume();
+    request.nextStep = shown && sameSeries(shown->source, source_) && shown->source.time != source_.time;
     if (!lastRequest_ || supersedes(request, *lastRequest_)) epoch_ = request.generation;
     lastRequest_ = request;
     request.surfaces = previousSurfaces(false);
@@ -163,7 +198,11 @@ void ExtractionController::applyResult(ExtractionResult result) {
         return;
     }
     error_.clear();
-    const bool newVolume = scene_.setVolume(result.volume);
+    // Another step of the series shown: the surfaces continue (by seed and footprint), the view stays.
+    const std::shared_ptr<const LoadedVolume> before = scene_.volume();
+    const bool anotherStep = before && sameSeries(before->source, result.volume->source) &&
+                             before->source.time != result.volume->source.time;
+    const bool newVolume = scene_.setVolume(result.volume) && !anotherStep;
     if (newVolume) reportSkipped(*result.volume);
     if (newVolume) {  // a new box, and the default view of it; nothing carries over
         renderer_.setBounds(scene_.volumeBounds());

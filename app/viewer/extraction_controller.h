@@ -54,7 +54,15 @@ public:
 
     // ---- what is wanted ----
     const VolumeSource& source() const { return source_; }
-    void setSource(VolumeSource source);                       // also back to the source's default isovalue
+    void setSource(VolumeSource source);  // also back to the source's default isovalue
+    // The source's time series when it has several steps (a .pvd, a 4D NIfTI
+    // or NRRD, numbered files), else null; read when the source is set.
+    const std::shared_ptr<const TimeSeries>& series() const { return series_; }
+    // Step `step` of the series, submitted; the isovalue shown stays (it is
+    // fixed now if it was the source's default). InputError past the last step.
+    void setTimeStep(std::size_t step);
+    // The step of the volume on screen (0 for a single volume).
+    std::size_t shownStep() const;
     const std::optional<double>& iso() const { return iso_; }  // nullopt: the source's default
     void setIso(double iso) { iso_ = iso; }
     TableKind table() const { return table_; }
@@ -116,6 +124,7 @@ private:
     std::function<void()> onNewVolume_;
 
     VolumeSource source_;
+    std::shared_ptr<const TimeSeries> series_;  // source_'s, when it has several steps
     std::optional<double> iso_;
     TableKind table_ = TableKind::Consistent;
     Method method_ = Method::All;

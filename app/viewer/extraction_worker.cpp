@@ -28,7 +28,7 @@ double msSince(Clock::time_point start) {
 }  // namespace
 
 bool supersedes(const ExtractionRequest& newer, const ExtractionRequest& older) {
-    return newer.source != older.source || newer.method != older.method || newer.table != older.table;
+    return !sameSeries(newer.source, older.source) || newer.method != older.method || newer.table != older.table;
 }
 
 ExtractionWorker::ExtractionWorker(int threads, std::uint64_t memoryBudget, std::size_t plotBranches)
@@ -52,7 +52,7 @@ void ExtractionWorker::submit(ExtractionRequest request) {
         std::lock_guard<std::mutex> lock(mutex_);
         if (running_ && supersedes(request, *running_)) cancel_ = true;
         if (finished_ && (finished_->method != request.method || finished_->table != request.table ||
-                          !finished_->volume || finished_->volume->source != request.source)) {
+                          !finished_->volume || !sameSeries(finished_->volume->source, request.source))) {
             finished_.reset();
         }
         // A flexible surface's request must not drop a waiting request for the whole scene.
@@ -172,7 +172,7 @@ std::shared_ptr<const LoadedVolume> ExtractionWorker::volumeFor(const Extraction
     setPhase(source.kind == VolumeSource::Kind::Field ? "building " + source.text : "loading " + displayName(source),
              0.0);
     const auto start = Clock::now();
-    std::shared_ptr<const LoadedVolume> loaded = cache_.load(source, request.iso.has_value());
+    std::shared_ptr<const LoadedVolume> loaded = cache_.load(source, request.iso.has_value(), request.series);
     loadMs = msSince(start);
     return loaded;
 }
@@ -192,6 +192,7 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
     follow.threads = threads_;
     follow.previous = request.surfaces;
     follow.onlyOwnIsovalues = request.onlyOwnIsovalues;
+    follow.nextStep = request.nextStep;
     follow.cancel = &cancel_;
     follow.progress = &follow_;
     const bool tree = request.method == Method::Tree && request.table == TableKind::Consistent;

@@ -69,6 +69,12 @@ struct ExtractionRequest {
     std::vector<PreviousSurface> surfaces;
     bool onlyOwnIsovalues = false;  // extract the surfaces with their own isovalue again, nothing else
     bool confirmed = false;         // mc, all or tree may read a volume over the memory budget
+    // A time series of several steps (source.text's), read one step ahead;
+    // null for a single volume.
+    std::shared_ptr<const TimeSeries> series;
+    // The surfaces are another time step's (FollowRequest::nextStep): matched
+    // by seed and footprint, not by arc.
+    bool nextStep = false;
 };
 
 struct ExtractionResult {
@@ -95,7 +101,8 @@ struct WorkerProgress {
 };
 
 // A newer request makes an older one's work pointless when it wants another
-// volume, method or table (a new isovalue or seed does not).
+// volume, method or table (a new isovalue, seed or time step does not: a step
+// of the series still shows while the next one is made).
 bool supersedes(const ExtractionRequest& newer, const ExtractionRequest& older);
 
 class ExtractionWorker {

@@ -49,6 +49,9 @@ const std::map<std::string, Syntax>& commands() {
         {"wait", {"", 0, {}}},
         {"confirm", {"", 0, {}}},
         {"sweep", {"NNI", 0, {}}},
+        {"time", {"I", 0, {}}},
+        {"play", {"I", 1, {}}},
+        {"speed", {"N", 0, {}}},
         {"screenshot", {"P", 0, {}}},
         {"profile", {"P", 0, {}}},
         {"checkpoint", {"W", 0, {}}},
@@ -192,6 +195,8 @@ void checkCommand(const Script& script, const ScriptCommand& command) {
         } catch (const InputError& e) {
             throw script.error(command, std::string("field: ") + e.what());
         }
+    } else if (command.name == "speed" && !(command.numbers[0] > 0.0)) {
+        throw script.error(command, "speed: steps per second must be more than 0");
     } else if (command.name == "sweep" && command.numbers[2] < 1.0) {
         throw script.error(command, "sweep: STEPS must be at least 1");
     }

@@ -20,6 +20,9 @@
 //                             panel's Extract), after any extraction in progress has finished;
 //                             an error when no extraction waits for it
 //   sweep FROM TO STEPS       set the isovalue on each of STEPS frames, FROM to TO
+//   time STEP                 a time series: show step STEP; waits until it is shown
+//   play [N]                  a time series: play N steps (or to the last); waits until played
+//   speed S                   playback speed, S steps per second
 //   screenshot PATH           the whole window, panel included, as PNG
 //   profile PATH              record a Chrome trace from here on, written at the end
 //   checkpoint NAME           note CPU, GPU and resident bytes for the --json summary

@@ -23,6 +23,7 @@ public:
     virtual bool sourceShown() const = 0;  // the scene holds the volume of the source asked for
     virtual bool hasVolume() const = 0;    // any volume is loaded
     virtual bool screenshotPending() const = 0;
+    virtual bool timePlaying() const = 0;  // a time series is being played
     virtual std::size_t surfaceCount() const = 0;
     virtual std::uint32_t surfaceId(std::size_t index) const = 0;  // index < surfaceCount()
 

@@ -1,6 +1,7 @@
 #include "viewer/script_runner.h"
 
 #include <algorithm>
+#include <optional>
 
 #include "isotrack/extract.h"
 #include "isotrack/fields.h"
@@ -79,6 +80,9 @@ bool ScriptRunner::waitDone() {
             ++sweepDone_;
             return false;
         }
+        case Wait::Play:
+            if (host_.timePlaying() || host_.extracting()) return false;
+            break;
         case Wait::Click:
             if (host_.extracting()) return false;
             wait_ = Wait::None;  // before clicking: a click that throws is not retried
@@ -152,6 +156,16 @@ bool ScriptRunner::runCommand(const ScriptCommand& c) {
         wait_ = Wait::Sweep;
         waitDone();  // the first step, this frame
         return false;
+    } else if (name == "time") {
+        host_.apply(ui::SetTimeStep{static_cast<std::size_t>(c.numbers[0])});
+        return waitFor(Wait::Loaded);
+    } else if (name == "play") {
+        const std::optional<std::size_t> steps =
+            c.numbers.empty() ? std::nullopt : std::optional<std::size_t>(static_cast<std::size_t>(c.numbers[0]));
+        host_.apply(ui::PlayTime{true, steps});
+        return waitFor(Wait::Play);
+    } else if (name == "speed") {
+        host_.apply(ui::SetTimeSpeed{static_cast<float>(c.numbers[0])});
     } else if (name == "screenshot") {
         host_.requestScreenshot(c.text);
         return waitFor(Wait::Screenshot);

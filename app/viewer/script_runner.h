@@ -44,7 +44,7 @@ public:
     ScriptError extractionError(const std::string& message) const;
 
 private:
-    enum class Wait { None, Frames, Idle, Loaded, Screenshot, Sweep, Click };
+    enum class Wait { None, Frames, Idle, Loaded, Screenshot, Sweep, Click, Play };
 
     bool waitDone();
     bool runCommand(const ScriptCommand& command);  // false: wait before the next one

@@ -17,6 +17,8 @@ bool SessionHost::hasVolume() const { return parts_.scene.volume() != nullptr; }
 
 bool SessionHost::screenshotPending() const { return parts_.requests.screenshotPath.has_value(); }
 
+bool SessionHost::timePlaying() const { return parts_.time.playing(); }
+
 std::size_t SessionHost::surfaceCount() const { return parts_.scene.surfaces().size(); }
 
 std::uint32_t SessionHost::surfaceId(std::size_t index) const { return parts_.scene.surfaces().at(index)->id(); }

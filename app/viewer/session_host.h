@@ -15,6 +15,7 @@
 #include "viewer/scene.h"
 #include "viewer/script_runner.h"
 #include "viewer/surface_clicks.h"
+#include "viewer/time_player.h"
 #include "viewer/view_layout.h"
 #include "viewer/viewer_report.h"
 
@@ -25,6 +26,7 @@ struct SessionParts {
     ExtractionController& extraction;
     Scene& scene;
     Growth& growth;
+    TimePlayer& time;
     ActionHandler& actions;
     SurfaceClicks& clicks;
     ViewerReport& report;
@@ -43,6 +45,7 @@ public:
     bool sourceShown() const override;
     bool hasVolume() const override;
     bool screenshotPending() const override;
+    bool timePlaying() const override;
     std::size_t surfaceCount() const override;
     std::uint32_t surfaceId(std::size_t index) const override;
 

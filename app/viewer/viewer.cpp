@@ -20,8 +20,9 @@ namespace {
 constexpr int kDeterministicCellsPerFrame = 4096;
 constexpr int kIdleFramesBeforeSleeping = 3;
 constexpr double kIdleWaitSeconds = 0.25;
-// While only the worker has something to do, frames come no faster than this,
-// so that the frame loop (and llvmpipe, and the X server) leave it the CPU.
+// While only the worker (or playback, waiting for its next step) has something
+// to do, frames come no faster than this, so that the frame loop (and llvmpipe,
+// and the X server) leave the worker the CPU.
 constexpr std::chrono::milliseconds kWaitingFramePeriod{16};
 
 int extractionThreads(int requested) { return requested > 0 ? requested : defaultInteractiveThreadCount(); }
@@ -39,17 +40,20 @@ Viewer::Viewer(const ViewerOptions& options, std::optional<Script> script)
       profiler_(gl::timerQueriesAvailable()),
       extraction_(extractionThreads(options.threads), memoryBudget(options.memoryBudgetGiB), scene_, *renderer_,
                   profiler_, status_),
+      time_(extraction_, scene_),
       clicks_(scene_, *renderer_, picker_, profiler_, extraction_, growth_, status_),
-      actionHandler_(extraction_, scene_, growth_, camera_, panel_, status_, requests_, options.frame),
-      report_(ReportSources{window_, *renderer_, profiler_, scene_, picker_, viewCache_, extraction_, growth_, status_,
-                            clicks_, layout_, totals_},
+      actionHandler_(extraction_, scene_, growth_, time_, camera_, panel_, status_, requests_, options.frame),
+      report_(ReportSources{window_, *renderer_, profiler_, scene_, picker_, viewCache_, extraction_, growth_, time_,
+                            status_, clicks_, layout_, totals_},
               options.deterministic),
-      host_(SessionParts{extraction_, scene_, growth_, actionHandler_, clicks_, report_, profiler_, camera_, layout_,
-                         requests_}) {
+      host_(SessionParts{extraction_, scene_, growth_, time_, actionHandler_, clicks_, report_, profiler_, camera_,
+                         layout_, requests_}) {
     if (options.methodGiven) extraction_.setMethodChosen();
     if (!options.volumePath.empty()) {
         VolumeSource source = VolumeSource::file(options.volumePath, options.raw);
         source.series = options.series;
+        source.array = options.array;
+        source.time = options.time;
         extraction_.setSource(source);
     } else {
         extraction_.setSource(VolumeSource::field(options.fieldSpec.empty() ? kDefaultField : options.fieldSpec));
@@ -84,7 +88,7 @@ int Viewer::run() {
         } else if (!idle()) {
             idleFrames_ = 0;
         }
-        if (extraction_.busy() && !(scene_.anyGrowing() && growth_.playing())) {
+        if ((extraction_.busy() || time_.playing()) && !(scene_.anyGrowing() && growth_.playing())) {
             std::this_thread::sleep_until(lastFrame + kWaitingFramePeriod);
         }
         lastFrame = Profiler::Clock::now();
@@ -96,7 +100,7 @@ int Viewer::run() {
 }
 
 bool Viewer::idle() const {
-    if (script_ || extraction_.busy() || (scene_.anyGrowing() && growth_.playing())) return false;
+    if (script_ || extraction_.busy() || time_.playing() || (scene_.anyGrowing() && growth_.playing())) return false;
     const ImGuiIO& io = ImGui::GetIO();
     return !(io.MouseDown[0] || io.MouseDown[1] || io.MouseDown[2]);
 }
@@ -161,6 +165,7 @@ void Viewer::frame() {
             script_->advance();
         }
         extraction_.takeResult();
+        time_.update();
         growth_.grow(scene_, profiler_);
         {
             Profiler::Scope scope(profiler_, Stage::Ui);
@@ -226,6 +231,7 @@ void Viewer::countFrame() {
         counters.arenaMovedBytes = arena.movedBytes;
     }
     profiler_.endFrame(counters);
+    time_.noteFrame(profiler_.lastFrameMs());
 }
 
 int runViewer(const ViewerOptions& options) {
@@ -235,12 +241,14 @@ int runViewer(const ViewerOptions& options) {
         std::error_code error;
         const bool folder = std::filesystem::is_directory(options.volumePath, error);
         std::FILE* file = folder ? nullptr : std::fopen(options.volumePath.c_str(), "rb");
-        if (!folder && file == nullptr) throw InputError("--volume " + options.volumePath + ": cannot open the file");
+        const bool numbered = !folder && file == nullptr && options.volumePath.find('%') != std::string::npos;
+        if (!folder && file == nullptr && !numbered)
+            throw InputError("--volume " + options.volumePath + ": cannot open the file");
         if (file) std::fclose(file);
         if (!options.raw && !volumeFormatOf(options.volumePath)) {
             throw InputError("--volume " + options.volumePath +
                              ": unknown volume format (the viewer reads .nrrd .nhdr .nii .nii.gz .mhd .mha .vtk .vti, "
-                             ".pvd (its first step), "
+                             ".pvd and numbered files (step_%04d.nrrd) as time series, "
                              "DICOM: .dcm, a folder or DICOMDIR; or raw samples with --dims and --type)");
         }
     }

@@ -8,6 +8,7 @@
 // meshes and grown ranges go to the GPU), ui (the panel from plain state, its
 // actions applied), draw (the scene, timed on the GPU too, then the panel),
 // present (swap). Every stage is timed by the Profiler.
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -38,6 +39,7 @@
 #include "viewer/session_host.h"
 #include "viewer/status_line.h"
 #include "viewer/surface_clicks.h"
+#include "viewer/time_player.h"
 #include "viewer/view_cache.h"
 #include "viewer/view_layout.h"
 #include "viewer/viewer_report.h"
@@ -49,6 +51,8 @@ struct ViewerOptions {
     std::string volumePath;
     std::optional<RawLayout> raw;  // --dims and friends: read volumePath as raw samples
     std::string series;            // --series: the DICOM series to read, empty for the default
+    std::string array;             // --array: a .vti's PointData array, empty for the first scalar one
+    std::size_t time = 0;          // --time: the time series' step to start at
     std::string fieldSpec;         // default when neither is given: kDefaultField
     std::optional<double> iso;
     TableKind table = TableKind::Consistent;
@@ -112,6 +116,7 @@ private:
     std::vector<ui::Action> actions_;
     Growth growth_;
     ExtractionController extraction_;
+    TimePlayer time_;
     SurfaceClicks clicks_;
     ActionHandler actionHandler_;
     ViewerReport report_;

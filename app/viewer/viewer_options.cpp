@@ -82,6 +82,8 @@ int runViewerCommand(const ViewerCommandLine& commandLine) {
     }
     const command_line::RawOptions& raw = *commandLine.raw;
     options.series = raw.series;
+    options.array = raw.array;
+    options.time = raw.time;
     if (!raw.dims.empty()) options.raw = command_line::rawLayout(raw);
     return runViewer(options);
 }

@@ -91,6 +91,7 @@ ui::PanelState ViewerReport::panelState() const {
         state.data.fields.push_back(ui::FieldChoice{field.name, field.defaultSize, field.description});
     }
     in_.scene.buildUI(state);
+    state.time = in_.time.panelState();
 
     ui::ExtractionState& extraction = state.extraction;
     extraction.iso = in_.extraction.currentIso();
@@ -248,6 +249,7 @@ nlohmann::json ViewerReport::summary() const {
         {"checkpoints", checkpoints_},
         {"picks", in_.clicks.picks()},
     };
+    if (in_.time.active()) summary["time"] = in_.time.summary();
     return summary;
 }
 

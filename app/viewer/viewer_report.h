@@ -17,6 +17,7 @@
 #include "viewer/scene.h"
 #include "viewer/status_line.h"
 #include "viewer/surface_clicks.h"
+#include "viewer/time_player.h"
 #include "viewer/view_cache.h"
 #include "viewer/view_layout.h"
 #include "viewer/window.h"
@@ -33,6 +34,7 @@ struct ReportSources {
     const ViewCache& viewCache;
     const ExtractionController& extraction;
     const Growth& growth;
+    const TimePlayer& time;
     const StatusLine& status;
     const SurfaceClicks& clicks;
     const ViewLayout& layout;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "isotrack/isovalue.h"
 #include "isotrack/source.h"
@@ -36,6 +37,35 @@ std::string displayName(const VolumeSource& source) {
 
 std::uint64_t defaultMemoryBudget() { return availableMemoryBytes() / 2; }
 
+namespace {
+
+// Range, histogram and default isovalue (`defaultIso` when the source has its
+// own, else core's suggestion), unless the volume is mapped and over the
+// budget: then nothing is read and the isovalue must be given.
+void describe(LoadedVolume& loaded, std::optional<double> defaultIso, bool isoGiven, std::uint64_t memoryBudget) {
+    if (loaded.mapped) {
+        loaded.mappedBytes = loaded.mapped->size();
+        loaded.overBudget = loaded.mappedBytes > memoryBudget;
+    }
+    if (loaded.overBudget) {
+        if (!isoGiven) throw overBudgetWithoutIso(loaded, memoryBudget);
+        loaded.valuesRead = false;
+        loaded.defaultIso = std::numeric_limits<double>::quiet_NaN();
+        return;
+    }
+    loaded.range = loaded.volume.range();
+    if (!std::isfinite(loaded.range[0])) throw InputError(loaded.source.text + ": no finite samples");
+    loaded.defaultIso = defaultIso ? *defaultIso : suggestIsovalue(loaded.volume, loaded.range);
+    loaded.histogram = histogramOf(loaded.volume, loaded.range);
+}
+
+}  // namespace
+
+bool sameSeries(const VolumeSource& a, VolumeSource b) {
+    b.time = a.time;
+    return a == b;
+}
+
 // The samples are read (range, histogram, and for a file core's suggested
 // isovalue) unless the volume is mapped and over the budget: then nothing is
 // read until an extraction goes there, and the isovalue must be given.
@@ -46,20 +76,20 @@ std::shared_ptr<LoadedVolume> loadForView(const VolumeSource& source, bool isoGi
     loaded->volume = std::move(read.volume);
     if (read.dicom) loaded->skipped = read.dicom->skipped;
     loaded->mapped = loaded->volume.mappedFile();
-    if (loaded->mapped) {
-        loaded->mappedBytes = loaded->mapped->size();
-        loaded->overBudget = loaded->mappedBytes > memoryBudget;
-    }
-    if (loaded->overBudget) {
-        if (!isoGiven) throw overBudgetWithoutIso(*loaded, memoryBudget);
-        loaded->valuesRead = false;
-        loaded->defaultIso = std::numeric_limits<double>::quiet_NaN();
-        return loaded;
-    }
-    loaded->range = loaded->volume.range();
-    if (!std::isfinite(loaded->range[0])) throw InputError(source.text + ": no finite samples");
-    loaded->defaultIso = read.defaultIso ? *read.defaultIso : suggestIsovalue(loaded->volume, loaded->range);
-    loaded->histogram = histogramOf(loaded->volume, loaded->range);
+    describe(*loaded, read.defaultIso, isoGiven, memoryBudget);
+    return loaded;
+}
+
+std::shared_ptr<LoadedVolume> loadStepForView(const VolumeSource& source, TimeStepReader& reader, bool isoGiven,
+                                              std::uint64_t memoryBudget) {
+    auto loaded = std::make_shared<LoadedVolume>();
+    loaded->source = source;
+    loaded->step = reader.load(source.time);
+    const Volume& step = *loaded->step;
+    loaded->volume = Volume::view(step.dims(), step.type(), step.bytes(), step.spacing(), step.origin());
+    loaded->volume.setDirection(step.direction());
+    loaded->mapped = step.mappedFile();
+    describe(*loaded, std::nullopt, isoGiven, memoryBudget);
     return loaded;
 }
 
@@ -67,13 +97,24 @@ std::shared_ptr<const LoadedVolume> VolumeCache::find(const VolumeSource& source
     return volume_ && volume_->source == source ? volume_ : nullptr;
 }
 
-std::shared_ptr<const LoadedVolume> VolumeCache::load(const VolumeSource& source, bool isoGiven) {
+std::shared_ptr<const LoadedVolume> VolumeCache::load(const VolumeSource& source, bool isoGiven,
+                                                      const std::shared_ptr<const TimeSeries>& series) {
     volume_.reset();  // the old volume goes before the new one is read
     tree_.reset();
     simplified_.reset();
     fullLayout_.reset();
     simplifiedLayout_.reset();
-    volume_ = loadForView(source, isoGiven, memoryBudget_);
+    if (!series || series->steps.size() < 2) {
+        reader_.reset();
+        volume_ = loadForView(source, isoGiven, memoryBudget_);
+        return volume_;
+    }
+    if (!reader_ || !sameSeries(source, readerOf_)) {
+        reader_.reset();
+        reader_ = std::make_unique<TimeStepReader>(*series, source.array);
+        readerOf_ = source;
+    }
+    volume_ = loadStepForView(source, *reader_, isoGiven, memoryBudget_);
     return volume_;
 }
 

@@ -20,12 +20,17 @@
 #include "isotrack/errors.h"
 #include "isotrack/mapped_file.h"
 #include "isotrack/source.h"
+#include "isotrack/time_series.h"
+#include "isotrack/time_step_reader.h"
 #include "isotrack/tree_layout.h"
 
 namespace isotrack::viewer {
 
 // What the panel calls a source: the field spec, or the file's name.
 std::string displayName(const VolumeSource& source);
+
+// The same data, perhaps at another time step.
+bool sameSeries(const VolumeSource& a, VolumeSource b);
 
 // A loaded volume and what the panel shows about it.
 struct LoadedVolume {
@@ -42,6 +47,9 @@ struct LoadedVolume {
     std::uint64_t mappedBytes = 0;
     bool overBudget = false;
     bool valuesRead = true;
+    // A time series' step (source.time): the step's volume, read by a
+    // TimeStepReader, whose samples `volume` views; null for a single volume.
+    std::shared_ptr<const Volume> step;
 };
 
 inline constexpr std::size_t kHistogramBins = 128;
@@ -51,6 +59,10 @@ inline constexpr std::size_t kHistogramBins = 128;
 // needs `isoGiven` (InputError naming the file, its size and the budget).
 std::shared_ptr<LoadedVolume> loadForView(const VolumeSource& source, bool isoGiven = false,
                                           std::uint64_t memoryBudget = std::numeric_limits<std::uint64_t>::max());
+// The same for step `source.time` of a time series already read by `reader`
+// (which prefetches the step after it meanwhile).
+std::shared_ptr<LoadedVolume> loadStepForView(const VolumeSource& source, TimeStepReader& reader, bool isoGiven,
+                                              std::uint64_t memoryBudget);
 
 // A volume over the budget has no default isovalue (it would read every
 // sample): the error that says so.
@@ -68,7 +80,11 @@ public:
     // The volume kept, when it is `source`'s; else null.
     std::shared_ptr<const LoadedVolume> find(const VolumeSource& source) const;
     // Loads `source` (loadForView); the volume kept and its trees go first.
-    std::shared_ptr<const LoadedVolume> load(const VolumeSource& source, bool isoGiven);
+    // With `series` (a time series of more than one step, source.text's), the
+    // step source.time comes from a TimeStepReader kept for the series, which
+    // reads the next step in the background meanwhile.
+    std::shared_ptr<const LoadedVolume> load(const VolumeSource& source, bool isoGiven,
+                                             const std::shared_ptr<const TimeSeries>& series = nullptr);
 
     bool hasTree() const { return tree_ != nullptr; }
     // Builds the volume's contour tree (progress: the build's; Cancelled through its cancel flag).
@@ -84,6 +100,8 @@ private:
     const std::uint64_t memoryBudget_;
     const std::size_t plotBranches_;
     std::shared_ptr<const LoadedVolume> volume_;
+    std::unique_ptr<TimeStepReader> reader_;         // the time series loaded last (readerOf_'s), one step ahead
+    VolumeSource readerOf_;                          // its source, time aside
     std::shared_ptr<const ContourTree> tree_;        // volume_'s
     std::shared_ptr<const ContourTree> simplified_;  // tree_ simplified by simplifiedBy_ (> 0)
     double simplifiedBy_ = 0.0;

@@ -137,3 +137,30 @@ TEST_CASE("a volume over the memory budget: unread values and the Extract / Canc
     CHECK(vertices(asking) > vertices(unread));
     CHECK(actions.empty());  // the question alone asks nothing of the viewer
 }
+
+TEST_CASE("a time series adds the Time section and the selected surface's plot", "[viewer][ui]") {
+    const HeadlessImGui imgui;
+    ui::Panel panel;
+    std::vector<ui::Action> actions;
+    ui::PanelState state = busyState();
+    ImGui::NewFrame();
+    panel.build(state, actions);
+    ImGui::Render();
+    const int without = ImGui::GetDrawData()->TotalVtxCount;
+    state.time.steps = 6;
+    state.time.step = 3;
+    state.time.shownStep = 2;
+    state.time.time = 0.75;
+    state.time.shownTime = 0.5;
+    state.time.playing = true;
+    state.time.plotSteps = {0, 1, 2};
+    state.time.area = {275.0f, 276.0f, 274.0f};
+    state.time.volume = {426.0f, 427.0f, 425.0f};
+    for (int frame = 0; frame < 2; ++frame) {
+        ImGui::NewFrame();
+        panel.build(state, actions);
+        ImGui::Render();
+    }
+    CHECK(actions.empty());
+    CHECK(ImGui::GetDrawData()->TotalVtxCount > without);
+}

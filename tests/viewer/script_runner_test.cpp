@@ -14,7 +14,7 @@ namespace {
 
 // Records what the runner asks; the waits look at the public flags.
 struct FakeHost : ScriptHost {
-    bool busy = false, growingNow = false, shown = true, volume = true, screenshot = false;
+    bool busy = false, growingNow = false, shown = true, volume = true, screenshot = false, playing = false;
     std::vector<std::uint32_t> ids;  // surface ids in list order
     std::vector<ui::Action> actions;
     std::vector<std::string> calls;
@@ -25,6 +25,7 @@ struct FakeHost : ScriptHost {
     bool sourceShown() const override { return shown; }
     bool hasVolume() const override { return volume; }
     bool screenshotPending() const override { return screenshot; }
+    bool timePlaying() const override { return playing; }
     std::size_t surfaceCount() const override { return ids.size(); }
     std::uint32_t surfaceId(std::size_t index) const override { return ids.at(index); }
 
@@ -266,4 +267,39 @@ TEST_CASE("an extraction error names the command that asked for it", "[viewer][s
     Session none("iso 1\n");
     none.frame();  // no request came from the script: the current command is named
     CHECK(std::string(none.runner.extractionError("cannot read").what()) == "s.isotrack:1: cannot read");
+}
+
+TEST_CASE("time waits until its step is shown; play until playback and extraction end", "[viewer][script]") {
+    Session s("speed 8\ntime 3\nplay 2\nplay\niso 1\n");
+    s.host.busy = true;
+    s.host.shown = false;
+    s.frame();
+    REQUIRE(s.host.actions.size() == 2);
+    CHECK(std::get<ui::SetTimeSpeed>(s.host.actions[0]).stepsPerSecond == 8.0f);
+    CHECK(std::get<ui::SetTimeStep>(s.host.actions[1]).step == 3);
+    s.host.busy = false;
+    s.frame();  // not shown yet
+    CHECK(s.host.actions.size() == 2);
+    s.host.shown = true;
+    s.host.playing = true;
+    s.frame();
+    REQUIRE(s.host.actions.size() == 3);
+    const auto& play = std::get<ui::PlayTime>(s.host.actions[2]);
+    CHECK(play.play);
+    CHECK(play.steps == std::optional<std::size_t>(2));
+    s.host.playing = false;
+    s.host.busy = true;  // the last step's extraction still running
+    s.frame();
+    CHECK(s.host.actions.size() == 3);
+    s.host.busy = false;
+    s.frame();
+    REQUIRE(s.host.actions.size() == 4);
+    CHECK_FALSE(std::get<ui::PlayTime>(s.host.actions[3]).steps.has_value());  // to the last step
+    s.host.playing = true;
+    s.frame();
+    CHECK(s.host.actions.size() == 4);
+    s.host.playing = false;
+    s.frame();
+    CHECK(isoValues(s.host.actions) == std::vector<double>{1.0});
+    CHECK(s.runner.finished());
 }

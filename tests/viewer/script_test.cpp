@@ -75,6 +75,18 @@ TEST_CASE("surface-iso takes a surface index and an isovalue", "[viewer][script]
     CHECK(errorOf("surface-iso x 0.4") == "s.isotrack:1: surface-iso: \"x\" is not a whole number >= 0");
 }
 
+TEST_CASE("time takes a step, play an optional count, speed steps per second", "[viewer][script]") {
+    const Script script = parseScriptText("time 3\nplay\nplay 4\nspeed 2.5\n", "s.isotrack");
+    REQUIRE(script.commands.size() == 4);
+    CHECK(script.commands[0].numbers == std::vector<double>{3});
+    CHECK(script.commands[1].numbers.empty());
+    CHECK(script.commands[2].numbers == std::vector<double>{4});
+    CHECK(script.commands[3].numbers == std::vector<double>{2.5});
+    CHECK(errorOf("time -1") == "s.isotrack:1: time: \"-1\" is not a whole number >= 0");
+    CHECK(errorOf("play 1 2") == "s.isotrack:1: play: expected 0 to 1 argument, got 2");
+    CHECK(errorOf("speed 0") == "s.isotrack:1: speed: steps per second must be more than 0");
+}
+
 TEST_CASE("script errors name the file and the line", "[viewer][script]") {
     CHECK(errorOf("iso 1\nfrobnicate\n") == "s.isotrack:2: unknown command \"frobnicate\"");
     CHECK(errorOf("\n\niso one\n") == "s.isotrack:3: iso: \"one\" is not a number");
