@@ -101,6 +101,12 @@ int summary(int argc, char** argv) {
         }
     }
     if (!(s["cpu_bytes"].get<double>() > 0) || !(s["gpu_bytes"].get<double>() > 0)) return fail("no CPU or GPU bytes");
+    // The frame counters docs/viewer.md names: a session that drew has uploaded.
+    if (!s.contains("frame_counters")) return fail("summary has no \"frame_counters\"");
+    for (const char* key : {"max_draw_calls", "max_triangles_drawn", "max_uploaded_bytes", "uploaded_bytes"}) {
+        if (!s["frame_counters"].contains(key)) return fail(std::string("frame_counters has no \"") + key + "\"");
+    }
+    if (!(s["frame_counters"]["uploaded_bytes"].get<double>() > 0)) return fail("frame_counters: nothing uploaded");
     for (int i = 3; i + 1 < argc; i += 2) {
         const std::string option = argv[i];
         const long value = std::atol(argv[i + 1]);
