@@ -93,3 +93,37 @@ TEST_CASE("parallelFor nested in a step, or on two threads at once, runs every i
         CHECK(failures.load() == 0);
     }
 }
+
+TEST_CASE("runTogether runs every part at once, on kept threads or, nested, on its own", "[core][parallel]") {
+    // Each part waits until all have started: it returns only if all run at once.
+    auto together = [](int count) {
+        std::atomic<int> started{0};
+        std::vector<std::atomic<int>> runs(static_cast<std::size_t>(count));
+        detail::runTogether(
+            count,
+            [&](int i) {
+                runs[std::size_t(i)].fetch_add(1);
+                started.fetch_add(1);
+                while (started.load() < count) std::this_thread::yield();
+            },
+            [] {});
+        for (const std::atomic<int>& r : runs) CHECK(r.load() == 1);
+    };
+    SECTION("alone") {
+        for (int count : {1, 2, 16, 3}) together(count);
+    }
+    SECTION("nested in a parallelFor step, the pool busy") {
+        detail::parallelFor(2, 2, [&](int) { together(5); });
+    }
+    SECTION("a part that throws is rethrown, and the others abandoned") {
+        std::atomic<bool> abandoned{false};
+        CHECK_THROWS_AS(detail::runTogether(
+                            4,
+                            [&](int i) {
+                                if (i == 2) throw std::runtime_error("part 2");
+                                while (!abandoned.load()) std::this_thread::yield();
+                            },
+                            [&] { abandoned.store(true); }),
+                        std::runtime_error);
+    }
+}

@@ -11,10 +11,11 @@
 // far ends of its edges are one load away however often the tracker crosses
 // block faces.
 //
-// Several threads may walk one surface. Each region belongs to one of them (in a
-// checkerboard of regions), the only thread that classifies, marks and queues
-// the region's cells; regions and blocks are published with a compare-and-swap,
-// each thread allocating from its own arena.
+// Several threads may walk one surface. The volume is cut into cubic tiles of
+// whole blocks, each walked by one of them (in a checkerboard of tiles, see
+// ownerShift), the only thread that classifies, marks and queues the tile's
+// cells; regions and blocks are published with a compare-and-swap, each thread
+// allocating from its own arena.
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -76,7 +77,8 @@ public:
     };
 
     SparseBlocks(const Dims& dims, int threads = 1)
-        : regionsX_((dims[0] + kRegionMask) >> kRegionShift),
+        : ownerShift_(ownerShift(dims, threads)),
+          regionsX_((dims[0] + kRegionMask) >> kRegionShift),
           regionsY_((dims[1] + kRegionMask) >> kRegionShift),
           regions_(std::size_t(regionsX_) * std::size_t(regionsY_) *
                    std::size_t((dims[2] + kRegionMask) >> kRegionShift)),
@@ -94,9 +96,34 @@ public:
     // on two threads.)
     static constexpr int kRegionShift = 2 * kShift;
     static constexpr int kRegionMask = (1 << kRegionShift) - 1;
-    // The thread walking the cells of the region holding grid point (x, y, z).
+    // The thread walking the cells of the tile holding grid point (x, y, z): the
+    // tiles' diagonal planes (x + y + z constant) are dealt out to the threads in
+    // turn, so that neighbouring tiles belong to different threads.
     int ownerAt(int x, int y, int z) const {
-        return ((x >> kRegionShift) + (y >> kRegionShift) + (z >> kRegionShift)) % threads_;
+        return ((x >> ownerShift_) + (y >> ownerShift_) + (z >> ownerShift_)) % threads_;
+    }
+
+    // The tile side (as a shift) for `threads` threads: the largest, from a
+    // region (64^3) down to a block (8^3), that cuts the volume into at least
+    // kPlanesPerThread diagonal planes per thread. Larger tiles send fewer
+    // pieces between threads; more planes share the surface out more evenly.
+    // On the CT skull (516k triangles), the busiest thread of 16 walked 4.9
+    // times the mean with 64^3 tiles (8 planes: half the threads had none),
+    // 1.24 times with 8^3 tiles, at 123k pieces sent against 13k.
+    static int ownerShift(const Dims& dims, int threads) {
+        for (int shift = kRegionShift; shift > kShift; --shift) {
+            if (diagonalPlanes(dims, shift) >= kPlanesPerThread * std::int64_t(threads)) return shift;
+        }
+        return kShift;
+    }
+
+    // A tile's side less one (the coordinates of points on a tile's lower faces have 0 in these bits).
+    int tileMask() const { return (1 << ownerShift_) - 1; }
+
+    // The most threads that the volume's size gives work to: kPlanesPerThread
+    // diagonal planes of blocks each, and at least one.
+    static int usefulThreads(const Dims& dims) {
+        return int(std::max<std::int64_t>(1, diagonalPlanes(dims, kShift) / kPlanesPerThread));
     }
 
     // The step in local index for a unit step along each axis.
@@ -159,6 +186,16 @@ private:
         return found;
     }
 
+    static constexpr int kPlanesPerThread = 4;
+
+    // How many diagonal planes of tiles of side 1 << shift cut the volume.
+    static std::int64_t diagonalPlanes(const Dims& dims, int shift) {
+        std::int64_t planes = 1;
+        for (const auto n : dims) planes += ((std::int64_t(n) - 1) >> shift);
+        return planes;
+    }
+
+    int ownerShift_;  // the side of a tile walked by one thread
     int regionsX_, regionsY_;
     std::vector<std::atomic<Region*>> regions_;
     std::vector<Arena> arenas_;

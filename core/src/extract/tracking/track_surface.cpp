@@ -39,7 +39,8 @@ Surface track(const Volume& volume, double iso, const GridEdge& seed, TableKind 
     if (table == TableKind::Trilinear) return detail::trackTrilinear(volume, iso, seed);
     if (table == TableKind::Snap) return detail::trackSnap(volume, iso, seed);
     const auto start = Clock::now();
-    threads = std::min(threads, kMaxTrackThreads);
+    // More threads than the volume's tiles can share out would only wait on one another.
+    threads = std::min({threads, kMaxTrackThreads, detail::SparseBlocks::usefulThreads(volume.dims())});
     const auto worker = makeWorker(volume, iso, table);
     checkSeed(volume, iso, *worker, seed);
     if (threads > 1) return walkTogether(volume, *worker, seed, table, threads, start);

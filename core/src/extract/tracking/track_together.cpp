@@ -1,9 +1,10 @@
 // Tracking one surface on several threads. Each thread walks the cells of its
-// own 64^3 regions (a checkerboard), with plain loads and stores: a piece
-// continuing into another thread's region is sent to that thread (Exchange),
-// and only vertices on edges between regions, which cells of several threads
+// own tiles (a checkerboard of 64^3 to 8^3 samples, smaller as threads are
+// more: SparseBlocks::ownerShift), with plain loads and stores: a piece
+// continuing into another thread's tile is sent to that thread (Exchange),
+// and only vertices on edges between tiles, which cells of several threads
 // share, are claimed with a compare-and-swap. The threads' parts are then
-// joined into one mesh, in parallel, and the triangles between regions measured.
+// joined into one mesh, in parallel, and the triangles between tiles measured.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -46,10 +47,11 @@ Surface walkTogether(const Volume& volume, const TrackWorker& worker, const Grid
         walkers[std::size_t(t)].thread = t;
         walkers[std::size_t(t)].idBase = static_cast<std::uint32_t>(std::uint64_t(t) << idShift);
         walkers[std::size_t(t)].indexMask = static_cast<std::uint32_t>((std::uint64_t(1) << idShift) - 1);
+        walkers[std::size_t(t)].tileMask = blocks.tileMask();
     }
     // The first cells are walked on this thread alone: a small surface is done
     // before more threads would pay for starting. What is left is handed to the
-    // walkers of the queued pieces' regions.
+    // walkers of the queued pieces' tiles.
     queueSeed(volume, seed, worker, blocks, walkers[0]);
     worker.advance(blocks, nullptr, walkers[0], kCellsAlone);
     if (walkers[0].queue.empty()) {
@@ -116,7 +118,7 @@ Surface walkTogether(const Volume& volume, const TrackWorker& worker, const Grid
     }
 
     // The first walker takes the others' figures, and measures the triangles
-    // between regions now that every corner is in place.
+    // between tiles now that every corner is in place.
     Walker& whole = walkers[0];
     for (std::size_t t = 0; t < walkers.size(); ++t) {
         if (t > 0) {

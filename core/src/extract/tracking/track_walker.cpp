@@ -15,10 +15,10 @@
 // created as the surface reaches them (sparse_blocks.h), so the cost follows the
 // surface, not the volume. extractAllSurfaces labels the exhaustive pass instead.
 //
-// On several threads, each thread walks the cells of its own 64^3 regions (a
+// On several threads, each thread walks the cells of its own tiles (a
 // checkerboard), with plain loads and stores: a piece continuing into another
-// thread's region is sent to that thread (Exchange), and only vertices on edges
-// between regions, which cells of several threads share, are claimed with a
+// thread's tile is sent to that thread (Exchange), and only vertices on edges
+// between tiles, which cells of several threads share, are claimed with a
 // compare-and-swap (track_together.cpp). The threads' parts are joined into one
 // mesh at the end.
 #include "extract/tracking/track_walker.h"
@@ -213,8 +213,8 @@ private:
     };
 
     // Walks the walker's queue for up to `cellBudget` cell pieces. Shared: other
-    // threads walk the other regions; pieces continuing there are sent to them,
-    // vertices on edges between regions are claimed atomically, and triangles
+    // threads walk the other tiles; pieces continuing there are sent to them,
+    // vertices on edges between tiles are claimed atomically, and triangles
     // with another thread's corners are measured once the walk is over.
     template <bool Shared>
     std::size_t walk(SparseBlocks& blocks, std::uint8_t* denseVisited, Walker& w, std::size_t cellBudget,
@@ -323,7 +323,7 @@ private:
     std::uint8_t configAt(std::size_t i) const { return grid_.cellConfig(i); }
 
     // Queues the piece holding `edge` of the cell at local index `cell` of `block`,
-    // whose first corner is `sample`; only the thread walking the cell's region does.
+    // whose first corner is `sample`; only the thread walking the cell's tile does.
     void enqueueIn(Walker& w, std::uint8_t* denseVisited, Block* block, int cell, std::size_t sample, int edge) const {
         if (block->config[std::size_t(cell)] == 0) block->config[std::size_t(cell)] = configAt(sample);
         const std::uint8_t c = block->config[std::size_t(cell)];
@@ -362,7 +362,7 @@ private:
     }
 
     // Computes the vertex of the cell's edge and records its id in `slot`. Shared,
-    // on an edge between regions (its cells may belong to several threads): when
+    // on an edge between tiles (its cells may belong to several threads): when
     // another thread recorded one first, the vertex is given back and its id used.
     template <bool Shared>
     std::uint32_t newVertex(Walker& w, MeshAppender& out, std::uint32_t& slot, const int at[3], int edge) const {
@@ -379,7 +379,7 @@ private:
             default: vertexAlong<2>(e.x, e.y, e.z, v); break;
         }
         const int p[3] = {e.x, e.y, e.z};
-        constexpr int m = SparseBlocks::kRegionMask;
+        const int m = w.tileMask;
         if (Shared && ((e.axis != 0 && (p[0] & m) == 0) || (e.axis != 1 && (p[1] & m) == 0) ||
                        (e.axis != 2 && (p[2] & m) == 0))) {
             std::uint32_t first = SparseBlocks::kNoVertex;

@@ -43,9 +43,10 @@ struct alignas(128) Walker {
     detail::SurfaceMeasure measure;
     PieceQueue queue;
     std::size_t cellsVisited = 0;
-    int thread = 0;                               // the regions it walks, and its arena in the sparse blocks
+    int thread = 0;                               // the tiles it walks, and its arena in the sparse blocks
     std::uint32_t idBase = 0;                     // thread << the width of an index
     std::uint32_t indexMask = ~std::uint32_t(0);  // the index bits of an id
+    int tileMask = SparseBlocks::kRegionMask;     // a tile's side less one: coordinates on tile seams have 0 here
     std::vector<std::size_t> unmeasured;          // triangles (first index) with another thread's corners
 };
 
@@ -69,7 +70,7 @@ public:
     // Walks on one thread for up to `cellBudget` cell pieces; returns how many it walked.
     virtual std::size_t advance(SparseBlocks& blocks, std::uint8_t* denseVisited, Walker& walker,
                                 std::size_t cellBudget) const = 0;
-    // Walks the walker's regions as one of several threads sharing `blocks`, until no piece is left.
+    // Walks the walker's tiles as one of several threads sharing `blocks`, until no piece is left.
     virtual void walkShared(SparseBlocks& blocks, Walker& walker, Exchange& exchange) const = 0;
     virtual std::uint8_t config(int x, int y, int z) const = 0;
     virtual bool crossed(const GridEdge& edge) const = 0;
@@ -91,7 +92,7 @@ void checkSeed(const Volume& volume, double iso, const TrackWorker& worker, cons
 Surface finishedSurface(Walker& walker, TableKind table);
 
 // Walks the surface from `seed` on `threads` threads, each walking its own
-// regions, then gathers their parts into one mesh (track_together.cpp).
+// tiles, then gathers their parts into one mesh (track_together.cpp).
 Surface walkTogether(const Volume& volume, const TrackWorker& worker, const GridEdge& seed, TableKind table,
                      int threads, Clock::time_point start);
 

@@ -173,7 +173,7 @@ void requireSameSurfaceOnThreads(const Volume& volume, double iso, const GridEdg
 }  // namespace
 
 TEST_CASE("several threads track the same surface as one", "[core][tracking]") {
-    // Threads walk regions of 64^3 samples: these surfaces cross the regions' seams.
+    // Threads walk tiles of 64^3 to 8^3 samples: these surfaces cross the seams at 64.
     SECTION("a sphere, closed, seeded on a seam") {
         const int n = 150;
         const Volume volume = makeField({"sphere", n});
