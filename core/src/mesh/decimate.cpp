@@ -6,7 +6,9 @@
 // open. meshopt_SimplifyLockBorder keeps the vertices on the mesh's border
 // where they are, so a surface the volume cut keeps its outline and a closed
 // one stays closed. The kept triangles index a subset of the vertices; the
-// unused ones are dropped, the rest keep their order and grid edges.
+// unused ones are dropped, the rest keep their order and grid edges. Collapses
+// can leave a triangle over three vertices on one line (the snap table's grid
+// points); it is flipped away (flip.h).
 #include <meshoptimizer.h>
 
 #include <limits>
@@ -15,6 +17,7 @@
 
 #include "isotrack/errors.h"
 #include "isotrack/mesh_processing.h"
+#include "mesh/flip.h"
 #include "mesh/manifold.h"
 #include "mesh/near_surface.h"
 #include "mesh/weld.h"
@@ -119,6 +122,7 @@ void decimateMesh(Mesh& mesh, double ratio, std::optional<double> maxError) {
     mesh.indices.assign(kept.begin(), kept.end());
     detail::dropUnusedVertices(mesh);
     detail::removeFinsAndSplitPinches(mesh);
+    detail::flipZeroAreaTriangles(mesh);
     recomputeNormals(mesh);
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "isotrack/mesh_processing.h"
+#include "mesh/flip.h"
 #include "mesh/mesh_edges.h"
 
 namespace isotrack {
@@ -16,7 +17,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 // Twice the area at or below this fraction of the longest side squared is zero
 // at float precision: the triangle's corners coincide or lie on one line.
-constexpr double kDegenerate = 1e-6;
+constexpr double kDegenerate = detail::kZeroAreaFraction;
 
 // The triangle's smallest angle in degrees (0 for a degenerate one).
 double smallestAngle(const float* p, const float* q, const float* r, bool& degenerate) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <set>
 
 #include "core/mesh/mesh_distance.h"
@@ -69,4 +70,57 @@ TEST_CASE("an error bound alone stops the decimation early", "[core][mesh]") {
     CHECK_THROWS_AS(decimateMesh(mesh, 1.5), InputError);
     CHECK_THROWS_AS(decimateMesh(mesh, 0.0), InputError);
     CHECK_THROWS_AS(decimateMesh(mesh, 0.5, -1.0), InputError);
+}
+
+namespace {
+
+// Triangles whose corners lie on one line, by the cross product, independently
+// of core's measure: twice the area at most 1e-6 of the longest side squared.
+std::size_t zeroAreaTriangles(const Mesh& mesh) {
+    std::size_t count = 0;
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        std::array<std::array<double, 3>, 3> p{};
+        for (int k = 0; k < 3; ++k)
+            for (int a = 0; a < 3; ++a) p[k][a] = mesh.vertices[mesh.indices[3 * t + std::size_t(k)]].position[a];
+        std::array<double, 3> u{}, w{};
+        double longest = 0.0;
+        for (int a = 0; a < 3; ++a) u[a] = p[1][a] - p[0][a], w[a] = p[2][a] - p[0][a];
+        for (int k = 0; k < 3; ++k) {
+            double l = 0.0;
+            for (int a = 0; a < 3; ++a) l += (p[(k + 1) % 3][a] - p[k][a]) * (p[(k + 1) % 3][a] - p[k][a]);
+            longest = std::max(longest, l);
+        }
+        const double cx = u[1] * w[2] - u[2] * w[1], cy = u[2] * w[0] - u[0] * w[2], cz = u[0] * w[1] - u[1] * w[0];
+        count += std::sqrt(cx * cx + cy * cy + cz * cz) <= 1e-6 * longest;
+    }
+    return count;
+}
+
+}  // namespace
+
+TEST_CASE("decimating a snapped integer ball leaves no zero-area triangle", "[core][mesh][snap]") {
+    // Integer samples, so many equal the isovalue and snap onto grid points:
+    // collapses then leave triangles over three grid points in a row.
+    const Dims dims{48, 48, 48};
+    Volume volume(dims, ScalarType::Int16);
+    for (int z = 0; z < dims[2]; ++z)
+        for (int y = 0; y < dims[1]; ++y)
+            for (int x = 0; x < dims[0]; ++x)
+                volume.setValue(x, y, z, std::round(20.0 - std::hypot(x - 23.8, y - 23.3, z - 23.4)));
+    ExtractRequest request;
+    request.iso = 0.0;
+    request.measure = true;
+    request.table = TableKind::Snap;
+    Surface surface = extract(volume, request).front();
+    REQUIRE(surface.stats.closed);
+    REQUIRE(zeroAreaTriangles(surface.mesh) == 0);
+    const Mesh original = surface.mesh;
+    MeshProcessing decimate;
+    decimate.decimateRatio = 0.1;
+    decimate.decimateError = 0.5;  // the CLI's default: half a voxel
+    processSurface(surface, decimate);
+    CHECK(zeroAreaTriangles(surface.mesh) == 0);
+    CHECK(surface.stats.closed);
+    CHECK(surface.mesh.triangleCount() < original.triangleCount() / 2);
+    CHECK(test::hausdorff(original, surface.mesh) < 1.0);
 }
