@@ -4,7 +4,8 @@ A 64^3 gyroid (`isotrack field gyroid:64 --out`, its samples read with numpy fro
 the raw NRRD, plus a ramp along x so that no axis swap or flip goes unseen) is written by vtkXMLImageDataWriter as ASCII, inline base64,
 appended raw and appended base64, uncompressed and zlib, with UInt32 and UInt64
 headers, as int16 and float64, and in sizes of one short zlib block and of a
-partial last block; `isotrack extract --method all --json` must
+partial last block, and at 128^3 (zlib appended, base64, ASCII: the size a
+ParaView user writes); `isotrack extract --method all --json` must
 give the same triangles, vertices and exported PLY bytes as the NRRD of the same samples. A second
 array chosen with --array is checked against its NRRD, and VTK 9's Direction
 with a WholeExtent not starting at 0 against VTK's own index-to-world transform.
@@ -124,6 +125,20 @@ for name, how in cases:
     print(f"{name}.vti:", got and got[:2])
     if got != reference:
         failures.append(f"{name}.vti: {got and got[:2]}, the NRRD gives {reference[:2]} (or the meshes differ)")
+
+# The size a ParaView user writes: 128^3, zlib-compressed appended, inline
+# base64 and ASCII, each against the NRRD of the same samples.
+run("field", "gyroid:128", "--out", "g128.nrrd")
+big = read_nrrd("g128.nrrd") + np.linspace(0.0, 0.4, 128, dtype=np.float32)[None, None, :]
+write_nrrd("g128_ramp.nrrd", big)
+big_reference = counts("g128_ramp.nrrd")
+for name, how in (("raw_zlib", dict(mode="appended", zlib=True, encode=False)),
+                  ("base64", dict(mode="binary")), ("ascii", dict(mode="ascii"))):
+    write_vti(f"g128_{name}.vti", image([("g", big)]), **how)
+    got = counts(f"g128_{name}.vti")
+    print(f"g128_{name}.vti:", got and got[:2])
+    if big_reference is None or got != big_reference:
+        failures.append(f"g128_{name}.vti: {got and got[:2]}, the NRRD gives {big_reference and big_reference[:2]}")
 
 # Other sample types, each against the NRRD of the same samples.
 for dtype, scale in (("int16", 1000.0), ("float64", 1.0)):
