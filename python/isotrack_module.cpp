@@ -89,7 +89,7 @@ double levelPy(const py::array& array, std::optional<double> level, bool withinR
 void toFrame(std::vector<Surface>& surfaces, const Geometry& geometry, const Volume& volume) {
     if (!geometry.frame) return;
     const FrameTransform transform = gridToFrame(volume, *geometry.frame);
-    for (Surface& surface : surfaces) surfaceToFrame(surface, transform);
+    for (Surface& surface : surfaces) transformSurface(surface, transform);
 }
 
 // What track and surfaces do to each surface: capping (an extraction from a

@@ -188,18 +188,6 @@ void reverseWinding(Mesh& mesh) {
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
 }
 
-void surfaceToFrame(Surface& surface, const FrameTransform& transform) {
-    if (transform.identity()) return;
-    transformMesh(surface.mesh, transform);
-    SurfaceStats& stats = surface.stats;
-    for (std::size_t v = 0; v < surface.mesh.vertices.size(); ++v)
-        for (std::size_t a = 0; a < 3; ++a) {
-            const double c = surface.mesh.vertices[v].position[a];
-            stats.boundsMin[a] = v == 0 ? c : std::min(stats.boundsMin[a], c);
-            stats.boundsMax[a] = v == 0 ? c : std::max(stats.boundsMax[a], c);
-        }
-}
-
 py::array vertexView(const Buffer<Vertex>& vertices, bool normals, bool zyx, py::handle owner) {
     if (vertices.empty()) return py::array_t<float>(std::vector<py::ssize_t>{0, 3});
     const float* first = normals ? vertices.front().normal : vertices.front().position;

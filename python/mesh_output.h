@@ -80,9 +80,6 @@ void removeDegenerateFaces(MeshOutput& out);
 // gradient_direction="ascent": every triangle wound the other way.
 void reverseWinding(Mesh& mesh);
 
-// Moves a surface into `transform`'s frame; bounds follow, area and enclosed volume stay.
-void surfaceToFrame(Surface& surface, const FrameTransform& transform);
-
 // (n, 3) float32 views over the positions or normals of `vertices`, in (z, y, x)
 // (read backwards) or (x, y, z); `owner` keeps them alive.
 py::array vertexView(const Buffer<Vertex>& vertices, bool normals, bool zyx, py::handle owner);

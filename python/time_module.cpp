@@ -67,15 +67,6 @@ py::object orNone(const std::optional<std::uint32_t>& value) {
     return value ? py::object(py::int_(*value)) : py::object(py::none());
 }
 
-const char* presenceName(Presence presence) {
-    switch (presence) {
-        case Presence::Shown: return "shown";
-        case Presence::Gone: return "gone";
-        case Presence::Merged: return "merged";
-    }
-    return "shown";
-}
-
 // One surface's record: the keys of track.json's (but "file"), and with
 // `meshes` its Surface (None unless shown), in the frame.
 py::dict surfaceRecord(StepSurface& s, bool meshes) {

@@ -22,15 +22,6 @@
 namespace isotrack::cli {
 namespace {
 
-const char* presenceName(Presence presence) {
-    switch (presence) {
-        case Presence::Shown: return "shown";
-        case Presence::Gone: return "gone";
-        case Presence::Merged: return "merged";
-    }
-    return "shown";
-}
-
 std::string numbered(const char* format, std::size_t n) {
     char text[48];
     std::snprintf(text, sizeof text, format, n);

@@ -164,19 +164,6 @@ std::vector<std::string> writeSurfaces(const ExtractOptions& options, const std:
     return files;
 }
 
-// A surface in the --frame: its mesh, and the bounds the summary reports (area
-// and enclosed volume stay in world units).
-void surfaceToFrame(Surface& surface, const FrameTransform& transform) {
-    if (transform.identity()) return;
-    transformMesh(surface.mesh, transform);
-    for (std::size_t v = 0; v < surface.mesh.vertices.size(); ++v)
-        for (std::size_t a = 0; a < 3; ++a) {
-            const double c = surface.mesh.vertices[v].position[a];
-            surface.stats.boundsMin[a] = v == 0 ? c : std::min(surface.stats.boundsMin[a], c);
-            surface.stats.boundsMax[a] = v == 0 ? c : std::max(surface.stats.boundsMax[a], c);
-        }
-}
-
 void countMesh(Extraction& out) {
     out.triangles = out.mesh.triangleCount();
     out.vertices = out.mesh.vertices.size();
@@ -209,7 +196,7 @@ Extraction extractOnce(const ExtractOptions& options, const Source& source, Tabl
     const FrameTransform transform = gridToFrame(source.volume, frame);
     std::vector<MeshQuality> quality;
     for (Surface& surface : run.surfaces) {
-        surfaceToFrame(surface, transform);
+        transformSurface(surface, transform);
         if (options.json && method != Method::Exhaustive && !surface.stats.euler) measureTopology(surface);
         if (options.json) quality.push_back(measureQuality(surface.mesh));
     }

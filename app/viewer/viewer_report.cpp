@@ -10,15 +10,6 @@ namespace {
 // The box's 24 line vertices.
 constexpr std::size_t kBoxBytes = 24 * 3 * sizeof(float);
 
-const char* presenceName(Presence presence) {
-    switch (presence) {
-        case Presence::Shown: return "shown";
-        case Presence::Gone: return "gone";
-        case Presence::Merged: return "merged";
-    }
-    return "shown";
-}
-
 nlohmann::json arenaJson(const render::ArenaStats& arena) {
     return {{"pages", arena.pages},
             {"capacity_bytes", arena.capacityBytes},

@@ -147,6 +147,9 @@ std::optional<Surface> surfaceAtOwnIsovalue(const ContourTree& tree, const Volum
 // Whether a surface shows a mesh at the new isovalue (or time step).
 enum class Presence { Shown, Gone, Merged };
 
+// "shown", "gone" or "merged": the name every front end reports (JSON, Python).
+const char* presenceName(Presence presence);
+
 // A surface's own isovalue (method tree).
 struct OwnIsovalue {
     double iso = 0.0;        // the isovalue it is wanted at

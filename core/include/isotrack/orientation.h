@@ -15,6 +15,7 @@
 #include <string>
 
 #include "isotrack/mesh.h"
+#include "isotrack/surface.h"
 #include "isotrack/volume.h"
 
 namespace isotrack {
@@ -72,5 +73,10 @@ FrameTransform gridToFrame(const Volume& volume, WorldFrame frame);
 // each triangle's last two corners swap so that its winding keeps agreeing with
 // the normals. An identity transform leaves the mesh untouched, bit for bit.
 void transformMesh(Mesh& mesh, const FrameTransform& transform);
+
+// A surface in the frame: its mesh (transformMesh) and the bounds reported with
+// it; area and enclosed volume stay in world units. Every front end that writes
+// surfaces in a frame (extract --frame, --all-times, Python) calls this.
+void transformSurface(Surface& surface, const FrameTransform& transform);
 
 }  // namespace isotrack

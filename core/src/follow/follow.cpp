@@ -244,4 +244,13 @@ std::vector<int> matchSurfaces(const std::vector<const SurfaceFootprint*>& previ
     return match;
 }
 
+const char* presenceName(Presence presence) {
+    switch (presence) {
+        case Presence::Shown: return "shown";
+        case Presence::Gone: return "gone";
+        case Presence::Merged: return "merged";
+    }
+    return "shown";
+}
+
 }  // namespace isotrack

@@ -15,22 +15,7 @@
 #include "isotrack/tracking.h"
 
 namespace isotrack {
-namespace {
-
-// The mesh, and the bounds reported with it, in the frame (after its footprint was taken).
-void toFrame(Surface& surface, const FrameTransform& transform) {
-    if (transform.identity()) return;
-    transformMesh(surface.mesh, transform);
-    SurfaceStats& stats = surface.stats;
-    for (std::size_t v = 0; v < surface.mesh.vertices.size(); ++v)
-        for (std::size_t a = 0; a < 3; ++a) {
-            const double c = surface.mesh.vertices[v].position[a];
-            stats.boundsMin[a] = v == 0 ? c : std::min(stats.boundsMin[a], c);
-            stats.boundsMax[a] = v == 0 ? c : std::max(stats.boundsMax[a], c);
-        }
-}
-
-}  // namespace
+namespace {}  // namespace
 
 SurfaceTimeline::SurfaceTimeline(TimeFollowOptions options) : options_(std::move(options)) {
     const Method method = options_.method;
@@ -106,7 +91,7 @@ StepSurfaces SurfaceTimeline::next(const Volume& volume, double time) {
             surface.arc = n.surface->stats.arc;
             footprint = std::move(n.footprint);
             record.surface = std::move(n.surface);
-            toFrame(*record.surface, transform);
+            transformSurface(*record.surface, transform);
         }
         kept.push_back(surface);
         keptFootprints.push_back(std::move(footprint));

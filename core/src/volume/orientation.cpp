@@ -174,4 +174,16 @@ void transformMesh(Mesh& mesh, const FrameTransform& transform) {
             std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
 }
 
+void transformSurface(Surface& surface, const FrameTransform& transform) {
+    if (transform.identity()) return;
+    transformMesh(surface.mesh, transform);
+    SurfaceStats& stats = surface.stats;
+    for (std::size_t v = 0; v < surface.mesh.vertices.size(); ++v)
+        for (std::size_t a = 0; a < 3; ++a) {
+            const double c = surface.mesh.vertices[v].position[a];
+            stats.boundsMin[a] = v == 0 ? c : std::min(stats.boundsMin[a], c);
+            stats.boundsMax[a] = v == 0 ? c : std::max(stats.boundsMax[a], c);
+        }
+}
+
 }  // namespace isotrack
