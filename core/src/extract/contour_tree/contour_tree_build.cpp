@@ -76,8 +76,12 @@ void sweep(const T* values, const Dims& dims, const Buffer<std::uint32_t>& order
     const SampleOrder<T> cmp{values};
     const Neighbours neighbours{dims};
     constexpr std::uint8_t kCandidate = Up ? kJoinCandidate : kSplitCandidate;
-    std::int64_t offset[kCandidate];
-    for (std::uint8_t c = 1; c < kCandidate; ++c) offset[c] = neighbourOffset(dims, std::uint8_t(c - 1));
+    // A class names a position of the 6 (join) or 18 (split) neighbours; classes
+    // between those and kCandidate never occur.
+    std::int64_t offset[kCandidate] = {};
+    for (std::uint8_t c = 1; c < kCandidate && c <= kNeighbourPositions; ++c) {
+        offset[c] = neighbourOffset(dims, std::uint8_t(c - 1));
+    }
     auto classOf = [&](std::uint32_t s) { return std::uint8_t(Up ? classes[s] & 7u : classes[s] >> 3); };
     auto rankAt = [&](std::uint32_t step) { return Up ? n - 1 - step : step; };
     Buffer<std::uint32_t> forest(n);  // by sample; a root holds the rank of its newest sample

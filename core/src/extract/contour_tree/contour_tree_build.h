@@ -180,6 +180,8 @@ void sortByKey(std::vector<std::uint32_t>& items, Key&& key) {
 // joining exactly the component of its neighbour at position c - 1
 // (neighbourOffset).
 constexpr std::uint8_t kJoinCandidate = 7, kSplitCandidate = 31;
+// The neighbour positions a class may name: the 6 faces, then the 12 edges.
+constexpr std::uint8_t kNeighbourPositions = 18;
 Buffer<std::uint8_t> classifySamples(const Volume& volume, int threads);
 // The index offset of neighbour position p (0-5 the faces -x +x -y +y -z +z, then the edges).
 std::int64_t neighbourOffset(const Dims& dims, std::uint8_t position);

@@ -19,6 +19,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <thread>
 #include <type_traits>
 
@@ -27,7 +29,7 @@
 namespace isotrack::detail {
 namespace {
 
-constexpr int kPositions = 18;
+constexpr int kPositions = kNeighbourPositions;
 
 // The 18 positions: the 6 faces (-x +x -y +y -z +z), then the 12 edges.
 constexpr std::array<std::array<int, 3>, kPositions> kPosition = [] {
@@ -198,6 +200,8 @@ void classifyRange(const T* values, const Dims& dims, int z0, int z1, Buffer<std
 }  // namespace
 
 std::int64_t neighbourOffset(const Dims& dims, std::uint8_t position) {
+    if (position >= kPositions)
+        throw std::logic_error("neighbourOffset: no neighbour position " + std::to_string(position));
     const auto& p = kPosition[position];
     return p[0] + std::int64_t(p[1]) * dims[0] + std::int64_t(p[2]) * dims[0] * dims[1];
 }
