@@ -236,7 +236,11 @@ Volume readSamples(const VolumeHeader& header, const SampleData& data) {
         if (afterSkip < needed) refuse(holder + " has only " + std::to_string(afterSkip) + " (truncated?)");
         if (afterSkip > needed && !data.trailingBytesAllowed)
             refuse(holder + " has " + std::to_string(afterSkip) + " (the sizes disagree)");
-        if (data.bigEndian == hostIsBigEndian()) {
+        // Samples that start at a multiple of their size in the file: a mapped
+        // view of them is aligned for their type. Others (an attached header of
+        // odd length) are read into memory, as are samples in the other byte order.
+        const bool alignedInFile = (data.offset + data.skip) % scalarTypeSize(header.type) == 0;
+        if (data.bigEndian == hostIsBigEndian() && alignedInFile) {
             // In the host's order: mapped where it lies, never copied (isotrack/mapped_file.h).
             file.reset();
             Volume volume =
@@ -246,12 +250,13 @@ Volume readSamples(const VolumeHeader& header, const SampleData& data) {
             volume.setDirection(header.direction);
             return volume;
         }
-        requireMemoryFor(header, needed, "byte-swapped");
+        const bool swap = data.bigEndian != hostIsBigEndian();
+        requireMemoryFor(header, needed, swap ? "byte-swapped" : "unaligned in the file");
         Volume volume(header.dims, header.type, header.spacing, header.origin);
         volume.setDirection(header.direction);
         seekTo(f, data.offset + data.skip, where);
         readExact(f, volume.bytes(), needed, where);
-        swapBytes(volume.bytes(), volume.sampleCount(), scalarTypeSize(header.type));
+        if (swap) swapBytes(volume.bytes(), volume.sampleCount(), scalarTypeSize(header.type));
         return volume;
     }
 

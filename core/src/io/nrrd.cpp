@@ -421,6 +421,11 @@ void writeNrrd(const Volume& volume, const std::string& path) {
     std::snprintf(buf, sizeof buf, "space origin: (%.17g,%.17g,%.17g)\n", o[0], o[1], o[2]);
     header += buf;
     header += "endian: little\nencoding: raw\n\n";
+    // The samples start at a multiple of 8 bytes (the comment line padded), so
+    // a reader maps them aligned for their type (io_common.cpp reads
+    // unaligned samples into memory instead).
+    const std::size_t comment = std::string("NRRD0004\n# written by isotrack").size();
+    header.insert(comment, (8 - header.size() % 8) % 8, ' ');
     f.write(header);
 
     const std::size_t width = scalarTypeSize(volume.type());

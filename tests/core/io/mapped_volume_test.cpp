@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <string>
@@ -60,6 +61,29 @@ TEST_CASE("a raw file is mapped, not copied, and gives the surfaces memory gives
     RawLayout big = floatLayout(64);
     big.bigEndian = true;
     CHECK(loadRaw(dir.file("ball.raw"), big).mappedFile() == nullptr);
+}
+
+TEST_CASE("samples at an odd offset are read into memory, aligned; isotrack's own NRRD is mapped",
+          "[core][io][mapped]") {
+    TempDir dir;
+    const Volume ball = ballVolume(24, 11.0, 6.0);
+    // An attached header of 83 bytes: float samples at an offset no multiple of 4.
+    std::string header = "NRRD0004\ntype: float\ndimension: 3\nsizes: 24 24 24\nendian: little\nencoding: raw\n";
+    header += std::string(83 - 2 - header.size(), '#') + "\n\n";
+    REQUIRE(header.size() == 83);
+    const std::string odd = dir.file("odd.nrrd");
+    isotrack::testing::writeFile(odd,
+                                 header + std::string(reinterpret_cast<const char*>(ball.bytes()), ball.byteSize()));
+    const Volume read = loadVolume(odd);
+    CHECK(read.mappedFile() == nullptr);
+    CHECK(reinterpret_cast<std::uintptr_t>(read.bytes()) % alignof(float) == 0);
+    CHECK(std::memcmp(read.bytes(), ball.bytes(), ball.byteSize()) == 0);
+    // writeNrrd pads its header to a multiple of 8: what it writes is mapped.
+    writeNrrd(ball, dir.file("own.nrrd"));
+    const Volume own = loadVolume(dir.file("own.nrrd"));
+    CHECK(own.mappedFile() != nullptr);
+    CHECK(reinterpret_cast<std::uintptr_t>(own.bytes()) % 8 == 0);
+    CHECK(std::memcmp(own.bytes(), ball.bytes(), ball.byteSize()) == 0);
 }
 
 TEST_CASE("tracking reads only the pages its surface crosses", "[core][io][mapped]") {
