@@ -171,7 +171,8 @@ def marching_cubes(
         mask: an array of the volume's shape; a cell is marched only where the
             mask is true at its corner of highest indices, as in scikit-image.
         table: "consistent" (isotrack's, no holes between cells), "classic",
-            or "trilinear" (the trilinear interpolant's topology, MC33).
+            "trilinear" (the trilinear interpolant's topology, MC33) or "snap"
+            (the 3-state table: samples near the level snapped onto it).
         threads: threads to use; 0 uses every core. With more than one, the
             vertices and triangles come in another order; they are the same.
         origin: the (z, y, x) position of sample [0, 0, 0] of a raw array.
@@ -267,7 +268,7 @@ def track(
             array indices for either kind of volume: the edge from
             samples[z, y, x] one step along axis (0: z, 1: y, 2: x).
         spacing, origin: of a raw array, in (z, y, x), as for marching_cubes.
-        table: "consistent", "classic" or "trilinear".
+        table: "consistent", "classic", "trilinear" or "snap", as for marching_cubes.
         threads: threads to use (at most 64); 0 uses every core.
         cap, smooth, passband, decimate, decimate_error: mesh processing,
             applied in that order (see surfaces).
