@@ -10,6 +10,13 @@
 namespace isotrack::ui {
 namespace {
 
+// Before a radio button in a row: on the same line when the panel has room for it, else on a line of its own.
+void sameLineIfRoom(const char* label) {
+    const float width = ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label).x;
+    ImGui::SameLine();
+    if (ImGui::GetContentRegionAvail().x < width) ImGui::NewLine();
+}
+
 void progress(const ExtractionState& extraction, bool frozen) {
     if (!extraction.busy) {
         ImGui::Text("last extraction %s", formatMs(extraction.lastMs, frozen).c_str());
@@ -79,7 +86,7 @@ void extractionSection(const PanelState& state, std::vector<Action>& actions) {
     int table = static_cast<int>(extraction.table);
     ImGui::TextUnformatted("table");
     for (const Table kind : kTableKinds) {
-        ImGui::SameLine();
+        sameLineIfRoom(tableName(kind));
         if (ImGui::RadioButton(tableName(kind), &table, static_cast<int>(kind))) actions.push_back(SetTable{kind});
         if (kind == Table::Trilinear && ImGui::IsItemHovered())
             ImGui::SetTooltip("the trilinear interpolant's topology (MC33)");
@@ -92,13 +99,7 @@ void extractionSection(const PanelState& state, std::vector<Action>& actions) {
     bool first = true;
     for (const Method choice : {Method::Exhaustive, Method::All, Method::Track, Method::Tree}) {
         const MethodLabels& labels = methodLabels(choice);
-        if (!first) {
-            // A choice goes on a line of its own when the panel is too narrow for it.
-            const float width =
-                ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(labels.choice).x;
-            ImGui::SameLine();
-            if (ImGui::GetContentRegionAvail().x < width) ImGui::NewLine();
-        }
+        if (!first) sameLineIfRoom(labels.choice);
         first = false;
         if (ImGui::RadioButton(labels.choice, &method, static_cast<int>(choice))) actions.push_back(SetMethod{choice});
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", labels.tooltip);

@@ -1,6 +1,7 @@
 // The panel is plain state in, actions out: it builds with an ImGui context and
 // no renderer backend, no window and no GL, and asks for nothing by itself.
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include <catch2/catch.hpp>
 
@@ -69,6 +70,23 @@ TEST_CASE("the panel builds from plain state and records no actions by itself", 
     panel.build(ui::PanelState{}, actions);  // nothing loaded yet
     ImGui::Render();
     CHECK(actions.empty());
+}
+
+TEST_CASE("the panel's rows fit its width: radio rows wrap instead of running off the edge", "[viewer][ui]") {
+    const HeadlessImGui imgui;
+    ui::Panel panel;
+    std::vector<ui::Action> actions;
+    ui::PanelState state = busyState();
+    state.extraction.busy = false;
+    for (int frame = 0; frame < 3; ++frame) {  // later frames lay out with the earlier ones' sizes
+        ImGui::NewFrame();
+        panel.build(state, actions);
+        ImGui::Render();
+    }
+    const ImGuiWindow* window = ImGui::FindWindowByName("isotrack");
+    REQUIRE(window != nullptr);
+    // The widest thing placed in the panel's window, against the room the window gives its contents.
+    CHECK(window->ContentSize.x <= window->ContentRegionRect.GetWidth() + 0.5f);
 }
 
 TEST_CASE("panel text helpers", "[viewer][ui]") {
