@@ -58,15 +58,20 @@ TEST_CASE("smoothing flattens the terraces of a segmented ball", "[core][mesh]")
     for (int z = 0; z < 32; ++z)
         for (int y = 0; y < 32; ++y)
             for (int x = 0; x < 32; ++x) mask.setValue(x, y, z, std::hypot(x - c[0], y - c[1], z - c[2]) <= r ? 1 : 0);
-    Surface surface = exhaustive(mask, 0.5);
-    REQUIRE(surface.stats.closed);
-    const double before = *surface.stats.enclosedVolume, angleBefore = meanDihedralAngle(surface.mesh);
-    MeshProcessing smooth;
-    smooth.smoothIterations = 20;
-    processSurface(surface, smooth);
-    REQUIRE(surface.stats.closed);
-    CHECK(*surface.stats.enclosedVolume == Approx(before).epsilon(0.01));
-    CHECK(meanDihedralAngle(surface.mesh) < 0.5 * angleBefore);
+    const Surface extracted = exhaustive(mask, 0.5);
+    REQUIRE(extracted.stats.closed);
+    const double before = *extracted.stats.enclosedVolume, angleBefore = meanDihedralAngle(extracted.mesh);
+    // Unbounded, and within the front ends' default tolerance (half a voxel).
+    for (const bool bounded : {false, true}) {
+        Surface surface = extracted;
+        MeshProcessing smooth;
+        smooth.smoothIterations = 20;
+        if (bounded) applyVolumeDefaults(smooth, mask);
+        processSurface(surface, smooth);
+        REQUIRE(surface.stats.closed);
+        CHECK(*surface.stats.enclosedVolume == Approx(before).epsilon(0.01));
+        CHECK(meanDihedralAngle(surface.mesh) < 0.5 * angleBefore);
+    }
 }
 
 TEST_CASE("smoothing holds the border of a cut surface fixed", "[core][mesh]") {
