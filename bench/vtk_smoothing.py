@@ -7,11 +7,13 @@ Smooths the mesh with Debian's VTK (python3-vtk9; 9.1 windows with Hamming)
 as `isotrack extract --smooth` is documented to (boundary vertices fixed, no
 feature edges, coordinates normalized), and prints the enclosed volume and the
 mean dihedral angle (radians, between the normals of triangles sharing an edge)
-before and after.
+before and after, and the Hausdorff distance between the two, sampled at the
+vertices, edge midpoints and centres (an upper bound within about half an edge).
 """
 import sys
 
 import numpy as np
+from scipy.spatial import cKDTree
 import vtk
 from vtk.util import numpy_support
 
@@ -46,6 +48,15 @@ def mean_dihedral(v, f):
     return np.arccos(np.clip((n[a[keep]] * n[b[keep]]).sum(axis=1), -1, 1)).mean()
 
 
+def sampled_hausdorff(v, w, f):
+    def samples(x):
+        p = [x[f[:, i]] for i in range(3)]
+        return np.vstack([x, (p[0] + p[1] + p[2]) / 3, (p[0] + p[1]) / 2, (p[1] + p[2]) / 2, (p[2] + p[0]) / 2])
+
+    s, t = samples(v), samples(w)
+    return max(cKDTree(t).query(s)[0].max(), cKDTree(s).query(t)[0].max())
+
+
 def main():
     v, f = read_ply(sys.argv[1])
     iterations = int(sys.argv[2]) if len(sys.argv) > 2 else 20
@@ -71,6 +82,7 @@ def main():
     print(f"VTK {vtk.vtkVersion.GetVTKVersion()}, {iterations} iterations, pass band {passband}")
     print(f"enclosed volume {enclosed_volume(v, f):.1f} -> {enclosed_volume(out, f):.1f}")
     print(f"mean dihedral angle {mean_dihedral(v, f):.4f} -> {mean_dihedral(out, f):.4f} rad")
+    print(f"Hausdorff distance (sampled) {sampled_hausdorff(v, out, f):.3f}")
 
 
 if __name__ == "__main__":

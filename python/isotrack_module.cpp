@@ -108,7 +108,7 @@ Processing processingOf(bool cap, int smooth, double passband, double decimate,
     p.mesh.passband = passband;
     p.mesh.decimateRatio = decimate;
     p.mesh.decimateError = decimateError;
-    if (decimate < 1.0 && !decimateError) p.mesh.decimateError = defaultDecimateError(volume);
+    applyVolumeDefaults(p.mesh, volume);
     checkMeshProcessing(p.mesh);
     return p;
 }

@@ -181,8 +181,7 @@ Extraction extractOnce(const ExtractOptions& options, const Source& source, Tabl
     request.largestArcs = options.largestArcs;
     request.cap = options.cap;
     MeshProcessing processing = options.processing;
-    if (processing.decimateRatio < 1.0 && !processing.decimateError)
-        processing.decimateError = defaultDecimateError(source.volume);
+    applyVolumeDefaults(processing, source.volume);
     TimedExtraction run = extractTimed(source.volume, request);
     Extraction out;
     out.seconds.push_back(run.seconds);
@@ -409,12 +408,13 @@ int runExtract(const ExtractOptions& options) {
         report["cap"] = options.cap;
         report["smooth"] = options.processing.smoothIterations;
         report["passband"] = options.processing.passband;
+        // The bounds processing used: the options', else core's defaults.
+        MeshProcessing used = options.processing;
+        applyVolumeDefaults(used, source.volume);
+        report["smooth_tolerance"] =
+            used.smoothTolerance ? nlohmann::json(*used.smoothTolerance) : nlohmann::json(nullptr);
         report["decimate"] = options.processing.decimateRatio;
-        // The bound decimation used: --decimate-error, else core's default.
-        std::optional<double> decimateError = options.processing.decimateError;
-        if (options.processing.decimateRatio < 1.0 && !decimateError)
-            decimateError = defaultDecimateError(source.volume);
-        report["decimate_error"] = decimateError ? nlohmann::json(*decimateError) : nlohmann::json(nullptr);
+        report["decimate_error"] = used.decimateError ? nlohmann::json(*used.decimateError) : nlohmann::json(nullptr);
         report["process_seconds"] = result.processSeconds;
         if (result.quality) report["quality"] = qualityJson(*result.quality);
         if (!options.out.empty()) report["out"] = options.out;
@@ -510,7 +510,8 @@ RunCommand addExtractCommand(CLI::App& app) {
                       "samples below --iso (its smallest sample)");
     command
         ->add_option("--smooth", options->processing.smoothIterations,
-                     "Smooth each surface: N iterations of windowed-sinc smoothing (no shrinkage; borders fixed)")
+                     "Smooth each surface: N iterations of windowed-sinc smoothing (no shrinkage; borders fixed; "
+                     "no vertex moves over half the smallest spacing)")
         ->check(CLI::Range(0, 1000));
     command
         ->add_option("--passband", options->processing.passband,

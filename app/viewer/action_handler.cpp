@@ -159,15 +159,14 @@ void ActionHandler::frameCamera(bool selectionOnly) {
 // the mesh leaves the grid the view draws in for --frame (LPS world by default),
 // through the same transform, so the file equals extract's for the same surface.
 // Smoothing and decimation of one surface, with the command line's defaults
-// (core's defaultDecimateError for the volume shown).
+// (core's applyVolumeDefaults for the volume shown).
 void ActionHandler::processMesh(const ui::ProcessMesh& request) {
     SurfaceStructure* surface = scene_.find(request.id);
     if (surface == nullptr) return;
     MeshProcessing processing;
     processing.smoothIterations = request.smooth;
     processing.decimateRatio = request.decimate;
-    if (processing.decimates() && scene_.volume())
-        processing.decimateError = defaultDecimateError(scene_.volume()->volume);
+    if (scene_.volume()) applyVolumeDefaults(processing, scene_.volume()->volume);
     const std::size_t before = surface->mesh().triangleCount();
     if (!surface->processMesh(processing)) {
         status_.show("surface " + std::to_string(request.id) + ": no finished mesh to smooth or decimate");

@@ -223,7 +223,8 @@ _PROCESSING_DOC = """
             were padded with one layer of samples below level (its smallest
             sample): what `isotrack extract --cap` does.
         smooth: windowed-sinc smoothing iterations (0: none), without
-            shrinkage; border vertices stay. Normals are then the
+            shrinkage; border vertices stay, and no vertex moves farther
+            than half the smallest spacing. Normals are then the
             area-weighted face normals.
         passband: the smoothing filter's pass band in (0, 2); smaller smooths more.
         decimate: keep this fraction (0, 1] of the triangles (meshoptimizer),

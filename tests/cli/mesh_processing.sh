@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # extract --cap, --smooth and --decimate on the CT skull (iso 400, tracked from
 # 122,122,160). --cap against a copy padded independently (pad_nrrd.py, numpy)
-# for track, all and mc; smoothing's volume and mean dihedral angle (computed
-# here with numpy from the written PLY); decimation's ratio, closure and
-# sampled Hausdorff distance (mesh_distance). Skipped (77) without the CT.
+# for track, all and mc; smoothing's volume, Hausdorff distance (mesh_distance)
+# and mean dihedral angle (computed here with numpy from the written PLY), with
+# both tables; decimation's ratio, closure and sampled Hausdorff distance
+# (mesh_distance). Skipped (77) without the CT.
 # Usage: mesh_processing.sh ISOTRACK MESH_DISTANCE WORK_DIR
 set -euo pipefail
 isotrack=$1
@@ -63,8 +64,14 @@ same_surfaces cap_mc.json padded_mc.json
 [[ $($py -c "import json; print(json.load(open('cap_mc.json'))['quality']['boundary_edges'])") == 0 ]] ||
     fail "--method mc --cap leaves boundary edges"
 
-# Smoothing: the enclosed volume within 1%, the mean dihedral angle down.
-"$isotrack" "${skull[@]}" --cap --smooth 20 --out smooth.ply > smooth.json
+# Smoothing, with both tables: the enclosed volume within 1%; every point
+# within the tolerance --json reports (half the smallest spacing) of the
+# unsmoothed skull both ways (mesh_distance; 1e-4 mm for the float rounding of
+# the frame); still closed and manifold with the genus kept; the mean dihedral
+# angle down. Issue 47 asks for it halved: not met on the CT (docs/meshes.md:
+# 70% of what stays is within 4 mm of an opposite sheet, thin bone and small
+# tunnels), so the figures measured (-22% consistent, -41% snap) are asserted
+# with a margin, and the halving where it is met (a segmented ball, core tests).
 dihedral() {
     $py - "$1" <<'PY'
 import sys
@@ -90,14 +97,30 @@ keep = ok[a] & ok[b]
 print(np.arccos(np.clip((n[a[keep]] * n[b[keep]]).sum(axis=1), -1, 1)).mean())
 PY
 }
-before=$(dihedral cap.ply)
-after=$(dihedral smooth.ply)
-echo "smooth 20: volume $(surface cap.json enclosed_volume) -> $(surface smooth.json enclosed_volume)," \
-     "mean dihedral angle $before -> $after rad"
-$py -c "import sys; a, b = float(sys.argv[1]), float(sys.argv[2]); sys.exit(abs(b / a - 1) > 0.01)" \
-    "$(surface cap.json enclosed_volume)" "$(surface smooth.json enclosed_volume)" || fail "smoothing changed the volume by over 1%"
-$py -c "import sys; sys.exit(not float(sys.argv[2]) < 0.85 * float(sys.argv[1]))" "$before" "$after" ||
-    fail "smoothing left the mean dihedral angle at $after (from $before)"
+"$isotrack" "${skull[@]}" --table snap --cap --out snap_cap.ply > snap_cap.json
+for table in consistent snap; do
+    unsmoothed=cap
+    [[ $table == snap ]] && unsmoothed=snap_cap
+    "$isotrack" "${skull[@]}" --table $table --cap --smooth 20 --out ${table}_smooth.ply > ${table}_smooth.json
+    tolerance=$($py -c "import json; print(json.load(open('${table}_smooth.json'))['smooth_tolerance'])")
+    before=$(dihedral $unsmoothed.ply)
+    after=$(dihedral ${table}_smooth.ply)
+    hausdorff=$("$distance" $unsmoothed.ply ${table}_smooth.ply)
+    echo "smooth 20 ($table): volume $(surface $unsmoothed.json enclosed_volume) -> $(surface ${table}_smooth.json enclosed_volume)," \
+         "mean dihedral angle $before -> $after rad, Hausdorff $hausdorff mm (tolerance $tolerance)"
+    $py -c "import sys; a, b = float(sys.argv[1]), float(sys.argv[2]); sys.exit(abs(b / a - 1) > 0.01)" \
+        "$(surface $unsmoothed.json enclosed_volume)" "$(surface ${table}_smooth.json enclosed_volume)" ||
+        fail "smoothing ($table) changed the volume by over 1%"
+    $py -c "import sys; sys.exit(not 0 < float(sys.argv[2]) <= float(sys.argv[1]) + 1e-4 < 0.9570312)" "$tolerance" "$hausdorff" ||
+        fail "smoothing ($table) moved the skull $hausdorff mm, over its tolerance $tolerance"
+    [[ $(surface ${table}_smooth.json 'closed and quality["boundary_edges"] == 0 and quality["non_manifold_edges"] == 0') == True ]] ||
+        fail "smoothing ($table) left the skull open or non-manifold"
+    [[ $(surface ${table}_smooth.json genus) == $(surface $unsmoothed.json genus) ]] || fail "smoothing ($table) changed the genus"
+    least=0.8  # consistent: -22% measured
+    [[ $table == snap ]] && least=0.65  # -41% measured
+    $py -c "import sys; sys.exit(not float(sys.argv[2]) < float(sys.argv[3]) * float(sys.argv[1]))" "$before" "$after" "$least" ||
+        fail "smoothing ($table) left the mean dihedral angle at $after (from $before)"
+done
 
 # Decimation to a tenth: at most 11% of the triangles, closed if the input was,
 # within a voxel (the smallest spacing, 0.957 mm) of the original both ways.

@@ -4,6 +4,7 @@
 // without shrinkage (windowed sinc), decimation (meshoptimizer) and the quality
 // figures of a mesh. Applied in that order, per surface, in the grid frame.
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -37,10 +38,14 @@ Volume padVolume(const Volume& volume, double padValue);
 // offset so that the filter is exactly 1 at the pass band: low frequencies,
 // the shape and its volume, pass unchanged. Vertices on border or non-manifold
 // edges stay where they are. Coordinates are centred and scaled to unit size
-// while smoothing (VTK's NormalizeCoordinates), in double precision. Normals are
-// recomputed (recomputeNormals). Throws InputError for iterations < 1 or a pass
-// band outside (0, 2).
-void smoothMesh(Mesh& mesh, int iterations, double passband = 0.1);
+// while smoothing (VTK's NormalizeCoordinates), in double precision. Then a
+// vertex that moved farther than `tolerance` is pulled back along its move to
+// that distance, so that the smoothed mesh stays within `tolerance` of the
+// input both ways (Hausdorff). Normals are recomputed (recomputeNormals). Throws
+// InputError for iterations < 1, a pass band outside (0, 2) or a tolerance that
+// is not positive.
+void smoothMesh(Mesh& mesh, int iterations, double passband = 0.1,
+                double tolerance = std::numeric_limits<double>::infinity());
 
 // Vertex normals as the area-weighted sum of the normals of the triangles around
 // each vertex, oriented as the extractors orient theirs (from above the isovalue
@@ -84,8 +89,9 @@ MeshQuality measureQuality(const Mesh& mesh);
 struct MeshProcessing {
     int smoothIterations = 0;  // 0: no smoothing
     double passband = 0.1;
-    double decimateRatio = 1.0;           // 1 with no error: no decimation
-    std::optional<double> decimateError;  // world units; alone (ratio 1): as far as it allows
+    std::optional<double> smoothTolerance;  // world units; none: unbounded
+    double decimateRatio = 1.0;             // 1 with no error: no decimation
+    std::optional<double> decimateError;    // world units; alone (ratio 1): as far as it allows
     bool smooths() const { return smoothIterations > 0; }
     bool decimates() const { return decimateRatio < 1.0 || decimateError.has_value(); }
 };
@@ -94,8 +100,18 @@ struct MeshProcessing {
 // smallest spacing.
 double defaultDecimateError(const Volume& volume);
 
+// How far smoothing may move a vertex unless told otherwise: half the volume's
+// smallest spacing, within the data's resolution.
+double defaultSmoothTolerance(const Volume& volume);
+
+// The front ends' defaults for the volume a surface comes from: the decimation
+// bound when decimating without one, the smoothing tolerance when smoothing
+// without one.
+void applyVolumeDefaults(MeshProcessing& processing, const Volume& volume);
+
 // Throws InputError naming the setting for iterations < 0, a pass band outside
-// (0, 2), a ratio outside (0, 1] or a negative error.
+// (0, 2), a tolerance that is not positive, a ratio outside (0, 1] or a negative
+// error.
 void checkMeshProcessing(const MeshProcessing& processing);
 
 // Smooths then decimates a surface as `processing` says, then measures it again:

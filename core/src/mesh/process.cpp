@@ -2,6 +2,7 @@
 // measured again afterwards.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "extract/measure/surface_measure.h"
@@ -48,11 +49,22 @@ double defaultDecimateError(const Volume& volume) {
     return 0.5 * std::min({s[0], s[1], s[2]});
 }
 
+double defaultSmoothTolerance(const Volume& volume) { return defaultDecimateError(volume); }
+
+void applyVolumeDefaults(MeshProcessing& processing, const Volume& volume) {
+    if (processing.decimateRatio < 1.0 && !processing.decimateError)
+        processing.decimateError = defaultDecimateError(volume);
+    if (processing.smooths() && !processing.smoothTolerance)
+        processing.smoothTolerance = defaultSmoothTolerance(volume);
+}
+
 void checkMeshProcessing(const MeshProcessing& p) {
     if (p.smoothIterations < 0)
         throw InputError("smooth: iterations " + std::to_string(p.smoothIterations) + " is negative");
     if (!(p.passband > 0.0 && p.passband < 2.0))
         throw InputError("smooth: pass band " + std::to_string(p.passband) + " is outside (0, 2)");
+    if (p.smoothTolerance && !(*p.smoothTolerance > 0.0))
+        throw InputError("smooth: tolerance " + std::to_string(*p.smoothTolerance) + " is not positive");
     if (!(p.decimateRatio > 0.0 && p.decimateRatio <= 1.0))
         throw InputError("decimate: ratio " + std::to_string(p.decimateRatio) + " is outside (0, 1]");
     if (p.decimateError && !(*p.decimateError >= 0.0))
@@ -62,7 +74,9 @@ void checkMeshProcessing(const MeshProcessing& p) {
 void processSurface(Surface& surface, const MeshProcessing& processing) {
     checkMeshProcessing(processing);
     if (!processing.smooths() && !processing.decimates()) return;
-    if (processing.smooths()) smoothMesh(surface.mesh, processing.smoothIterations, processing.passband);
+    if (processing.smooths())
+        smoothMesh(surface.mesh, processing.smoothIterations, processing.passband,
+                   processing.smoothTolerance.value_or(std::numeric_limits<double>::infinity()));
     if (processing.decimates()) {
         const bool errorAlone = processing.decimateRatio == 1.0 && processing.decimateError;
         decimateMesh(surface.mesh, errorAlone ? 0.0 : processing.decimateRatio, processing.decimateError);

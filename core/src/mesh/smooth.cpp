@@ -21,10 +21,18 @@
 //      through unscaled (a window alone would shrink or swell it slightly).
 //   4. iterate: x_1 = x_0 - K x_0 / 2, x_{n+1} = 2 x_n - K x_n - x_{n-1};
 //      the result is sum c_i w_i x_i.
-//   5. restore the coordinates, put the fixed vertices back, recompute normals.
+//   5. restore the coordinates, put the fixed vertices back.
+//   6. bound: a vertex that moved farther than the tolerance from where it was
+//      is pulled back along its move to that distance (the idea of Gibson's
+//      constrained elastic surface nets, 1998: a smoothed surface from a volume
+//      should stay within the data's resolution). Each smoothed triangle is
+//      then the original triangle's corners each moved at most that far, so
+//      every point of either mesh lies within the tolerance of the other (the
+//      Hausdorff distance is at most the tolerance). Normals are recomputed.
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -112,10 +120,11 @@ void chebyshevStep(const Neighbours& nb, const Points& x, const Points* previous
 
 }  // namespace
 
-void smoothMesh(Mesh& mesh, int iterations, double passband) {
+void smoothMesh(Mesh& mesh, int iterations, double passband, double tolerance) {
     if (iterations < 1) throw InputError("smooth: iterations " + std::to_string(iterations) + " is not positive");
     if (!(passband > 0.0 && passband < 2.0))
         throw InputError("smooth: pass band " + std::to_string(passband) + " is outside (0, 2)");
+    if (!(tolerance > 0.0)) throw InputError("smooth: tolerance " + std::to_string(tolerance) + " is not positive");
     const std::size_t n = mesh.vertices.size();
     if (n == 0) return;
     const Neighbours nb = freeNeighbours(mesh);
@@ -146,7 +155,17 @@ void smoothMesh(Mesh& mesh, int iterations, double passband) {
     }
     for (std::size_t v = 0; v < n; ++v) {
         if (nb.first[v] == nb.first[v + 1]) continue;  // fixed, or on no edge
-        for (int a = 0; a < 3; ++a) mesh.vertices[v].position[a] = float(sum[v][a] * length + centre[a]);
+        float* p = mesh.vertices[v].position;
+        std::array<double, 3> target{}, move{};
+        for (int a = 0; a < 3; ++a) {
+            target[a] = sum[v][a] * length + centre[a];
+            move[a] = target[a] - double(p[a]);
+        }
+        const double distance = std::sqrt(move[0] * move[0] + move[1] * move[1] + move[2] * move[2]);
+        // Pulled back a little inside, so that float rounding cannot carry it past.
+        if (distance > tolerance)
+            for (int a = 0; a < 3; ++a) target[a] = double(p[a]) + tolerance * (1.0 - 1e-6) / distance * move[a];
+        for (int a = 0; a < 3; ++a) p[a] = float(target[a]);
     }
     recomputeNormals(mesh);
 }

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/mesh/mesh_distance.h"
 #include "core/mesh/mesh_test_support.h"
 #include "isotrack/errors.h"
 #include "isotrack/mesh_processing.h"
@@ -57,15 +58,20 @@ TEST_CASE("smoothing flattens the terraces of a segmented ball", "[core][mesh]")
     for (int z = 0; z < 32; ++z)
         for (int y = 0; y < 32; ++y)
             for (int x = 0; x < 32; ++x) mask.setValue(x, y, z, std::hypot(x - c[0], y - c[1], z - c[2]) <= r ? 1 : 0);
-    Surface surface = exhaustive(mask, 0.5);
-    REQUIRE(surface.stats.closed);
-    const double before = *surface.stats.enclosedVolume, angleBefore = meanDihedralAngle(surface.mesh);
-    MeshProcessing smooth;
-    smooth.smoothIterations = 20;
-    processSurface(surface, smooth);
-    REQUIRE(surface.stats.closed);
-    CHECK(*surface.stats.enclosedVolume == Approx(before).epsilon(0.01));
-    CHECK(meanDihedralAngle(surface.mesh) < 0.5 * angleBefore);
+    const Surface extracted = exhaustive(mask, 0.5);
+    REQUIRE(extracted.stats.closed);
+    const double before = *extracted.stats.enclosedVolume, angleBefore = meanDihedralAngle(extracted.mesh);
+    // Unbounded, and within the front ends' default tolerance (half a voxel).
+    for (const bool bounded : {false, true}) {
+        Surface surface = extracted;
+        MeshProcessing smooth;
+        smooth.smoothIterations = 20;
+        if (bounded) applyVolumeDefaults(smooth, mask);
+        processSurface(surface, smooth);
+        REQUIRE(surface.stats.closed);
+        CHECK(*surface.stats.enclosedVolume == Approx(before).epsilon(0.01));
+        CHECK(meanDihedralAngle(surface.mesh) < 0.5 * angleBefore);
+    }
 }
 
 TEST_CASE("smoothing holds the border of a cut surface fixed", "[core][mesh]") {
@@ -91,12 +97,95 @@ TEST_CASE("smoothing holds the border of a cut surface fixed", "[core][mesh]") {
     CHECK(moved > before.vertices.size() / 2);
 }
 
-TEST_CASE("smoothing refuses iterations and pass bands it cannot use", "[core][mesh]") {
+namespace {
+
+// A binary mask of a ball, spacing 0.8 x 0.8 x 1.2: terraces, unevenly spaced.
+Volume maskBall() {
+    const double r = 10.0;
+    const Vec3d c{14.6, 14.7, 9.7};
+    Volume mask({30, 30, 20}, ScalarType::Int16, {0.8, 0.8, 1.2});
+    for (int z = 0; z < 20; ++z)
+        for (int y = 0; y < 30; ++y)
+            for (int x = 0; x < 30; ++x)
+                mask.setValue(x, y, z, std::hypot(0.8 * (x - c[0]), 0.8 * (y - c[1]), 1.2 * (z - c[2])) <= r ? 1 : 0);
+    return mask;
+}
+
+double moved(const Vertex& a, const Vertex& b) {
+    return std::hypot(a.position[0] - b.position[0], a.position[1] - b.position[1], a.position[2] - b.position[2]);
+}
+
+}  // namespace
+
+TEST_CASE("a smoothing tolerance bounds each move and the Hausdorff distance", "[core][mesh]") {
+    const Volume mask = maskBall();
+    const Surface surface = exhaustive(mask, 0.5);
+    REQUIRE(surface.stats.closed);
+    const double tolerance = 0.15;
+    Mesh free = surface.mesh, bounded = surface.mesh;
+    smoothMesh(free, 20);
+    smoothMesh(bounded, 20, 0.1, tolerance);
+    std::size_t pulledBack = 0;
+    for (std::size_t v = 0; v < surface.mesh.vertices.size(); ++v) {
+        const Vertex& original = surface.mesh.vertices[v];
+        REQUIRE(moved(original, bounded.vertices[v]) <= tolerance + 1e-6);
+        if (moved(original, free.vertices[v]) <= tolerance * (1.0 - 1e-5)) {
+            REQUIRE(moved(free.vertices[v], bounded.vertices[v]) == 0.0);  // within it: as without one
+        } else {
+            ++pulledBack;
+            // Pulled back along its move, to the tolerance.
+            REQUIRE(moved(original, bounded.vertices[v]) == Approx(tolerance).epsilon(1e-4));
+            double along = 0.0;
+            for (int a = 0; a < 3; ++a)
+                along += (free.vertices[v].position[a] - original.position[a]) *
+                         (bounded.vertices[v].position[a] - original.position[a]);
+            REQUIRE(along / (moved(original, free.vertices[v]) * tolerance) == Approx(1.0).epsilon(1e-4));
+        }
+    }
+    CHECK(pulledBack > surface.mesh.vertices.size() / 10);  // the bound is at work
+    CHECK(test::hausdorff(free, surface.mesh) > 1.5 * tolerance);
+    CHECK(test::hausdorff(bounded, surface.mesh) <= tolerance + 1e-5);
+}
+
+TEST_CASE("front ends' defaults: half the smallest spacing for both bounds", "[core][mesh]") {
+    const Volume mask = maskBall();
+    MeshProcessing p;
+    applyVolumeDefaults(p, mask);
+    CHECK_FALSE(p.smoothTolerance);
+    CHECK_FALSE(p.decimateError);
+    p.smoothIterations = 20;
+    p.decimateRatio = 0.5;
+    applyVolumeDefaults(p, mask);
+    CHECK(*p.smoothTolerance == Approx(0.4));
+    CHECK(*p.decimateError == Approx(0.4));
+    p.smoothTolerance = 2.0;
+    applyVolumeDefaults(p, mask);
+    CHECK(*p.smoothTolerance == 2.0);  // a given one stays
+
+    // processSurface uses it: every vertex within it.
+    Surface surface = exhaustive(mask, 0.5);
+    const Mesh before = surface.mesh;
+    MeshProcessing smooth;
+    smooth.smoothIterations = 20;
+    smooth.smoothTolerance = 0.1;
+    processSurface(surface, smooth);
+    for (std::size_t v = 0; v < before.vertices.size(); ++v)
+        REQUIRE(moved(before.vertices[v], surface.mesh.vertices[v]) <= 0.1 + 1e-6);
+    CHECK(surface.stats.closed);
+}
+
+TEST_CASE("smoothing refuses iterations, pass bands and tolerances it cannot use", "[core][mesh]") {
     Mesh mesh;
     CHECK_THROWS_AS(smoothMesh(mesh, 0), InputError);
     CHECK_THROWS_AS(smoothMesh(mesh, 10, 0.0), InputError);
     CHECK_THROWS_AS(smoothMesh(mesh, 10, 2.0), InputError);
+    CHECK_THROWS_AS(smoothMesh(mesh, 10, 0.1, 0.0), InputError);
+    CHECK_THROWS_AS(smoothMesh(mesh, 10, 0.1, -1.0), InputError);
     MeshProcessing bad;
     bad.smoothIterations = -1;
     CHECK_THROWS_AS(checkMeshProcessing(bad), InputError);
+    MeshProcessing badTolerance;
+    badTolerance.smoothIterations = 5;
+    badTolerance.smoothTolerance = 0.0;
+    CHECK_THROWS_AS(checkMeshProcessing(badTolerance), InputError);
 }
