@@ -242,10 +242,13 @@ private:
             const bool cornersInBlock = local[0] < kLast && local[1] < kLast && local[2] < kLast;
             std::array<std::uint32_t, 12> vertexOf;
             std::uint32_t* const cellSlots = block->vertex.data() + 3 * cell;  // the ids at the cell's first corner
+            // The four rows of slots (y and y + 1, z and z + 1) that hold the cell's edges.
+            if (cornersInBlock) SparseBlocks::vertexRows<Shared>(block, std::uint64_t(0x303) << (cell >> kShift));
             for (unsigned mask = walk.edgeMask; mask != 0; mask &= mask - 1) {
                 const int edge = __builtin_ctz(mask);
                 std::uint32_t& slot =
-                    cornersInBlock ? cellSlots[walk_.edgeSlot[edge]] : vertexSlot(blocks, block, local, edge, w.thread);
+                    cornersInBlock ? cellSlots[walk_.edgeSlot[edge]]
+                                   : vertexSlot<Shared>(blocks, block, local, edge, w.thread);
                 std::uint32_t id = Shared ? __atomic_load_n(&slot, __ATOMIC_RELAXED) : slot;
                 if (id == SparseBlocks::kNoVertex) id = newVertex<Shared>(w, out, slot, at, edge);
                 vertexOf[edge] = id;
@@ -343,12 +346,15 @@ private:
     }
 
     // The vertex slot of a cell's edge when the edge's origin may lie in a block further up.
+    template <bool Shared>
     std::uint32_t& vertexSlot(SparseBlocks& blocks, Block* block, const int local[3], int edge, int thread) const {
         const auto& o = walk_.edgeOrigin[edge];
         const int p[3] = {local[0] + o[0], local[1] + o[1], local[2] + o[2]};
         const int link = SparseBlocks::kSelf + (p[0] >> kShift) + 3 * (p[1] >> kShift) + 9 * (p[2] >> kShift);
         Block* holder = blocks.linked(block, link, thread);
-        return holder->vertex[std::size_t(3 * SparseBlocks::local(p[0], p[1], p[2]) + walk_.edgeAxis[edge])];
+        const int point = SparseBlocks::local(p[0], p[1], p[2]);
+        SparseBlocks::vertexRows<Shared>(holder, std::uint64_t(1) << SparseBlocks::row(point));
+        return holder->vertex[std::size_t(3 * point + walk_.edgeAxis[edge])];
     }
 
     // edgeVertex, through its interior form when both ends of the edge have their six neighbours in the volume.
