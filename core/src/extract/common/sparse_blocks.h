@@ -181,7 +181,8 @@ public:
             const std::array<int, 3> origin{bx << kShift, by << kShift, bz << kShift};
             const int owner = ownerAt(x, y, z);
             if (arena.spareBlock_ != nullptr) arena.spareBlock_->origin = origin, arena.spareBlock_->owner = owner;
-            block = publish(blockSlot, arena.spareBlock_, [&] { return &arena.blocks_.emplace_back(origin, owner, slots_); });
+            block = publish(blockSlot, arena.spareBlock_,
+                            [&] { return &arena.blocks_.emplace_back(origin, owner, slots_); });
         }
         return block;
     }

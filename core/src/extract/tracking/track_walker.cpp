@@ -246,9 +246,8 @@ private:
             if (cornersInBlock) SparseBlocks::vertexRows<Shared>(block, std::uint64_t(0x303) << (cell >> kShift));
             for (unsigned mask = walk.edgeMask; mask != 0; mask &= mask - 1) {
                 const int edge = __builtin_ctz(mask);
-                std::uint32_t& slot =
-                    cornersInBlock ? cellSlots[walk_.edgeSlot[edge]]
-                                   : vertexSlot<Shared>(blocks, block, local, edge, w.thread);
+                std::uint32_t& slot = cornersInBlock ? cellSlots[walk_.edgeSlot[edge]]
+                                                     : vertexSlot<Shared>(blocks, block, local, edge, w.thread);
                 std::uint32_t id = Shared ? __atomic_load_n(&slot, __ATOMIC_RELAXED) : slot;
                 if (id == SparseBlocks::kNoVertex) id = newVertex<Shared>(w, out, slot, at, edge);
                 vertexOf[edge] = id;
