@@ -94,6 +94,9 @@ struct WalkTable {
     struct Walk {
         std::uint16_t edgeMask = 0;
         std::uint8_t cornerCount = 0, exitCount = 0;
+        // The piece's edges, the spare entries repeating the first (see walk).
+        std::uint8_t edgeCount = 0;
+        std::array<std::uint8_t, 12> edges{};
         std::array<std::uint8_t, 3 * kMaxCaseTriangles> corners{};
         std::array<std::uint8_t, 24> exits{};  // face << 4 | entry edge
     };
@@ -104,6 +107,7 @@ struct WalkTable {
     // than copying 15; on the CT skull the test for more mispredicts rarely).
     static constexpr int kPieceCorners = 15;
     static constexpr int kCommonCorners = 9;
+    static constexpr int kCommonEdges = 5;
     std::array<std::array<std::int8_t, 12>, 256> pieceOfEdge{};
     std::array<int, 6> link{}, cellStep{}, faceMask{}, faceSide{};
     std::array<std::array<int, 3>, 12> edgeOrigin{};
@@ -129,6 +133,10 @@ struct WalkTable {
                 const Piece& piece = table[c].pieces[p];
                 Walk& walk = walks[c][p];
                 walk.edgeMask = piece.edgeMask;
+                for (int e = 0; e < cube::kEdgeCount; ++e) {
+                    if (piece.edgeMask >> e & 1u) walk.edges[walk.edgeCount++] = static_cast<std::uint8_t>(e);
+                }
+                for (int k = walk.edgeCount; k < cube::kEdgeCount; ++k) walk.edges[std::size_t(k)] = walk.edges[0];
                 for (int t = piece.firstTriangle; t < piece.firstTriangle + piece.triangleCount; ++t) {
                     for (std::int8_t edge : table[c].triangles[t])
                         walk.corners[walk.cornerCount++] = static_cast<std::uint8_t>(edge);
@@ -247,13 +255,40 @@ private:
             std::uint32_t* const cellSlots = block->vertex.data() + 3 * cell;  // the ids at the cell's first corner
             // The four rows of slots (y and y + 1, z and z + 1) that hold the cell's edges.
             if (cornersInBlock) SparseBlocks::vertexRows<Shared>(block, std::uint64_t(0x303) << (cell >> kShift));
-            for (unsigned mask = walk.edgeMask; mask != 0; mask &= mask - 1) {
-                const int edge = __builtin_ctz(mask);
-                std::uint32_t& slot = cornersInBlock ? cellSlots[walk_.edgeSlot[edge]]
-                                                     : vertexSlot<Shared>(blocks, block, local, edge, w.thread);
-                std::uint32_t id = Shared ? __atomic_load_n(&slot, __ATOMIC_RELAXED) : slot;
-                if (id == SparseBlocks::kNoVertex) id = newVertex<Shared>(w, out, slot, at, edge);
-                vertexOf[edge] = id;
+            // Two passes over the piece's edges: the first reads every edge's
+            // vertex id, noting the edges without one; the second makes their
+            // vertices. Whether an edge has its vertex yet is a coin toss the
+            // branch predictor lost once a piece; now only the second pass's
+            // end, after about one new vertex a piece, is left to predict.
+            // The first pass reads a fixed count of edges, those of three
+            // triangles (the spare entries repeat an edge), and the rest only
+            // for the rare larger pieces.
+            std::array<std::uint32_t*, 12> slotOf;
+            unsigned missing = 0;
+            const auto readSlot = [&](int edge, std::uint32_t* slot) {
+                const std::uint32_t id = Shared ? __atomic_load_n(slot, __ATOMIC_RELAXED) : *slot;
+                slotOf[std::size_t(edge)] = slot;
+                vertexOf[std::size_t(edge)] = id;
+                missing |= unsigned(id == SparseBlocks::kNoVertex) << edge;
+            };
+            if (cornersInBlock) {
+                for (int k = 0; k < WalkTable::kCommonEdges; ++k) {
+                    const int edge = walk.edges[std::size_t(k)];
+                    readSlot(edge, cellSlots + walk_.edgeSlot[edge]);
+                }
+                for (int k = WalkTable::kCommonEdges; k < walk.edgeCount; ++k) {
+                    const int edge = walk.edges[std::size_t(k)];
+                    readSlot(edge, cellSlots + walk_.edgeSlot[edge]);
+                }
+            } else {
+                for (int k = 0; k < walk.edgeCount; ++k) {
+                    const int edge = walk.edges[std::size_t(k)];
+                    readSlot(edge, &vertexSlot<Shared>(blocks, block, local, edge, w.thread));
+                }
+            }
+            for (; missing != 0; missing &= missing - 1) {
+                const int edge = __builtin_ctz(missing);
+                vertexOf[std::size_t(edge)] = newVertex<Shared>(w, out, *slotOf[std::size_t(edge)], at, edge);
             }
             // Every piece copies the same count of corners and gives back the spare
             // ones: no loop whose length changes from piece to piece, and so no
