@@ -114,6 +114,10 @@ struct WalkTable {
     std::array<int, 12> edgeAxis{};
     std::array<int, 12> edgeLocal{};  // offset of the edge's origin in a sparse block's local index
     std::array<int, 12> edgeSlot{};   // offset of the edge's vertex id from its cell's first corner's ids in a block
+    // For a cell on its block's upper faces, by its corner class (bit k set when
+    // its local coordinate k is the block's last) and edge: the link to the
+    // block holding the edge's vertex id, and the id's offset there from 3 cell.
+    std::array<std::array<int, 12>, 8> slotLink{}, slotOffset{};
 
     explicit WalkTable(TableKind kind) {
         using detail::SparseBlocks;
@@ -159,6 +163,15 @@ struct WalkTable {
             edgeAxis[e] = cube::edgeAxis(e);
             edgeLocal[e] = detail::SparseBlocks::local(edgeOrigin[e][0], edgeOrigin[e][1], edgeOrigin[e][2]);
             edgeSlot[e] = 3 * edgeLocal[e] + edgeAxis[e];
+            for (int c = 0; c < 8; ++c) {
+                int wrap[3];
+                for (int k = 0; k < 3; ++k) wrap[k] = (c >> k & 1) & edgeOrigin[e][std::size_t(k)];
+                slotLink[std::size_t(c)][std::size_t(e)] = SparseBlocks::kSelf + wrap[0] + 3 * wrap[1] + 9 * wrap[2];
+                slotOffset[std::size_t(c)][std::size_t(e)] =
+                    edgeSlot[e] - 3 * SparseBlocks::kSide *
+                                      (wrap[0] * SparseBlocks::kLocalStep[0] + wrap[1] * SparseBlocks::kLocalStep[1] +
+                                       wrap[2] * SparseBlocks::kLocalStep[2]);
+            }
         }
     }
 };
@@ -281,9 +294,10 @@ private:
                     readSlot(edge, cellSlots + walk_.edgeSlot[edge]);
                 }
             } else {
+                const int corners = (local[0] == kLast) | (local[1] == kLast) << 1 | (local[2] == kLast) << 2;
                 for (int k = 0; k < walk.edgeCount; ++k) {
                     const int edge = walk.edges[std::size_t(k)];
-                    readSlot(edge, &vertexSlot<Shared>(blocks, block, local, edge, w.thread));
+                    readSlot(edge, vertexSlot<Shared>(blocks, block, cell, corners, edge, w.thread));
                 }
             }
             for (; missing != 0; missing &= missing - 1) {
@@ -401,16 +415,15 @@ private:
         received.clear();
     }
 
-    // The vertex slot of a cell's edge when the edge's origin may lie in a block further up.
+    // The vertex slot of an edge of the cell at local index `cell`, on the
+    // block's upper faces as `corners` says, whose origin may lie in a block
+    // further up.
     template <bool Shared>
-    std::uint32_t& vertexSlot(SparseBlocks& blocks, Block* block, const int local[3], int edge, int thread) const {
-        const auto& o = walk_.edgeOrigin[edge];
-        const int p[3] = {local[0] + o[0], local[1] + o[1], local[2] + o[2]};
-        const int link = SparseBlocks::kSelf + (p[0] >> kShift) + 3 * (p[1] >> kShift) + 9 * (p[2] >> kShift);
-        Block* holder = blocks.linked(block, link, thread);
-        const int point = SparseBlocks::local(p[0], p[1], p[2]);
-        SparseBlocks::vertexRows<Shared>(holder, std::uint64_t(1) << SparseBlocks::row(point));
-        return holder->vertex[std::size_t(3 * point + walk_.edgeAxis[edge])];
+    std::uint32_t* vertexSlot(SparseBlocks& blocks, Block* block, int cell, int corners, int edge, int thread) const {
+        Block* holder = blocks.linked(block, walk_.slotLink[std::size_t(corners)][std::size_t(edge)], thread);
+        const int slot = 3 * cell + walk_.slotOffset[std::size_t(corners)][std::size_t(edge)];
+        SparseBlocks::vertexRows<Shared>(holder, std::uint64_t(1) << (slot / SparseBlocks::kRowSlots));
+        return holder->vertex.data() + slot;
     }
 
     // edgeVertex, through its interior form when both ends of the edge have their six neighbours in the volume.
