@@ -94,9 +94,6 @@ struct WalkTable {
     struct Walk {
         std::uint16_t edgeMask = 0;
         std::uint8_t cornerCount = 0, exitCount = 0;
-        // The piece's edges, the spare entries repeating the first (see walk).
-        std::uint8_t edgeCount = 0;
-        std::array<std::uint8_t, 12> edges{};
         std::array<std::uint8_t, 3 * kMaxCaseTriangles> corners{};
         std::array<std::uint8_t, 24> exits{};  // face << 4 | entry edge
     };
@@ -107,7 +104,6 @@ struct WalkTable {
     // than copying 15; on the CT skull the test for more mispredicts rarely).
     static constexpr int kPieceCorners = 15;
     static constexpr int kCommonCorners = 9;
-    static constexpr int kCommonEdges = 5;
     std::array<std::array<std::int8_t, 12>, 256> pieceOfEdge{};
     std::array<int, 6> link{}, cellStep{}, faceMask{}, faceSide{};
     std::array<std::array<int, 3>, 12> edgeOrigin{};
@@ -137,10 +133,6 @@ struct WalkTable {
                 const Piece& piece = table[c].pieces[p];
                 Walk& walk = walks[c][p];
                 walk.edgeMask = piece.edgeMask;
-                for (int e = 0; e < cube::kEdgeCount; ++e) {
-                    if (piece.edgeMask >> e & 1u) walk.edges[walk.edgeCount++] = static_cast<std::uint8_t>(e);
-                }
-                for (int k = walk.edgeCount; k < cube::kEdgeCount; ++k) walk.edges[std::size_t(k)] = walk.edges[0];
                 for (int t = piece.firstTriangle; t < piece.firstTriangle + piece.triangleCount; ++t) {
                     for (std::int8_t edge : table[c].triangles[t])
                         walk.corners[walk.cornerCount++] = static_cast<std::uint8_t>(edge);
@@ -244,7 +236,7 @@ private:
     std::size_t walk(SparseBlocks& blocks, std::uint8_t* denseVisited, Walker& w, std::size_t cellBudget,
                      Exchange* exchange) const {
         MeshAppender out(w.mesh);
-        MeasureCursor measured{out.indices.size(), out.vertices.size()};
+        const std::size_t firstIndex = out.indices.size(), firstVertex = out.vertices.size();
         std::size_t visited = 0;
         std::vector<Exchange::Message> received;
         while (visited < cellBudget) {
@@ -268,41 +260,15 @@ private:
             std::uint32_t* const cellSlots = block->vertex.data() + 3 * cell;  // the ids at the cell's first corner
             // The four rows of slots (y and y + 1, z and z + 1) that hold the cell's edges.
             if (cornersInBlock) SparseBlocks::vertexRows<Shared>(block, std::uint64_t(0x303) << (cell >> kShift));
-            // Two passes over the piece's edges: the first reads every edge's
-            // vertex id, noting the edges without one; the second makes their
-            // vertices. Whether an edge has its vertex yet is a coin toss the
-            // branch predictor lost once a piece; now only the second pass's
-            // end, after about one new vertex a piece, is left to predict.
-            // The first pass reads a fixed count of edges, those of three
-            // triangles (the spare entries repeat an edge), and the rest only
-            // for the rare larger pieces.
-            std::array<std::uint32_t*, 12> slotOf;
-            unsigned missing = 0;
-            const auto readSlot = [&](int edge, std::uint32_t* slot) {
-                const std::uint32_t id = Shared ? __atomic_load_n(slot, __ATOMIC_RELAXED) : *slot;
-                slotOf[std::size_t(edge)] = slot;
-                vertexOf[std::size_t(edge)] = id;
-                missing |= unsigned(id == SparseBlocks::kNoVertex) << edge;
-            };
-            if (cornersInBlock) {
-                for (int k = 0; k < WalkTable::kCommonEdges; ++k) {
-                    const int edge = walk.edges[std::size_t(k)];
-                    readSlot(edge, cellSlots + walk_.edgeSlot[edge]);
-                }
-                for (int k = WalkTable::kCommonEdges; k < walk.edgeCount; ++k) {
-                    const int edge = walk.edges[std::size_t(k)];
-                    readSlot(edge, cellSlots + walk_.edgeSlot[edge]);
-                }
-            } else {
-                const int corners = (local[0] == kLast) | (local[1] == kLast) << 1 | (local[2] == kLast) << 2;
-                for (int k = 0; k < walk.edgeCount; ++k) {
-                    const int edge = walk.edges[std::size_t(k)];
-                    readSlot(edge, vertexSlot<Shared>(blocks, block, cell, corners, edge, w.thread));
-                }
-            }
-            for (; missing != 0; missing &= missing - 1) {
-                const int edge = __builtin_ctz(missing);
-                vertexOf[std::size_t(edge)] = newVertex<Shared>(w, out, *slotOf[std::size_t(edge)], at, edge);
+            const int corners = (local[0] == kLast) | (local[1] == kLast) << 1 | (local[2] == kLast) << 2;
+            for (unsigned mask = walk.edgeMask; mask != 0; mask &= mask - 1) {
+                const int edge = __builtin_ctz(mask);
+                std::uint32_t& slot = cornersInBlock
+                                          ? cellSlots[walk_.edgeSlot[edge]]
+                                          : *vertexSlot<Shared>(blocks, block, cell, corners, edge, w.thread);
+                std::uint32_t id = Shared ? __atomic_load_n(&slot, __ATOMIC_RELAXED) : slot;
+                if (id == SparseBlocks::kNoVertex) id = newVertex<Shared>(w, out, slot, at, edge);
+                vertexOf[edge] = id;
             }
             // Every piece copies the same count of corners and gives back the spare
             // ones: no loop whose length changes from piece to piece, and so no
@@ -315,7 +281,6 @@ private:
                     indices[k] = vertexOf[walk.corners[std::size_t(k)]];
             }
             out.indices.retract(std::size_t(WalkTable::kPieceCorners - walk.cornerCount));
-            if (out.indices.size() - measured.index >= kMeasureStep) measureAppended<Shared>(w, out, measured, false);
             const std::size_t sample = grid_.index(at[0], at[1], at[2]);
             for (int k = 0; k < walk.exitCount; ++k) {
                 const int f = walk.exits[std::size_t(k)] >> 4, edge = walk.exits[std::size_t(k)] & 15;
@@ -340,41 +305,29 @@ private:
                 }
             }
         }
-        measureAppended<Shared>(w, out, measured, true);
-        w.measure.triangles.merge({measured.doubledArea, measured.sixfoldVolume});
+        measureAppended<Shared>(w, out, firstIndex, firstVertex);
         w.cellsVisited += visited;
         return visited;
     }
 
-    // Where a walk's measure has reached: the first index and vertex not yet
-    // measured, and the sums so far.
-    struct MeasureCursor {
-        std::size_t index, vertex;
-        double doubledArea = 0.0, sixfoldVolume = 0.0;
-    };
-    // Indices a walk appends before it measures them, while they and most of
-    // their vertices are still in the cache (measured after the walk, they
-    // were read again from memory: 4% of a one-thread skull track).
-    static constexpr std::size_t kMeasureStep = 12 * 256;
-
-    // Adds to the sums of `at` the triangles a walk appended since, four at a
+    // Adds to the walker's measure the triangles and vertices a walk appended
+    // from `firstIndex` and `firstVertex`, once it is over: four triangles at a
     // time in vector registers, in the order they were made (so the sums are
-    // those of measuring each as it was made, whatever the steps), and the
-    // walker's bounds likewise; but for the `last` step, leaves the triangles
-    // after the last whole four for the next. Shared, a triangle with another
-    // thread's corners is measured once the walk is over.
+    // those of measuring each as it was made), and the bounds likewise. Shared,
+    // a triangle with another thread's corners is measured once the walk is over.
     template <bool Shared>
-    static void measureAppended(Walker& w, const MeshAppender& out, MeasureCursor& at, bool last) {
+    static void measureAppended(Walker& w, const MeshAppender& out, std::size_t firstIndex, std::size_t firstVertex) {
         const Vertex* vertices = w.mesh.vertices.data();
         const std::uint32_t* indices = w.mesh.indices.data();
         const std::size_t end = out.indices.size();
-        std::size_t k = at.index;
+        double doubledArea = 0.0, sixfoldVolume = 0.0;
+        std::size_t k = firstIndex;
         if constexpr (Shared) {
             const std::uint32_t tagMask = ~w.indexMask;
             for (; k < end; k += 3) {
                 const std::uint32_t a = indices[k], b = indices[k + 1], c = indices[k + 2];
                 if ((((a ^ w.idBase) | (b ^ w.idBase) | (c ^ w.idBase)) & tagMask) == 0) {
-                    detail::TriangleMeasure::addTo(at.doubledArea, at.sixfoldVolume, vertices[a & w.indexMask],
+                    detail::TriangleMeasure::addTo(doubledArea, sixfoldVolume, vertices[a & w.indexMask],
                                                    vertices[b & w.indexMask], vertices[c & w.indexMask]);
                 } else {
                     w.unmeasured.push_back(k);
@@ -382,14 +335,13 @@ private:
             }
         } else {
             for (; k + 12 <= end; k += 12)
-                detail::TriangleMeasure::addFourTo(at.doubledArea, at.sixfoldVolume, vertices, indices + k);
-            for (; last && k < end; k += 3)
-                detail::TriangleMeasure::addTo(at.doubledArea, at.sixfoldVolume, vertices[indices[k]],
+                detail::TriangleMeasure::addFourTo(doubledArea, sixfoldVolume, vertices, indices + k);
+            for (; k < end; k += 3)
+                detail::TriangleMeasure::addTo(doubledArea, sixfoldVolume, vertices[indices[k]],
                                                vertices[indices[k + 1]], vertices[indices[k + 2]]);
         }
-        at.index = k;
-        w.measure.addBounds(vertices + at.vertex, out.vertices.size() - at.vertex);
-        at.vertex = out.vertices.size();
+        w.measure.triangles.merge({doubledArea, sixfoldVolume});
+        w.measure.addBounds(vertices + firstVertex, out.vertices.size() - firstVertex);
     }
 
     // The configuration of the cell whose first corner is `sample`.
