@@ -62,6 +62,7 @@ public:
           iso_(iso),
           threshold_(iso) {
         for (int k = 0; k < 3; ++k) halfInverseSpacing_[k] = 0.5 / spacing_[k];
+        strides_ = {1, strideY_, strideZ_};
         const int size[3] = {nx_, ny_, nz_};
         for (int a = 0; a < 3; ++a) {
             for (int k = 0; k < 3; ++k)
@@ -175,6 +176,22 @@ public:
         vertexOnEdge<Axis>(x, y, z, a, b, ga, gb, v);
     }
 
+    // edgeInterior and interiorEdgeVertex for an axis known only at run time:
+    // one path for the three axes, without a branch on the axis that the walk
+    // of a tracker, meeting edges of every axis in turn, mispredicts. The same
+    // operations in the same order, so the same vertex.
+    bool edgeInterior(int axis, int x, int y, int z) const {
+        const auto& span = interiorSpan_[std::size_t(axis)];
+        return unsigned(x - 1) < span[0] && unsigned(y - 1) < span[1] && unsigned(z - 1) < span[2];
+    }
+    void interiorEdgeVertex(int axis, std::size_t a, int x, int y, int z, Vertex& v) const {
+        const std::size_t b = a + strides_[std::size_t(axis)];
+        double ga[3], gb[3];
+        interiorGradient(a, ga);
+        interiorGradient(b, gb);
+        vertexOnEdge(axis, x, y, z, a, b, ga, gb, v);
+    }
+
     // Central-difference gradient in world units; one-sided on the border.
     void gradient(int x, int y, int z, double g[3]) const {
         if (x > 0 && y > 0 && z > 0 && x + 1 < nx_ && y + 1 < ny_ && z + 1 < nz_) {
@@ -245,7 +262,11 @@ private:
     template <int Axis>
     [[gnu::always_inline]] void vertexOnEdge(int x, int y, int z, std::size_t a, std::size_t b, const double ga[3],
                                              const double gb[3], Vertex& v) const {
-        constexpr int axis = Axis;
+        vertexOnEdge(Axis, x, y, z, a, b, ga, gb, v);
+    }
+
+    [[gnu::always_inline]] void vertexOnEdge(int axis, int x, int y, int z, std::size_t a, std::size_t b,
+                                             const double ga[3], const double gb[3], Vertex& v) const {
         const double va = at(a), vb = at(b);
         double t = (iso_ - va) / (vb - va);
         if (!(t >= 0.0 && t <= 1.0)) t = 0.5;  // non-finite samples: keep the vertex on the edge
@@ -271,6 +292,7 @@ private:
     std::size_t strideY_, strideZ_;
     Vec3d spacing_, origin_;
     double halfInverseSpacing_[3];
+    std::array<std::size_t, 3> strides_{};  // per axis, the step between samples
     double iso_;
     NativeThreshold<T> threshold_;
     // Per edge axis and coordinate, the count of origins p with 0 < p and p + 1

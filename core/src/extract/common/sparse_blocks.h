@@ -39,21 +39,55 @@ public:
     // The link to the block itself: links are numbered (dx + 1) + 3 (dy + 1) + 9 (dz + 1).
     static constexpr int kSelf = 13;
 
+    // How the vertex slots of a new block start: all kNoVertex (Eager), or
+    // unwritten, a row of the block at a time made kNoVertex on first use
+    // (Lazy, through vertexRows). A surface crosses few of a block's 1,536
+    // edges (the CT skull about 100 in each of 2,500 blocks): filling every
+    // slot wrote 6 KiB per block, most of it never read, and took 1.3 to 5% of
+    // a one-thread track of the skull.
+    enum class VertexSlots { Eager, Lazy };
+
+    // A row of a block: the slots of its 8 points along x at one (y, z).
+    static constexpr int kRowSlots = 3 * kSide;
+
     struct Block {
         std::array<std::uint8_t, kPoints> config{};     // per cell; 0 until classified (0 is never queued)
         std::array<std::uint8_t, kPoints> visited{};    // per cell, one bit per piece
         std::array<std::uint32_t, 3 * kPoints> vertex;  // per grid point and axis, the vertex on that edge
+        std::atomic<std::uint64_t> rowsReady;           // Lazy: bit y + 8 z set once row (y, z) is kNoVertex or ids
+        std::atomic<std::uint64_t> rowsClaimed;         // Lazy, on several threads: the rows a thread began to fill
         std::array<std::atomic<Block*>, 27> link;       // each adjacent block; null until looked up
         std::array<int, 3> origin{};                    // grid coordinates of local point (0, 0, 0)
         int owner = 0;                                  // the thread walking the block's cells
         std::uint32_t pending = kNoPending;             // the tracker's first piece waiting in the block
         bool queued = false;                            // the block waits its turn in the tracker's queue
-        Block(const std::array<int, 3>& at, int thread) : origin(at), owner(thread) {
-            vertex.fill(kNoVertex);
+        Block(const std::array<int, 3>& at, int thread, VertexSlots slots) : origin(at), owner(thread) {
+            const std::uint64_t ready = slots == VertexSlots::Eager ? ~std::uint64_t(0) : 0;
+            if (slots == VertexSlots::Eager) vertex.fill(kNoVertex);
+            rowsReady.store(ready, std::memory_order_relaxed);
+            rowsClaimed.store(ready, std::memory_order_relaxed);
             for (auto& l : link) l.store(nullptr, std::memory_order_relaxed);
             link[kSelf].store(this, std::memory_order_relaxed);
         }
     };
+
+    // Makes the rows of `block` in the mask `rows` (bit y + 8 z) ready for use:
+    // those not yet are filled with kNoVertex. Shared (several threads walk the
+    // surface): a thread fills the rows it claims first and waits for those
+    // another thread claimed; once ready, a row is read and written as before.
+    template <bool Shared>
+    static void vertexRows(Block* block, std::uint64_t rows) {
+        if constexpr (!Shared) {
+            const std::uint64_t ready = block->rowsReady.load(std::memory_order_relaxed);
+            if ((ready & rows) != rows) fillRows(block, rows & ~ready, ready | rows);
+        } else {
+            const std::uint64_t ready = block->rowsReady.load(std::memory_order_acquire);
+            if ((ready & rows) != rows) claimRows(block, rows, rows & ~ready);
+        }
+    }
+
+    // The row bit of local point (x, y, z): rows are numbered y + 8 z.
+    static constexpr int row(int localPoint) { return localPoint >> kShift; }
 
     // A region of 8x8x8 blocks.
     struct Region {
@@ -76,8 +110,9 @@ public:
         Region* spareRegion_ = nullptr;
     };
 
-    SparseBlocks(const Dims& dims, int threads = 1)
-        : ownerShift_(ownerShift(dims, threads)),
+    SparseBlocks(const Dims& dims, int threads = 1, VertexSlots slots = VertexSlots::Eager)
+        : slots_(slots),
+          ownerShift_(ownerShift(dims, threads)),
           regionsX_((dims[0] + kRegionMask) >> kRegionShift),
           regionsY_((dims[1] + kRegionMask) >> kRegionShift),
           regions_(std::size_t(regionsX_) * std::size_t(regionsY_) *
@@ -147,7 +182,8 @@ public:
             const std::array<int, 3> origin{bx << kShift, by << kShift, bz << kShift};
             const int owner = ownerAt(x, y, z);
             if (arena.spareBlock_ != nullptr) arena.spareBlock_->origin = origin, arena.spareBlock_->owner = owner;
-            block = publish(blockSlot, arena.spareBlock_, [&] { return &arena.blocks_.emplace_back(origin, owner); });
+            block = publish(blockSlot, arena.spareBlock_,
+                            [&] { return &arena.blocks_.emplace_back(origin, owner, slots_); });
         }
         return block;
     }
@@ -178,6 +214,23 @@ private:
         return expected;
     }
 
+    [[gnu::noinline]] static void fillRows(Block* block, std::uint64_t rows, std::uint64_t ready) {
+        for (; rows != 0; rows &= rows - 1)
+            std::fill_n(block->vertex.data() + kRowSlots * __builtin_ctzll(rows), kRowSlots, kNoVertex);
+        block->rowsClaimed.store(ready, std::memory_order_relaxed);
+        block->rowsReady.store(ready, std::memory_order_relaxed);
+    }
+
+    [[gnu::noinline]] static void claimRows(Block* block, std::uint64_t rows, std::uint64_t missing) {
+        const std::uint64_t mine = missing & ~block->rowsClaimed.fetch_or(missing, std::memory_order_relaxed);
+        for (std::uint64_t left = mine; left != 0; left &= left - 1)
+            std::fill_n(block->vertex.data() + kRowSlots * __builtin_ctzll(left), kRowSlots, kNoVertex);
+        if (mine != 0) block->rowsReady.fetch_or(mine, std::memory_order_release);
+        // Rows another thread claimed are ready a few stores later.
+        while ((block->rowsReady.load(std::memory_order_acquire) & rows) != rows) {
+        }
+    }
+
     [[gnu::noinline]] Block* resolve(Block* block, int link, int thread) {
         const std::array<int, 3> o = block->origin;
         Block* found =
@@ -195,6 +248,7 @@ private:
         return planes;
     }
 
+    VertexSlots slots_;
     int ownerShift_;  // the side of a tile walked by one thread
     int regionsX_, regionsY_;
     std::vector<std::atomic<Region*>> regions_;

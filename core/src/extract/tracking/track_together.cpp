@@ -38,7 +38,7 @@ constexpr std::size_t kCellsAlone = 8192;
 
 Surface walkTogether(const Volume& volume, const TrackWorker& worker, const GridEdge& seed, TableKind table,
                      int threads, Clock::time_point start) {
-    SparseBlocks blocks(volume.dims(), threads);
+    SparseBlocks blocks(volume.dims(), threads, SparseBlocks::VertexSlots::Lazy);
     std::vector<Walker> walkers(static_cast<std::size_t>(threads));
     int tagBits = 0;
     while ((1 << tagBits) < threads) ++tagBits;

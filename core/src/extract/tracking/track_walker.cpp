@@ -99,14 +99,22 @@ struct WalkTable {
     };
     std::array<std::array<Walk, kMaxPieces>, 256> walks{};
     // The corners every piece's triangles fit in (five triangles, the most a
-    // piece of either table has): the walk copies this many, a fixed count.
+    // piece of either table has), and those of up to three triangles, which the
+    // walk copies for every piece, a fixed count (about 18 instructions a piece
+    // fewer than copying 15; on the CT skull the test for more is mispredicted
+    // for about one piece in fourteen).
     static constexpr int kPieceCorners = 15;
+    static constexpr int kCommonCorners = 9;
     std::array<std::array<std::int8_t, 12>, 256> pieceOfEdge{};
     std::array<int, 6> link{}, cellStep{}, faceMask{}, faceSide{};
     std::array<std::array<int, 3>, 12> edgeOrigin{};
     std::array<int, 12> edgeAxis{};
     std::array<int, 12> edgeLocal{};  // offset of the edge's origin in a sparse block's local index
     std::array<int, 12> edgeSlot{};   // offset of the edge's vertex id from its cell's first corner's ids in a block
+    // For a cell on its block's upper faces, by its corner class (bit k set when
+    // its local coordinate k is the block's last) and edge: the link to the
+    // block holding the edge's vertex id, and the id's offset there from 3 cell.
+    std::array<std::array<int, 12>, 8> slotLink{}, slotOffset{};
 
     explicit WalkTable(TableKind kind) {
         using detail::SparseBlocks;
@@ -148,6 +156,15 @@ struct WalkTable {
             edgeAxis[e] = cube::edgeAxis(e);
             edgeLocal[e] = detail::SparseBlocks::local(edgeOrigin[e][0], edgeOrigin[e][1], edgeOrigin[e][2]);
             edgeSlot[e] = 3 * edgeLocal[e] + edgeAxis[e];
+            for (int c = 0; c < 8; ++c) {
+                int wrap[3];
+                for (int k = 0; k < 3; ++k) wrap[k] = (c >> k & 1) & edgeOrigin[e][std::size_t(k)];
+                slotLink[std::size_t(c)][std::size_t(e)] = SparseBlocks::kSelf + wrap[0] + 3 * wrap[1] + 9 * wrap[2];
+                slotOffset[std::size_t(c)][std::size_t(e)] =
+                    edgeSlot[e] - 3 * SparseBlocks::kSide *
+                                      (wrap[0] * SparseBlocks::kLocalStep[0] + wrap[1] * SparseBlocks::kLocalStep[1] +
+                                       wrap[2] * SparseBlocks::kLocalStep[2]);
+            }
         }
     }
 };
@@ -242,19 +259,28 @@ private:
             const bool cornersInBlock = local[0] < kLast && local[1] < kLast && local[2] < kLast;
             std::array<std::uint32_t, 12> vertexOf;
             std::uint32_t* const cellSlots = block->vertex.data() + 3 * cell;  // the ids at the cell's first corner
+            // The four rows of slots (y and y + 1, z and z + 1) that hold the cell's edges.
+            if (cornersInBlock) SparseBlocks::vertexRows<Shared>(block, std::uint64_t(0x303) << (cell >> kShift));
+            const int corners = (local[0] == kLast) | (local[1] == kLast) << 1 | (local[2] == kLast) << 2;
             for (unsigned mask = walk.edgeMask; mask != 0; mask &= mask - 1) {
                 const int edge = __builtin_ctz(mask);
-                std::uint32_t& slot =
-                    cornersInBlock ? cellSlots[walk_.edgeSlot[edge]] : vertexSlot(blocks, block, local, edge, w.thread);
+                std::uint32_t& slot = cornersInBlock
+                                          ? cellSlots[walk_.edgeSlot[edge]]
+                                          : *vertexSlot<Shared>(blocks, block, cell, corners, edge, w.thread);
                 std::uint32_t id = Shared ? __atomic_load_n(&slot, __ATOMIC_RELAXED) : slot;
                 if (id == SparseBlocks::kNoVertex) id = newVertex<Shared>(w, out, slot, at, edge);
                 vertexOf[edge] = id;
             }
             // Every piece copies the same count of corners and gives back the spare
             // ones: no loop whose length changes from piece to piece, and so no
-            // mispredicted branch at its end.
+            // mispredicted branch at its end. The rare pieces of four or five
+            // triangles copy the rest too.
             std::uint32_t* indices = out.indices.extend(WalkTable::kPieceCorners);
-            for (int k = 0; k < WalkTable::kPieceCorners; ++k) indices[k] = vertexOf[walk.corners[std::size_t(k)]];
+            for (int k = 0; k < WalkTable::kCommonCorners; ++k) indices[k] = vertexOf[walk.corners[std::size_t(k)]];
+            if (walk.cornerCount > WalkTable::kCommonCorners) {
+                for (int k = WalkTable::kCommonCorners; k < WalkTable::kPieceCorners; ++k)
+                    indices[k] = vertexOf[walk.corners[std::size_t(k)]];
+            }
             out.indices.retract(std::size_t(WalkTable::kPieceCorners - walk.cornerCount));
             const std::size_t sample = grid_.index(at[0], at[1], at[2]);
             for (int k = 0; k < walk.exitCount; ++k) {
@@ -342,22 +368,23 @@ private:
         received.clear();
     }
 
-    // The vertex slot of a cell's edge when the edge's origin may lie in a block further up.
-    std::uint32_t& vertexSlot(SparseBlocks& blocks, Block* block, const int local[3], int edge, int thread) const {
-        const auto& o = walk_.edgeOrigin[edge];
-        const int p[3] = {local[0] + o[0], local[1] + o[1], local[2] + o[2]};
-        const int link = SparseBlocks::kSelf + (p[0] >> kShift) + 3 * (p[1] >> kShift) + 9 * (p[2] >> kShift);
-        Block* holder = blocks.linked(block, link, thread);
-        return holder->vertex[std::size_t(3 * SparseBlocks::local(p[0], p[1], p[2]) + walk_.edgeAxis[edge])];
+    // The vertex slot of an edge of the cell at local index `cell`, on the
+    // block's upper faces as `corners` says, whose origin may lie in a block
+    // further up.
+    template <bool Shared>
+    std::uint32_t* vertexSlot(SparseBlocks& blocks, Block* block, int cell, int corners, int edge, int thread) const {
+        Block* holder = blocks.linked(block, walk_.slotLink[std::size_t(corners)][std::size_t(edge)], thread);
+        const int slot = 3 * cell + walk_.slotOffset[std::size_t(corners)][std::size_t(edge)];
+        SparseBlocks::vertexRows<Shared>(holder, std::uint64_t(1) << (slot / SparseBlocks::kRowSlots));
+        return holder->vertex.data() + slot;
     }
 
     // edgeVertex, through its interior form when both ends of the edge have their six neighbours in the volume.
-    template <int Axis>
-    void vertexAlong(int x, int y, int z, Vertex& v) const {
-        if (grid_.template edgeInterior<Axis>(x, y, z)) {
-            grid_.template interiorEdgeVertex<Axis>(grid_.index(x, y, z), x, y, z, v);
+    void vertexAlong(const GridEdge& e, Vertex& v) const {
+        if (grid_.edgeInterior(e.axis, e.x, e.y, e.z)) {
+            grid_.interiorEdgeVertex(e.axis, grid_.index(e.x, e.y, e.z), e.x, e.y, e.z, v);
         } else {
-            grid_.edgeVertex(x, y, z, Axis, v);
+            grid_.edgeVertex(e.x, e.y, e.z, e.axis, v);
         }
     }
 
@@ -373,11 +400,7 @@ private:
         const auto& o = walk_.edgeOrigin[edge];
         const GridEdge e{at[0] + o[0], at[1] + o[1], at[2] + o[2], walk_.edgeAxis[edge]};
         Vertex& v = *out.vertices.extend(1);
-        switch (e.axis) {
-            case 0: vertexAlong<0>(e.x, e.y, e.z, v); break;
-            case 1: vertexAlong<1>(e.x, e.y, e.z, v); break;
-            default: vertexAlong<2>(e.x, e.y, e.z, v); break;
-        }
+        vertexAlong(e, v);
         const int p[3] = {e.x, e.y, e.z};
         const int m = w.tileMask;
         if (Shared && ((e.axis != 0 && (p[0] & m) == 0) || (e.axis != 1 && (p[1] & m) == 0) ||

@@ -52,7 +52,8 @@ struct alignas(128) Walker {
 
 // A surface walked by one thread, whatever the sample type.
 struct TrackState {
-    explicit TrackState(const Dims& dims, WalkOrder order = WalkOrder::ByBlock) : blocks(dims) {
+    explicit TrackState(const Dims& dims, WalkOrder order = WalkOrder::ByBlock)
+        : blocks(dims, 1, SparseBlocks::VertexSlots::Lazy) {
         walker.queue = PieceQueue(order);
     }
     SparseBlocks blocks;
