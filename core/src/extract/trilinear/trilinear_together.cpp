@@ -58,7 +58,7 @@ Mesh joinParts(std::vector<TrilinearPart>& parts, int idShift, int threads) {
 }  // namespace
 
 Mesh walkTrilinearTogether(const Volume& volume, const TrilinearWalker& walker, const GridEdge& seed, int threads,
-                           std::size_t& piecesVisited) {
+                           std::vector<std::size_t>& piecesByThread) {
     SparseBlocks blocks(volume.dims(), threads);
     std::vector<TrilinearPart> parts(static_cast<std::size_t>(threads));
     int tagBits = 0;
@@ -85,7 +85,8 @@ Mesh walkTrilinearTogether(const Volume& volume, const TrilinearWalker& walker, 
             threads, [&](int t) { walker.walkShared(blocks, parts[std::size_t(t)], exchange); },
             [&] { exchange.stop(); });
     }
-    for (const TrilinearPart& part : parts) piecesVisited += part.piecesVisited;
+    piecesByThread.clear();
+    for (const TrilinearPart& part : parts) piecesByThread.push_back(part.piecesVisited);
     return joinParts(parts, idShift, threads);
 }
 

@@ -422,10 +422,10 @@ Surface trackTrilinear(const Volume& volume, double iso, const GridEdge& seed, i
     if (threads > 1) {
         checkTrilinearSeed(volume, iso, seed);
         const auto walker = makeTrilinearWalker(volume, iso);
-        std::size_t pieces = 0;
+        std::vector<std::size_t> pieces;
         surface.mesh = walkTrilinearTogether(volume, *walker, seed, threads, pieces);
         surface.stats = measureSurface(surface.mesh, volume);
-        surface.stats.cellsVisited = pieces;
+        surface.stats.cellsVisited = std::accumulate(pieces.begin(), pieces.end(), std::size_t(0));
     } else {
         const auto walk = startTrilinear(volume, iso, seed);
         walk->advance(std::numeric_limits<std::size_t>::max());

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "extract/common/sparse_blocks.h"
 #include "extract/tracking/piece_queue.h"
@@ -58,9 +59,9 @@ void checkTrilinearSeed(const Volume& volume, double iso, const GridEdge& seed);
 std::unique_ptr<TrilinearWalker> makeTrilinearWalker(const Volume& volume, double iso);
 
 // The surface from `seed` walked on `threads` (> 1) threads, each walking its
-// own tiles, its parts joined into one mesh (trilinear_together.cpp); adds the
-// pieces emitted to `piecesVisited`.
+// own tiles, its parts joined into one mesh (trilinear_together.cpp);
+// `piecesByThread` gets the pieces each thread emitted.
 Mesh walkTrilinearTogether(const Volume& volume, const TrilinearWalker& walker, const GridEdge& seed, int threads,
-                           std::size_t& piecesVisited);
+                           std::vector<std::size_t>& piecesByThread);
 
 }  // namespace isotrack::detail
