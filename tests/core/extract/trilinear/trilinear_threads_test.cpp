@@ -72,11 +72,14 @@ std::vector<std::array<std::uint32_t, 3>> rankedTriangles(const Mesh& mesh, cons
 
 // Every thread count from 1 to 16 gives the one-thread surface: the same
 // vertices (one per crossed edge, by grid edge, position and normal), the same
-// triangles (the order follows the walk) and the same figures. Returns how
-// many vertices lie inside cells.
-std::size_t requireSameOnEveryThreadCount(const Volume& volume, double iso, const GridEdge& seed) {
+// triangles (the order follows the walk) and the same figures.
+struct OneThread {
+    std::size_t pieces = 0;  // (cell, piece) pairs walked
+    std::size_t inside = 0;  // vertices inside cells
+};
+
+OneThread requireSameOnEveryThreadCount(const Volume& volume, double iso, const GridEdge& seed) {
     const Surface one = trackSurface(volume, iso, seed, TableKind::Trilinear);
-    REQUIRE(one.stats.cellsVisited > 8192);  // more than a walk on several threads walks alone first
     const Ranks ranks = vertexRanks(one.mesh, volume.dims());
     REQUIRE(ranks.size() == one.mesh.vertices.size());  // welded
     const auto triangles = rankedTriangles(one.mesh, volume.dims(), ranks);
@@ -100,10 +103,10 @@ std::size_t requireSameOnEveryThreadCount(const Volume& volume, double iso, cons
         CHECK(many.mesh.vertices.size() == one.mesh.vertices.size());
         CHECK(rankedTriangles(many.mesh, volume.dims(), ranks) == triangles);  // the same vertices too
     }
-    std::size_t inside = 0;
+    OneThread out{one.stats.cellsVisited, 0};
     for (std::size_t v = 0; v < one.mesh.vertexEdges.size(); ++v)
-        inside += GridEdge(one.mesh.vertexEdges[v]).axis == kCellInterior ? 1 : 0;
-    return inside;
+        out.inside += GridEdge(one.mesh.vertexEdges[v]).axis == kCellInterior ? 1 : 0;
+    return out;
 }
 
 // The largest surface's first vertex on a grid edge, a seed for it.
@@ -125,20 +128,37 @@ TEST_CASE("trilinear: 1 to 16 threads track the same surface", "[core][tracking]
         const Volume volume = makeField({"sphere", 150});
         REQUIRE(SparseBlocks::usefulThreads(volume.dims()) == 13);
         const Vec3d c = sphereFieldCenter(150);
-        requireSameOnEveryThreadCount(volume, 0.0,
-                                      nearestCrossedEdge(volume, 0.0, {c[0], c[1] + sphereFieldRadius(150), c[2]}));
+        const GridEdge seed = nearestCrossedEdge(volume, 0.0, {c[0], c[1] + sphereFieldRadius(150), c[2]});
+        // More pieces than a walk on several threads walks alone first.
+        CHECK(requireSameOnEveryThreadCount(volume, 0.0, seed).pieces > 8192);
+    }
+    SECTION("a small sphere: more threads than the volume has tiles for are not started") {
+        const Volume volume = makeField({"sphere", 64});
+        REQUIRE(SparseBlocks::usefulThreads(volume.dims()) == 5);
+        const Vec3d c = sphereFieldCenter(64);
+        const GridEdge seed = nearestCrossedEdge(volume, 0.0, {c[0] + sphereFieldRadius(64), c[1], c[2]});
+        CHECK(requireSameOnEveryThreadCount(volume, 0.0, seed).pieces > 8192);
+    }
+    SECTION("a sphere walked whole before the other threads would start") {
+        const Volume volume = makeField({"sphere", 40});
+        const Vec3d c = sphereFieldCenter(40);
+        const GridEdge seed = nearestCrossedEdge(volume, 0.0, {c[0], c[1], c[2] + sphereFieldRadius(40)});
+        REQUIRE(SparseBlocks::usefulThreads(volume.dims()) == 3);
+        CHECK(requireSameOnEveryThreadCount(volume, 0.0, seed).pieces <= 8192);
     }
     SECTION("the gyroid: one sheet through the whole volume (at most 7 threads used)") {
         const Volume volume = makeField({"gyroid", 80});
         REQUIRE(SparseBlocks::usefulThreads(volume.dims()) == 7);
         const double iso = fieldDefaultIso("gyroid");
-        requireSameOnEveryThreadCount(volume, iso, largestSurfaceSeed(volume, iso));
+        CHECK(requireSameOnEveryThreadCount(volume, iso, largestSurfaceSeed(volume, iso)).pieces > 8192);
     }
     SECTION("noise: the largest of many surfaces, with vertices inside cells (at most 3 threads used)") {
         const Volume volume = makeField({"noise", 40});
         REQUIRE(SparseBlocks::usefulThreads(volume.dims()) == 3);
         const double iso = fieldDefaultIso("noise");
-        CHECK(requireSameOnEveryThreadCount(volume, iso, largestSurfaceSeed(volume, iso)) > 0);
+        const OneThread one = requireSameOnEveryThreadCount(volume, iso, largestSurfaceSeed(volume, iso));
+        CHECK(one.pieces > 8192);
+        CHECK(one.inside > 0);
     }
 }
 
@@ -172,5 +192,5 @@ TEST_CASE("trilinear CT skull: 1 to 16 threads track the same surface", "[core][
     }
     const Volume volume = loadVolume(path);
     // The largest surface at 400.5 is the skull (the benchmark's).
-    requireSameOnEveryThreadCount(volume, 400.5, largestSurfaceSeed(volume, 400.5));
+    CHECK(requireSameOnEveryThreadCount(volume, 400.5, largestSurfaceSeed(volume, 400.5)).pieces > 8192);
 }
