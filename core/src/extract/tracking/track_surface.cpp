@@ -36,7 +36,7 @@ Surface walkWhole(const TrackWorker& worker, TrackState& state, TableKind table,
 }
 
 Surface track(const Volume& volume, double iso, const GridEdge& seed, TableKind table, int threads) {
-    if (table == TableKind::Trilinear) return detail::trackTrilinear(volume, iso, seed);
+    if (table == TableKind::Trilinear) return detail::trackTrilinear(volume, iso, seed, threads);
     if (table == TableKind::Snap) return detail::trackSnap(volume, iso, seed);
     const auto start = Clock::now();
     // More threads than the volume's tiles can share out would only wait on one another.

@@ -2,7 +2,9 @@
 // Room extract/trilinear: extraction with the trilinear table
 // (isotrack/trilinear.h, built in core/src/tables): the exhaustive pass
 // (trilinear_march.cpp) and the walk from a seed and every surface
-// (trilinear_track.cpp). Uses extract/common, support/ and the public headers.
+// (trilinear_track.cpp), on several threads with trilinear_together.cpp
+// (trilinear_walker.h). Uses extract/common, extract/tracking's queue ring and
+// mailboxes, support/ and the public headers.
 //
 // Exhaustive marching cubes with the trilinear table (isotrack/trilinear.h).
 #include <cstddef>
@@ -43,8 +45,11 @@ std::unique_ptr<TrilinearWalk> startTrilinear(const Volume& volume, double iso, 
 Surface finishedTrilinear(TrilinearWalk& walk, const Volume& volume);
 
 // The surface through `seed` by piecewise continuation over the trilinear
-// subcases (one thread); InputError when the seed is outside or not crossed.
-Surface trackTrilinear(const Volume& volume, double iso, const GridEdge& seed);
+// subcases, on up to `threads` threads (no more than the consistent table's
+// track uses); InputError when the seed is outside or not crossed. The same
+// triangles and vertices on every thread count, in an order that varies with
+// more than one.
+Surface trackTrilinear(const Volume& volume, double iso, const GridEdge& seed, int threads = 1);
 
 // Every connected surface of marchTrilinear's mesh, most triangles first.
 std::vector<Surface> allTrilinear(const Volume& volume, double iso, int threads);
