@@ -50,6 +50,7 @@ void numberArcs(AugmentedTree& tree, ContourTree& out) {
     for (std::uint32_t c = 0; c < chains; ++c) byFirst[c] = c;
     sortByKey(byFirst, [&](std::uint32_t c) { return tree.chains[c].smallest; });
     auto node = [&](std::uint32_t k) { return tree.arcOf[k] & ~kNodeBit; };
+    out.arcs.reserve(chains + tree.between.size());  // no growth by doubling, on a tree of many nodes
     out.arcs.resize(chains);
     std::vector<std::uint32_t> renumber(chains);
     for (std::uint32_t a = 0; a < chains; ++a) {
@@ -108,7 +109,8 @@ ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented)
     numberNodes(volume, augmented, out);
     numberArcs(augmented, out);
     fillSamples(augmented, chains, out);
-    Buffer<std::uint32_t>().swap(augmented.arcOf), Buffer<std::uint32_t>().swap(augmented.order);
+    augmented.arcOf = {}, augmented.order = {};
+    augmented.sorted.shrink(0), augmented.spare.shrink(0);
     indexNodeArcs(out);
     return out;
 }

@@ -66,6 +66,48 @@ struct MappedAllocator {
 template <class T>
 using Buffer = std::vector<T, MappedAllocator<T>>;
 
+// A block of pages of its own (mapped, advised for huge pages), which the
+// build's passes use one after another: the sort's two 8-byte-a-sample blocks
+// hold the order, the links and the forests after it, and the merge's state
+// after those, so the kernel zeroes each page once. Contents start undefined
+// on reuse (zero when fresh); each user writes before it reads.
+class Pages {
+public:
+    Pages() = default;
+    explicit Pages(std::size_t bytes);
+    Pages(const Pages&) = delete;
+    Pages& operator=(const Pages&) = delete;
+    Pages(Pages&& other) noexcept;
+    Pages& operator=(Pages&& other) noexcept;
+    ~Pages() { shrink(0); }
+    template <class T>
+    T* at(std::size_t byteOffset) const {
+        return reinterpret_cast<T*>(static_cast<char*>(base_) + byteOffset);
+    }
+    std::size_t bytes() const { return bytes_; }
+    // Hands the pages from `bytes` on back to the kernel.
+    void shrink(std::size_t bytes);
+
+private:
+    void* base_ = nullptr;
+    std::size_t bytes_ = 0;
+};
+
+// Count items of T at some place in Pages.
+template <class T>
+struct Slice {
+    T* items = nullptr;
+    std::size_t count = 0;
+    T& operator[](std::size_t i) const { return items[i]; }
+    T* begin() const { return items; }
+    T* end() const { return items + count; }
+    std::size_t size() const { return count; }
+};
+template <class T>
+Slice<T> sliceOf(const Pages& pages, std::size_t byteOffset, std::size_t count) {
+    return {pages.at<T>(byteOffset), count};
+}
+
 // The total order of the samples: by value, NaN lowest, ties by index.
 template <class T>
 struct SampleOrder {
@@ -126,8 +168,9 @@ struct AugmentedTree {
         std::uint32_t holder, lower, upper;  // the sample peeled, the ranks of the ends
         bool operator<(const Between& other) const { return holder < other.holder; }
     };
-    Buffer<std::uint32_t> order;  // the samples, ascending
-    Buffer<std::uint32_t> arcOf;  // by rank: a regular sample's chain; kNoSample for a node
+    Pages sorted, spare;         // the sort's blocks (SortedSamples), holding the two below
+    Slice<std::uint32_t> order;  // the samples, ascending
+    Slice<std::uint32_t> arcOf;  // by rank: a regular sample's chain; kNoSample for a node
     std::vector<Chain> chains;
     std::vector<Between> between;
 };
@@ -187,8 +230,14 @@ Buffer<std::uint8_t> classifySamples(const Volume& volume, int threads);
 std::int64_t neighbourOffset(const Dims& dims, std::uint8_t position);
 
 // Samples sorted ascending in the order above (a stable radix sort, on up to
-// `threads` threads).
-Buffer<std::uint32_t> sortSamples(const Volume& volume, int threads);
+// `threads` threads): the order in the first half of `sorted` (8 bytes a
+// sample), and `spare`, 8 bytes a sample more that the sort used and left.
+struct SortedSamples {
+    Pages sorted, spare;
+    std::uint32_t count = 0;
+    Slice<std::uint32_t> order() const { return sliceOf<std::uint32_t>(sorted, 0, count); }
+};
+SortedSamples sortSamples(const Volume& volume, int threads);
 // Join tree, split tree and their merge (Carr et al.'s algorithm).
 AugmentedTree augmentedContourTree(const Volume& volume, int threads,
                                    const BuildProgress& progress = BuildProgress{nullptr});
