@@ -294,6 +294,7 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
     Buffer<std::uint8_t>().swap(classes);
     progress.check();
     progress.start(ContourTreeProgress::Phase::Merging, n);
+    sorted.spare.shrink(half + n);  // the rest of the split forest
     const Slice<std::uint8_t> state = sliceOf<std::uint8_t>(sorted.spare, half, n);
     countArcs(joinDown, splitUp, state);
     tree.arcOf = sliceOf<std::uint32_t>(sorted.spare, 0, n);
