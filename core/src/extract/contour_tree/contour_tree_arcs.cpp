@@ -25,7 +25,7 @@ bool isNode(std::uint32_t entry) { return (entry & kNodeBit) != 0; }
 // The nodes, numbered by sample index; marked in arcOf.
 void numberNodes(const Volume& volume, AugmentedTree& tree, ContourTree& out) {
     const auto n = std::uint32_t(tree.arcOf.size());
-    std::vector<std::uint32_t> nodeRanks;  // by sample
+    Buffer<std::uint32_t> nodeRanks;  // by sample
     for (std::uint32_t k = 0; k < n; ++k) {
         if (tree.arcOf[k] == kNoSample) nodeRanks.push_back(k);
     }
@@ -43,38 +43,31 @@ void numberNodes(const Volume& volume, AugmentedTree& tree, ContourTree& out) {
 }
 
 // The arcs: chains first, by their smallest sample, then the edges between
-// two nodes; arcOf renumbered to match, and each node's degrees counted.
+// two nodes, by the sample peeled (the pieces by key); arcOf renumbered to
+// match, and each node's degrees counted.
 void numberArcs(AugmentedTree& tree, ContourTree& out) {
-    const auto chains = std::uint32_t(tree.chains.size());
-    std::vector<std::uint32_t> byFirst(chains);
-    for (std::uint32_t c = 0; c < chains; ++c) byFirst[c] = c;
-    sortByKey(byFirst, [&](std::uint32_t c) { return tree.chains[c].smallest; });
+    const auto count = std::uint32_t(tree.pieces.size());
+    Buffer<std::uint32_t> byKey(count);
+    for (std::uint32_t p = 0; p < count; ++p) byKey[p] = p;
+    sortByKey(byKey, [&](std::uint32_t p) { return tree.pieces[p].key; });
     auto node = [&](std::uint32_t k) { return tree.arcOf[k] & ~kNodeBit; };
-    out.arcs.reserve(chains + tree.between.size());  // no growth by doubling, on a tree of many nodes
-    out.arcs.resize(chains);
-    std::vector<std::uint32_t> renumber(chains);
-    for (std::uint32_t a = 0; a < chains; ++a) {
-        const AugmentedTree::Chain& chain = tree.chains[byFirst[a]];
-        out.arcs[a].lower = node(chain.lower), out.arcs[a].upper = node(chain.upper);
-        renumber[byFirst[a]] = a;
+    out.arcs.resize(count);
+    Buffer<std::uint32_t> renumber(count);
+    for (std::uint32_t a = 0; a < count; ++a) {
+        const AugmentedTree::Piece& piece = tree.pieces[byKey[a]];
+        out.arcs[a].lower = node(piece.lower), out.arcs[a].upper = node(piece.upper);
+        renumber[byKey[a]] = a;
     }
-    std::vector<AugmentedTree::Chain>().swap(tree.chains);
+    Buffer<AugmentedTree::Piece>().swap(tree.pieces);
     for (std::uint32_t& a : tree.arcOf) {
         if (!isNode(a)) a = renumber[a];
     }
-    std::sort(tree.between.begin(), tree.between.end());
-    for (const AugmentedTree::Between& edge : tree.between) {
-        ContourTree::Arc arc;
-        arc.lower = node(edge.lower), arc.upper = node(edge.upper);
-        out.arcs.push_back(arc);
-    }
-    std::vector<AugmentedTree::Between>().swap(tree.between);
     for (const ContourTree::Arc& arc : out.arcs) ++out.nodes[arc.lower].up, ++out.nodes[arc.upper].down;
 }
 
 // The arcs' regular samples, bucketed in ascending order.
 void fillSamples(const AugmentedTree& tree, std::uint32_t chains, ContourTree& out) {
-    std::vector<std::size_t> start(std::size_t(chains) + 1, 0);
+    Buffer<std::size_t> start(std::size_t(chains) + 1, 0);
     for (const std::uint32_t a : tree.arcOf) {
         if (!isNode(a)) ++start[a + 1];
     }
@@ -93,7 +86,7 @@ void indexNodeArcs(ContourTree& out) {
     for (const ContourTree::Arc& arc : out.arcs) ++out.nodeArcBegin[arc.lower + 1], ++out.nodeArcBegin[arc.upper + 1];
     for (std::size_t n = 0; n < out.nodes.size(); ++n) out.nodeArcBegin[n + 1] += out.nodeArcBegin[n];
     out.nodeArcs.resize(out.nodeArcBegin.back());
-    std::vector<std::uint32_t> fill(out.nodeArcBegin.begin(), out.nodeArcBegin.end() - 1);
+    Buffer<std::uint32_t> fill(out.nodeArcBegin.begin(), out.nodeArcBegin.end() - 1);
     for (std::size_t a = 0; a < out.arcs.size(); ++a) {
         out.nodeArcs[fill[out.arcs[a].lower]++] = std::uint32_t(a);
         out.nodeArcs[fill[out.arcs[a].upper]++] = std::uint32_t(a);
@@ -105,7 +98,7 @@ void indexNodeArcs(ContourTree& out) {
 ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented) {
     ContourTree out;
     out.dims = volume.dims();
-    const auto chains = std::uint32_t(augmented.chains.size());
+    const std::uint32_t chains = augmented.chains;
     numberNodes(volume, augmented, out);
     numberArcs(augmented, out);
     fillSamples(augmented, chains, out);

@@ -152,29 +152,33 @@ void mergeTrees(const Slice<std::uint32_t>& joinDown, const Slice<std::uint32_t>
     const auto n = std::uint32_t(state.size());
     constexpr std::uint8_t kRegular = 1 + kOneBelow;
     constexpr std::uint32_t kUnpeeled = kNoSample - 1;
-    std::vector<std::uint32_t> leaves;
+    Buffer<std::uint32_t> leaves;
+    std::size_t nodes = 0;
     for (std::uint32_t k = 0; k < n; ++k) {
         tree.arcOf[k] = state[k] == kRegular ? kUnpeeled : kNoSample;
+        nodes += state[k] == kRegular ? 0 : 1;
         if (isLeaf(state[k])) leaves.push_back(k);
     }
+    tree.pieces.reserve(nodes - 1);  // a tree: one arc fewer than nodes
     // Peeled first from the stack's top: the leaves in the order of their samples.
     sortByKey(leaves, [&](std::uint32_t k) { return tree.order[k]; });
     auto edge = [&](std::uint32_t s, std::uint32_t t) {  // peeled s, its edge to t
         const bool regularS = tree.arcOf[s] != kNoSample, regularT = tree.arcOf[t] != kNoSample;
         if (!regularS && !regularT) {
-            tree.between.push_back({tree.order[s], std::min(s, t), std::max(s, t)});
+            tree.pieces.push_back({std::min(s, t), std::max(s, t), tree.order[s] | AugmentedTree::kEdgeBit});
             return;
         }
         if (!regularS) {  // a walk from node s enters a chain
-            tree.arcOf[t] = std::uint32_t(tree.chains.size());
-            tree.chains.push_back({});
-            (s < t ? tree.chains.back().lower : tree.chains.back().upper) = s;
+            tree.arcOf[t] = std::uint32_t(tree.pieces.size());
+            tree.pieces.push_back({});
+            ++tree.chains;
+            (s < t ? tree.pieces.back().lower : tree.pieces.back().upper) = s;
         }
         assert(!regularS || tree.arcOf[s] != kUnpeeled);  // a regular sample is peeled only after the walk entered it
-        AugmentedTree::Chain& chain = tree.chains[tree.arcOf[regularS ? s : t]];
+        AugmentedTree::Piece& chain = tree.pieces[tree.arcOf[regularS ? s : t]];
         if (regularT) {
             tree.arcOf[t] = tree.arcOf[regularS ? s : t];
-            chain.smallest = std::min(chain.smallest, tree.order[t]);
+            chain.key = std::min(chain.key, tree.order[t]);
         } else {  // and leaves it at node t
             (t < s ? chain.lower : chain.upper) = t;
         }

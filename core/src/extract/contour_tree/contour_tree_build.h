@@ -152,27 +152,32 @@ struct Neighbours {
     }
 };
 
+// The build's lists of a few bytes a node or sample are Buffers too, not on
+// the heap: the executable's heap is never trimmed (app/main.cpp), so what the
+// build put there would stay resident beside the tree it leaves.
+//
 // The contour tree as the merge leaves it, by rank (the position in order):
-// each rank's arc, and the arcs' ends. The merge peels each arc in one walk
-// from a node, sample after sample, so it numbers the chains of regular
+// each rank's arc, and the arcs as pieces. The merge peels each arc in one
+// walk from a node, sample after sample, so it numbers the chains of regular
 // samples as it goes (in the order it peels them) and notes their end nodes;
 // an edge between two nodes is an arc of its own, noted with the sample that
-// the merge peeled it from.
+// the merge peeled it from. Both are pieces of 12 bytes in one list, which
+// holds one per arc (the nodes less one), so it is reserved once.
 struct AugmentedTree {
     static constexpr std::uint32_t kIndexMask = 0x7fffffffu;  // ranks and samples fit below it
-    struct Chain {
+    static constexpr std::uint32_t kEdgeBit = ~kIndexMask;
+    struct Piece {
         std::uint32_t lower = kNoSample, upper = kNoSample;  // the ranks of its end nodes
-        std::uint32_t smallest = kNoSample;                  // its smallest sample index
-    };
-    struct Between {
-        std::uint32_t holder, lower, upper;  // the sample peeled, the ranks of the ends
-        bool operator<(const Between& other) const { return holder < other.holder; }
+        // A chain's smallest sample index, or kEdgeBit and the sample peeled for
+        // an edge between two nodes: the arcs' order (chains by their smallest
+        // sample, then the edges by the sample peeled) is the order of keys.
+        std::uint32_t key = kNoSample;
     };
     Pages sorted, spare;         // the sort's blocks (SortedSamples), holding the two below
     Slice<std::uint32_t> order;  // the samples, ascending
-    Slice<std::uint32_t> arcOf;  // by rank: a regular sample's chain; kNoSample for a node
-    std::vector<Chain> chains;
-    std::vector<Between> between;
+    Slice<std::uint32_t> arcOf;  // by rank: a regular sample's piece; kNoSample for a node
+    Buffer<Piece> pieces;
+    std::uint32_t chains = 0;  // the pieces that are chains
 };
 
 // Reports progress to a ContourTreeProgress, if any, every kStride samples,
@@ -208,9 +213,9 @@ private:
 
 // Sorts items by key(item), a 32-bit key each, read once: the pairs are sorted
 // in place of comparisons that would read the keys anywhere in memory.
-template <class Key>
-void sortByKey(std::vector<std::uint32_t>& items, Key&& key) {
-    std::vector<std::uint64_t> pairs(items.size());
+template <class Items, class Key>
+void sortByKey(Items& items, Key&& key) {
+    Buffer<std::uint64_t> pairs(items.size());
     for (std::size_t i = 0; i < items.size(); ++i) pairs[i] = std::uint64_t(key(items[i])) << 32 | items[i];
     std::sort(pairs.begin(), pairs.end());
     for (std::size_t i = 0; i < items.size(); ++i) items[i] = std::uint32_t(pairs[i]);
