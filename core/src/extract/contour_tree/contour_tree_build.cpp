@@ -18,12 +18,13 @@
 // next rank, so it reads memory in sequence instead of anywhere in the grid.
 //
 // Memory: the order, the two trees and their two union-find forests, 4 bytes
-// each per sample, and the class byte: 21 bytes per sample at the peak. The
+// each per sample, and the class byte: 21 bytes per sample at the peak (17 on
+// one thread, where the split sweep reuses the join sweep's forest). The
 // order, the join tree and the forests live in the sort's two blocks (Pages),
 // so the kernel zeroes only the split tree's and the classes' pages afresh.
 // The forests and classes are gone by the merge, which puts each rank's arc
 // (4 bytes) and state (a byte) where the forests were, and adds its stack of
-// leaves (at most 4 bytes): 21 at most.
+// leaves (at most 4 bytes) and a 12-byte piece per arc.
 #include <algorithm>
 #include <cassert>
 #include <iterator>
@@ -274,6 +275,8 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
     const Slice<std::uint32_t> joinDown = sliceOf<std::uint32_t>(sorted.sorted, half, n);
     const Pages splitPages(half);
     const Slice<std::uint32_t> splitUp = sliceOf<std::uint32_t>(splitPages, 0, n);
+    const bool together = threads > 1;  // the two sweeps at once, each with a forest of its own
+    if (!together) sorted.spare.shrink(half);
     progress.start(ContourTreeProgress::Phase::Sweeping, 2 * std::uint64_t(n));  // both sweeps count
     Buffer<std::uint8_t> classes = classifySamples(volume, threads);
     progress.check();
@@ -282,11 +285,11 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
             sweep<true>(values, dims, tree.order, classes, sliceOf<std::uint32_t>(sorted.spare, 0, n), joinDown,
                         progress);
         };
-        auto split = [&] {
-            sweep<false>(values, dims, tree.order, classes, sliceOf<std::uint32_t>(sorted.spare, half, n), splitUp,
-                         progress);
+        auto split = [&] {  // on one thread, in the join forest's place after it
+            sweep<false>(values, dims, tree.order, classes,
+                         sliceOf<std::uint32_t>(sorted.spare, together ? half : 0, n), splitUp, progress);
         };
-        if (threads > 1) {
+        if (together) {
             std::thread joiner(join);
             split();
             joiner.join();
@@ -299,7 +302,9 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
     progress.check();
     progress.start(ContourTreeProgress::Phase::Merging, n);
     sorted.spare.shrink(half + n);  // the rest of the split forest
-    const Slice<std::uint8_t> state = sliceOf<std::uint8_t>(sorted.spare, half, n);
+    Pages statePages(together ? 0 : n);
+    const Slice<std::uint8_t> state =
+        sliceOf<std::uint8_t>(together ? sorted.spare : statePages, together ? half : 0, n);
     countArcs(joinDown, splitUp, state);
     tree.arcOf = sliceOf<std::uint32_t>(sorted.spare, 0, n);
     mergeTrees(joinDown, splitUp, state, tree, progress);
