@@ -65,20 +65,23 @@ void numberArcs(AugmentedTree& tree, ContourTree& out) {
     for (const ContourTree::Arc& arc : out.arcs) ++out.nodes[arc.lower].up, ++out.nodes[arc.upper].down;
 }
 
-// The arcs' regular samples, bucketed in ascending order.
+// The arcs' regular samples, bucketed in ascending order. The buckets' ends
+// move in a list of 4 bytes a chain, small enough to stay in cache, rather
+// than in the arcs' records (samples < 2^31, so they fit).
 void fillSamples(const AugmentedTree& tree, std::uint32_t chains, ContourTree& out) {
-    Buffer<std::size_t> start(std::size_t(chains) + 1, 0);
+    Buffer<std::uint32_t> end(std::size_t(chains) + 1, 0);
     for (const std::uint32_t a : tree.arcOf) {
-        if (!isNode(a)) ++start[a + 1];
+        if (!isNode(a)) ++end[a + 1];
     }
-    for (std::size_t a = 0; a < chains; ++a) start[a + 1] += start[a];
-    for (std::size_t a = 0; a < chains; ++a) out.arcs[a].begin = out.arcs[a].end = start[a];
-    out.samples.resize(start[chains]);
+    for (std::size_t a = 0; a < chains; ++a) end[a + 1] += end[a];
+    for (std::size_t a = 0; a < chains; ++a) out.arcs[a].begin = end[a];
+    out.samples.resize(end[chains]);
     const auto n = std::uint32_t(tree.arcOf.size());
     for (std::uint32_t k = 0; k < n; ++k) {
         const std::uint32_t a = tree.arcOf[k];
-        if (!isNode(a)) out.samples[out.arcs[a].end++] = tree.order[k];
+        if (!isNode(a)) out.samples[end[a]++] = tree.order[k];
     }
+    for (std::size_t a = 0; a < chains; ++a) out.arcs[a].end = end[a];
 }
 
 void indexNodeArcs(ContourTree& out) {

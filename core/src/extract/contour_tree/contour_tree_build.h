@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <new>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <sys/mman.h>
@@ -211,14 +212,41 @@ private:
     ContourTreeProgress* progress_;
 };
 
-// Sorts items by key(item), a 32-bit key each, read once: the pairs are sorted
-// in place of comparisons that would read the keys anywhere in memory.
+// Sorts items by key(item), a 32-bit key each, read once, stably (equal keys
+// keep their items' order): (key, item) pairs sorted by key, in place of
+// comparisons that would read the keys anywhere in memory. Large lists go by
+// an LSD radix sort (11-bit digits, passes where one digit holds every key
+// skipped), small ones by std::sort.
 template <class Items, class Key>
 void sortByKey(Items& items, Key&& key) {
-    Buffer<std::uint64_t> pairs(items.size());
-    for (std::size_t i = 0; i < items.size(); ++i) pairs[i] = std::uint64_t(key(items[i])) << 32 | items[i];
-    std::sort(pairs.begin(), pairs.end());
-    for (std::size_t i = 0; i < items.size(); ++i) items[i] = std::uint32_t(pairs[i]);
+    const std::size_t n = items.size();
+    Buffer<std::uint64_t> pairs(n);
+    for (std::size_t i = 0; i < n; ++i) pairs[i] = std::uint64_t(key(items[i])) << 32 | i;
+    constexpr int kDigitBits = 11, kPasses = 3;
+    constexpr std::size_t kBuckets = std::size_t(1) << kDigitBits;
+    if (n < 4 * kBuckets) {
+        std::sort(pairs.begin(), pairs.end());  // the index below the key keeps it stable
+    } else {
+        std::vector<std::uint32_t> count(kPasses * kBuckets);
+        auto digit = [](std::uint64_t pair, int pass) {
+            return std::size_t(pair >> (32 + kDigitBits * pass)) & (kBuckets - 1);
+        };
+        for (const std::uint64_t pair : pairs) {
+            for (int pass = 0; pass < kPasses; ++pass) ++count[std::size_t(pass) * kBuckets + digit(pair, pass)];
+        }
+        Buffer<std::uint64_t> spare(n);
+        for (int pass = 0; pass < kPasses; ++pass) {
+            std::uint32_t* c = &count[std::size_t(pass) * kBuckets];
+            if (std::find(c, c + kBuckets, std::uint32_t(n)) != c + kBuckets) continue;  // nothing moves
+            std::uint32_t sum = 0;
+            for (std::size_t b = 0; b < kBuckets; ++b) sum += std::exchange(c[b], sum);
+            for (const std::uint64_t pair : pairs) spare[c[digit(pair, pass)]++] = pair;
+            pairs.swap(spare);
+        }
+    }
+    Items sorted(n);
+    for (std::size_t i = 0; i < n; ++i) sorted[i] = items[std::uint32_t(pairs[i])];
+    items.swap(sorted);
 }
 
 // Each sample's class for the two sweeps (contour_tree_classify.cpp): the join
