@@ -3,15 +3,17 @@
 // samples in ascending order; and the queries on the compressed tree.
 //
 // Passes of compressContourTree, by rank (the position in the sorted order,
-// as the merge leaves the tree): the nodes (the ranks on no chain, numbered by
-// sample index and marked in arcOf), the arcs (the chains numbered by their
-// smallest sample index, then the edges between two nodes in the order of the
-// sample the merge peeled them from; degrees counted from the arcs), and the
-// arcs' sample lists (the ranks in order, bucketed by arc, so each stays
-// sorted). Besides the tree itself: the order and arcOf, 8 bytes a sample.
+// as the merge leaves the tree): one pass finds the nodes (the ranks on no
+// chain) and counts each chain's samples; the nodes are numbered by sample
+// index and marked in arcOf; the arcs are numbered (the chains by their
+// smallest sample index, then the edges between two nodes in the order of
+// the sample the merge peeled them from; degrees counted from the arcs); a
+// second pass buckets the ranks by chain, in order, so each arc's samples
+// stay sorted. Besides the tree itself: the order and arcOf, 8 bytes a sample.
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "extract/contour_tree/contour_tree_build.h"
 
@@ -22,13 +24,22 @@ namespace {
 constexpr std::uint32_t kNodeBit = 0x80000000u;
 bool isNode(std::uint32_t entry) { return (entry & kNodeBit) != 0; }
 
-// The nodes, numbered by sample index; marked in arcOf.
-void numberNodes(const Volume& volume, AugmentedTree& tree, ContourTree& out) {
-    const auto n = std::uint32_t(tree.arcOf.size());
-    Buffer<std::uint32_t> nodeRanks;  // by sample
-    for (std::uint32_t k = 0; k < n; ++k) {
-        if (tree.arcOf[k] == kNoSample) nodeRanks.push_back(k);
+// The nodes (the ranks on no piece), and the count of each piece's samples.
+void findNodes(const AugmentedTree& tree, Buffer<std::uint32_t>& nodeRanks, Buffer<std::uint32_t>& sizes) {
+    nodeRanks.reserve(tree.pieces.size() + 1);  // a tree: one node more than arcs
+    sizes.assign(tree.pieces.size(), 0);
+    for (std::uint32_t k = 0; k < std::uint32_t(tree.arcOf.size()); ++k) {
+        const std::uint32_t piece = tree.arcOf[k];
+        if (piece == kNoSample) {
+            nodeRanks.push_back(k);
+        } else {
+            ++sizes[piece];
+        }
     }
+}
+
+// The nodes, numbered by sample index; marked in arcOf.
+void numberNodes(const Volume& volume, AugmentedTree& tree, Buffer<std::uint32_t>& nodeRanks, ContourTree& out) {
     sortByKey(nodeRanks, [&](std::uint32_t k) { return tree.order[k]; });
     out.nodes.resize(nodeRanks.size());
     visitSamples(volume, [&](const auto* values) {
@@ -43,45 +54,43 @@ void numberNodes(const Volume& volume, AugmentedTree& tree, ContourTree& out) {
 }
 
 // The arcs: chains first, by their smallest sample, then the edges between
-// two nodes, by the sample peeled (the pieces by key); arcOf renumbered to
-// match, and each node's degrees counted.
-void numberArcs(AugmentedTree& tree, ContourTree& out) {
+// two nodes, by the sample peeled (the pieces by key), and each node's
+// degrees counted. Returns the piece of each arc.
+Buffer<std::uint32_t> numberArcs(AugmentedTree& tree, ContourTree& out) {
     const auto count = std::uint32_t(tree.pieces.size());
     Buffer<std::uint32_t> byKey(count);
     for (std::uint32_t p = 0; p < count; ++p) byKey[p] = p;
     sortByKey(byKey, [&](std::uint32_t p) { return tree.pieces[p].key; });
     auto node = [&](std::uint32_t k) { return tree.arcOf[k] & ~kNodeBit; };
     out.arcs.resize(count);
-    Buffer<std::uint32_t> renumber(count);
     for (std::uint32_t a = 0; a < count; ++a) {
         const AugmentedTree::Piece& piece = tree.pieces[byKey[a]];
         out.arcs[a].lower = node(piece.lower), out.arcs[a].upper = node(piece.upper);
-        renumber[byKey[a]] = a;
     }
     Buffer<AugmentedTree::Piece>().swap(tree.pieces);
-    for (std::uint32_t& a : tree.arcOf) {
-        if (!isNode(a)) a = renumber[a];
-    }
     for (const ContourTree::Arc& arc : out.arcs) ++out.nodes[arc.lower].up, ++out.nodes[arc.upper].down;
+    return byKey;
 }
 
-// The arcs' regular samples, bucketed in ascending order. The buckets' ends
-// move in a list of 4 bytes a chain, small enough to stay in cache, rather
+// The arcs' regular samples, bucketed by piece in ascending order; the
+// buckets lie in arc order. `sizes` (by piece) become the buckets' ends; they
+// move in a list of 4 bytes a piece, small enough to stay in cache, rather
 // than in the arcs' records (samples < 2^31, so they fit).
-void fillSamples(const AugmentedTree& tree, std::uint32_t chains, ContourTree& out) {
-    Buffer<std::uint32_t> end(std::size_t(chains) + 1, 0);
-    for (const std::uint32_t a : tree.arcOf) {
-        if (!isNode(a)) ++end[a + 1];
+void fillSamples(const AugmentedTree& tree, std::uint32_t chains, const Buffer<std::uint32_t>& pieceOfArc,
+                 Buffer<std::uint32_t>& sizes, ContourTree& out) {
+    std::uint32_t sum = 0;
+    for (std::uint32_t a = 0; a < chains; ++a) {  // the chains are the first arcs; edges hold no samples
+        std::uint32_t& size = sizes[pieceOfArc[a]];
+        out.arcs[a].begin = sum;
+        sum += std::exchange(size, sum);
     }
-    for (std::size_t a = 0; a < chains; ++a) end[a + 1] += end[a];
-    for (std::size_t a = 0; a < chains; ++a) out.arcs[a].begin = end[a];
-    out.samples.resize(end[chains]);
+    out.samples.resize(sum);
     const auto n = std::uint32_t(tree.arcOf.size());
     for (std::uint32_t k = 0; k < n; ++k) {
-        const std::uint32_t a = tree.arcOf[k];
-        if (!isNode(a)) out.samples[end[a]++] = tree.order[k];
+        const std::uint32_t piece = tree.arcOf[k];
+        if (!isNode(piece)) out.samples[sizes[piece]++] = tree.order[k];
     }
-    for (std::size_t a = 0; a < chains; ++a) out.arcs[a].end = end[a];
+    for (std::uint32_t a = 0; a < chains; ++a) out.arcs[a].end = sizes[pieceOfArc[a]];
 }
 
 void indexNodeArcs(ContourTree& out) {
@@ -102,9 +111,12 @@ ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented)
     ContourTree out;
     out.dims = volume.dims();
     const std::uint32_t chains = augmented.chains;
-    numberNodes(volume, augmented, out);
-    numberArcs(augmented, out);
-    fillSamples(augmented, chains, out);
+    Buffer<std::uint32_t> nodeRanks, sizes;
+    findNodes(augmented, nodeRanks, sizes);
+    numberNodes(volume, augmented, nodeRanks, out);
+    Buffer<std::uint32_t>().swap(nodeRanks);
+    const Buffer<std::uint32_t> pieceOfArc = numberArcs(augmented, out);
+    fillSamples(augmented, chains, pieceOfArc, sizes, out);
     augmented.arcOf = {}, augmented.order = {};
     augmented.sorted.shrink(0), augmented.spare.shrink(0);
     indexNodeArcs(out);
