@@ -11,8 +11,9 @@
 // component in each sweep, and through which neighbour), the two sweeps
 // (union-find with randomized linking and path halving, each root keeping the
 // rank of its component's newest sample; only candidates read their whole
-// neighbourhood), countArcs (each rank's arcs above in the join tree and below
-// in the split tree, from the links) and mergeTrees. The sweeps write the
+// neighbourhood), countLinks (each rank's arcs above in the join tree and below
+// in the split tree, from the links; on two threads each sweep's thread counts
+// its own tree when done) and mergeTrees. The sweeps write the
 // trees by rank, the position in the order: the merge walks each arc in value
 // order, and where arcs do not interleave the next sample of an arc is the
 // next rank, so it reads memory in sequence instead of anywhere in the grid.
@@ -211,13 +212,10 @@ void mergeTrees(const Slice<std::uint32_t>& joinDown, const Slice<std::uint32_t>
 
 // The merge's state from the links: a rank's arcs above it in the join tree
 // are the ranks whose join link is it, and below it in the split tree those
-// whose split link is it.
-void countArcs(const Slice<std::uint32_t>& joinDown, const Slice<std::uint32_t>& splitUp,
-               const Slice<std::uint8_t>& state) {
-    std::fill(state.begin(), state.end(), std::uint8_t(0));
-    for (std::size_t k = 0; k < state.size(); ++k) {
-        if (joinDown[k] != kNoSample) ++state[joinDown[k]];
-        if (splitUp[k] != kNoSample) state[splitUp[k]] = std::uint8_t(state[splitUp[k]] + kOneBelow);
+// whose split link is it; each adds `unit` to out there.
+void countLinks(const Slice<std::uint32_t>& link, const Slice<std::uint8_t>& out, std::uint8_t unit) {
+    for (const std::uint32_t to : link) {
+        if (to != kNoSample) out[to] = std::uint8_t(out[to] + unit);
     }
 }
 
@@ -281,13 +279,23 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
     Buffer<std::uint8_t> classes = classifySamples(volume, threads);
     progress.check();
     visitSamples(volume, [&](const auto* values) {
+        // Together, each thread counts its tree's arcs where its forest was: the
+        // join tree's in the first n bytes of spare, the split tree's at half.
+        auto count = [&](const Slice<std::uint32_t>& link, std::size_t at, std::uint8_t unit) {
+            if (!together || progress.cancelled()) return;
+            const Slice<std::uint8_t> counts = sliceOf<std::uint8_t>(sorted.spare, at, n);
+            std::fill(counts.begin(), counts.end(), std::uint8_t(0));
+            countLinks(link, counts, unit);
+        };
         auto join = [&] {
             sweep<true>(values, dims, tree.order, classes, sliceOf<std::uint32_t>(sorted.spare, 0, n), joinDown,
                         progress);
+            count(joinDown, 0, 1);
         };
         auto split = [&] {  // on one thread, in the join forest's place after it
             sweep<false>(values, dims, tree.order, classes,
                          sliceOf<std::uint32_t>(sorted.spare, together ? half : 0, n), splitUp, progress);
+            count(splitUp, half, kOneBelow);
         };
         if (together) {
             std::thread joiner(join);
@@ -305,7 +313,14 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
     Pages statePages(together ? 0 : n);
     const Slice<std::uint8_t> state =
         sliceOf<std::uint8_t>(together ? sorted.spare : statePages, together ? half : 0, n);
-    countArcs(joinDown, splitUp, state);
+    if (together) {  // the join tree's counts join the split tree's
+        const std::uint8_t* up = sorted.spare.at<std::uint8_t>(0);
+        for (std::size_t k = 0; k < n; ++k) state[k] = std::uint8_t(state[k] + up[k]);
+    } else {
+        std::fill(state.begin(), state.end(), std::uint8_t(0));
+        countLinks(joinDown, state, 1);
+        countLinks(splitUp, state, kOneBelow);
+    }
     tree.arcOf = sliceOf<std::uint32_t>(sorted.spare, 0, n);
     mergeTrees(joinDown, splitUp, state, tree, progress);
     sorted.sorted.shrink(half), sorted.spare.shrink(half);  // the links and state are done with
