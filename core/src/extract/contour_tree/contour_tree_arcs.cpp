@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <thread>
 #include <utility>
 
 #include "extract/contour_tree/contour_tree_build.h"
@@ -24,18 +25,36 @@ namespace {
 constexpr std::uint32_t kNodeBit = 0x80000000u;
 bool isNode(std::uint32_t entry) { return (entry & kNodeBit) != 0; }
 
-// The nodes (the ranks on no piece), and the count of each piece's samples.
-void findNodes(const AugmentedTree& tree, Buffer<std::uint32_t>& nodeRanks, Buffer<std::uint32_t>& sizes) {
+// The ranks in parts, one a thread: fn(part, begin, end).
+template <class Fn>
+void inRanges(std::uint32_t n, std::size_t parts, Fn&& fn) {
+    auto bound = [&](std::size_t p) { return std::uint32_t(std::uint64_t(n) * p / parts); };
+    std::vector<std::thread> helpers;
+    for (std::size_t p = 1; p < parts; ++p) helpers.emplace_back([&, p] { fn(p, bound(p), bound(p + 1)); });
+    fn(0, bound(0), bound(1));
+    for (std::thread& helper : helpers) helper.join();
+}
+
+// The nodes (the ranks on no piece), and the count of each piece's samples
+// in each part of the ranks.
+Buffer<std::uint32_t> findNodes(const AugmentedTree& tree, std::vector<Buffer<std::uint32_t>>& sizes) {
+    std::vector<Buffer<std::uint32_t>> found(sizes.size());
+    inRanges(std::uint32_t(tree.arcOf.size()), sizes.size(),
+             [&](std::size_t p, std::uint32_t begin, std::uint32_t end) {
+                 sizes[p].assign(tree.pieces.size(), 0);
+                 for (std::uint32_t k = begin; k < end; ++k) {
+                     const std::uint32_t piece = tree.arcOf[k];
+                     if (piece == kNoSample) {
+                         found[p].push_back(k);
+                     } else {
+                         ++sizes[p][piece];
+                     }
+                 }
+             });
+    Buffer<std::uint32_t> nodeRanks;
     nodeRanks.reserve(tree.pieces.size() + 1);  // a tree: one node more than arcs
-    sizes.assign(tree.pieces.size(), 0);
-    for (std::uint32_t k = 0; k < std::uint32_t(tree.arcOf.size()); ++k) {
-        const std::uint32_t piece = tree.arcOf[k];
-        if (piece == kNoSample) {
-            nodeRanks.push_back(k);
-        } else {
-            ++sizes[piece];
-        }
-    }
+    for (const Buffer<std::uint32_t>& part : found) nodeRanks.insert(nodeRanks.end(), part.begin(), part.end());
+    return nodeRanks;
 }
 
 // The nodes, numbered by sample index; marked in arcOf.
@@ -73,24 +92,28 @@ Buffer<std::uint32_t> numberArcs(AugmentedTree& tree, ContourTree& out) {
 }
 
 // The arcs' regular samples, bucketed by piece in ascending order; the
-// buckets lie in arc order. `sizes` (by piece) become the buckets' ends; they
-// move in a list of 4 bytes a piece, small enough to stay in cache, rather
-// than in the arcs' records (samples < 2^31, so they fit).
+// buckets lie in arc order, and each part of the ranks fills its own share of
+// each bucket, after the shares of the parts before it. `sizes` (by part and
+// piece) become the shares' ends; they move in lists of 4 bytes a piece,
+// small enough to stay in cache, rather than in the arcs' records (samples
+// < 2^31, so they fit).
 void fillSamples(const AugmentedTree& tree, std::uint32_t chains, const Buffer<std::uint32_t>& pieceOfArc,
-                 Buffer<std::uint32_t>& sizes, ContourTree& out) {
+                 std::vector<Buffer<std::uint32_t>>& sizes, ContourTree& out) {
     std::uint32_t sum = 0;
     for (std::uint32_t a = 0; a < chains; ++a) {  // the chains are the first arcs; edges hold no samples
-        std::uint32_t& size = sizes[pieceOfArc[a]];
         out.arcs[a].begin = sum;
-        sum += std::exchange(size, sum);
+        for (Buffer<std::uint32_t>& part : sizes) sum += std::exchange(part[pieceOfArc[a]], sum);
     }
     out.samples.resize(sum);
-    const auto n = std::uint32_t(tree.arcOf.size());
-    for (std::uint32_t k = 0; k < n; ++k) {
-        const std::uint32_t piece = tree.arcOf[k];
-        if (!isNode(piece)) out.samples[sizes[piece]++] = tree.order[k];
-    }
-    for (std::uint32_t a = 0; a < chains; ++a) out.arcs[a].end = sizes[pieceOfArc[a]];
+    inRanges(std::uint32_t(tree.arcOf.size()), sizes.size(),
+             [&](std::size_t p, std::uint32_t begin, std::uint32_t end) {
+                 std::uint32_t* at = sizes[p].data();
+                 for (std::uint32_t k = begin; k < end; ++k) {
+                     const std::uint32_t piece = tree.arcOf[k];
+                     if (!isNode(piece)) out.samples[at[piece]++] = tree.order[k];
+                 }
+             });
+    for (std::uint32_t a = 0; a < chains; ++a) out.arcs[a].end = sizes.back()[pieceOfArc[a]];
 }
 
 void indexNodeArcs(ContourTree& out) {
@@ -107,12 +130,13 @@ void indexNodeArcs(ContourTree& out) {
 
 }  // namespace
 
-ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented) {
+ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented, int threads) {
     ContourTree out;
     out.dims = volume.dims();
     const std::uint32_t chains = augmented.chains;
-    Buffer<std::uint32_t> nodeRanks, sizes;
-    findNodes(augmented, nodeRanks, sizes);
+    const bool large = augmented.arcOf.size() >= (std::size_t(1) << 16);
+    std::vector<Buffer<std::uint32_t>> sizes(large ? std::size_t(std::clamp(threads, 1, 4)) : 1);
+    Buffer<std::uint32_t> nodeRanks = findNodes(augmented, sizes);
     numberNodes(volume, augmented, nodeRanks, out);
     Buffer<std::uint32_t>().swap(nodeRanks);
     const Buffer<std::uint32_t> pieceOfArc = numberArcs(augmented, out);

@@ -332,7 +332,7 @@ ContourTree computeContourTreeImpl(const Volume& volume, int threads, ContourTre
     const BuildProgress build(progress);
     AugmentedTree augmented = augmentedContourTree(volume, threads, build);
     build.start(ContourTreeProgress::Phase::Arcs, 0);
-    ContourTree tree = compressContourTree(volume, std::move(augmented));
+    ContourTree tree = compressContourTree(volume, std::move(augmented), threads);
     build.start(ContourTreeProgress::Phase::Done, 0);
     return tree;
 }

@@ -274,7 +274,8 @@ SortedSamples sortSamples(const Volume& volume, int threads);
 // Join tree, split tree and their merge (Carr et al.'s algorithm).
 AugmentedTree augmentedContourTree(const Volume& volume, int threads,
                                    const BuildProgress& progress = BuildProgress{nullptr});
-// Chains of regular samples into arcs between the critical ones.
-ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented);
+// Chains of regular samples into arcs between the critical ones (the passes
+// over the ranks on up to 4 of `threads`).
+ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented, int threads);
 
 }  // namespace isotrack::detail
