@@ -97,13 +97,15 @@ Buffer<std::uint32_t> numberArcs(AugmentedTree& tree, ContourTree& out) {
 // piece) become the shares' ends; they move in lists of 4 bytes a piece,
 // small enough to stay in cache, rather than in the arcs' records (samples
 // < 2^31, so they fit).
-void fillSamples(const AugmentedTree& tree, std::uint32_t chains, const Buffer<std::uint32_t>& pieceOfArc,
+void fillSamples(const AugmentedTree& tree, std::uint32_t chains, Buffer<std::uint32_t>&& pieceOfArc,
                  std::vector<Buffer<std::uint32_t>>& sizes, ContourTree& out) {
     std::uint32_t sum = 0;
     for (std::uint32_t a = 0; a < chains; ++a) {  // the chains are the first arcs; edges hold no samples
         out.arcs[a].begin = sum;
         for (Buffer<std::uint32_t>& part : sizes) sum += std::exchange(part[pieceOfArc[a]], sum);
+        out.arcs[a].end = sum;
     }
+    Buffer<std::uint32_t>().swap(pieceOfArc);  // gone before the samples come
     out.samples.resize(sum);
     inRanges(std::uint32_t(tree.arcOf.size()), sizes.size(),
              [&](std::size_t p, std::uint32_t begin, std::uint32_t end) {
@@ -113,7 +115,6 @@ void fillSamples(const AugmentedTree& tree, std::uint32_t chains, const Buffer<s
                      if (!isNode(piece)) out.samples[at[piece]++] = tree.order[k];
                  }
              });
-    for (std::uint32_t a = 0; a < chains; ++a) out.arcs[a].end = sizes.back()[pieceOfArc[a]];
 }
 
 void indexNodeArcs(ContourTree& out) {
@@ -139,8 +140,7 @@ ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented,
     Buffer<std::uint32_t> nodeRanks = findNodes(augmented, sizes);
     numberNodes(volume, augmented, nodeRanks, out);
     Buffer<std::uint32_t>().swap(nodeRanks);
-    const Buffer<std::uint32_t> pieceOfArc = numberArcs(augmented, out);
-    fillSamples(augmented, chains, pieceOfArc, sizes, out);
+    fillSamples(augmented, chains, numberArcs(augmented, out), sizes, out);
     augmented.arcOf = {}, augmented.order = {};
     augmented.sorted.shrink(0), augmented.spare.shrink(0);
     indexNodeArcs(out);
