@@ -4,12 +4,15 @@
 //
 // Samples of up to 4 bytes are sorted as (key, index) pairs of 8 bytes, read
 // and written in sequence: 8-bit digits for keys of 8 and 16 bits, 11-bit
-// digits (3 passes) for 32. A pass where one digit holds every key is
-// skipped. Each pass counts and scatters on up to `threads` threads, each
-// thread a contiguous part (its keys go after those of the parts before it in
-// every bucket, which keeps the sort stable). 16 bytes a sample at the peak,
-// 20 while the order is copied out. 8-byte samples are sorted by index
-// through their keys, 16 bits a pass.
+// digits (3 passes) for 32. One read of the values counts the digits of every
+// pass; a pass where one digit holds every key is skipped. Each pass scatters
+// on up to `threads` threads, each thread a contiguous part (its keys go after
+// those of the parts before it in every bucket, which keeps the sort stable),
+// and counts the next pass's digits by the part of its output they land in,
+// which is that pass's input. The pairs go back and forth between the two
+// blocks of SortedSamples, 16 bytes a sample; the last pass writes only the
+// indices, into the first half of `sorted`. 8-byte samples are sorted by
+// index through their keys, 16 bits a pass.
 #include <algorithm>
 #include <array>
 #include <cstring>
