@@ -3,15 +3,18 @@
 // samples in ascending order; and the queries on the compressed tree.
 //
 // Passes of compressContourTree, by rank (the position in the sorted order,
-// as the merge leaves the tree): the nodes (the ranks on no chain, numbered by
-// sample index and marked in arcOf), the arcs (the chains numbered by their
-// smallest sample index, then the edges between two nodes in the order of the
-// sample the merge peeled them from; degrees counted from the arcs), and the
-// arcs' sample lists (the ranks in order, bucketed by arc, so each stays
-// sorted). Besides the tree itself: the order and arcOf, 8 bytes a sample.
+// as the merge leaves the tree): one pass finds the nodes (the ranks on no
+// chain) and counts each chain's samples; the nodes are numbered by sample
+// index and marked in arcOf; the arcs are numbered (the chains by their
+// smallest sample index, then the edges between two nodes in the order of
+// the sample the merge peeled them from; degrees counted from the arcs); a
+// second pass buckets the ranks by chain, in order, so each arc's samples
+// stay sorted. Besides the tree itself: the order and arcOf, 8 bytes a sample.
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <thread>
+#include <utility>
 
 #include "extract/contour_tree/contour_tree_build.h"
 
@@ -22,13 +25,40 @@ namespace {
 constexpr std::uint32_t kNodeBit = 0x80000000u;
 bool isNode(std::uint32_t entry) { return (entry & kNodeBit) != 0; }
 
+// The ranks in parts, one a thread: fn(part, begin, end).
+template <class Fn>
+void inRanges(std::uint32_t n, std::size_t parts, Fn&& fn) {
+    auto bound = [&](std::size_t p) { return std::uint32_t(std::uint64_t(n) * p / parts); };
+    std::vector<std::thread> helpers;
+    for (std::size_t p = 1; p < parts; ++p) helpers.emplace_back([&, p] { fn(p, bound(p), bound(p + 1)); });
+    fn(0, bound(0), bound(1));
+    for (std::thread& helper : helpers) helper.join();
+}
+
+// The nodes (the ranks on no piece), and the count of each piece's samples
+// in each part of the ranks.
+Buffer<std::uint32_t> findNodes(const AugmentedTree& tree, std::vector<Buffer<std::uint32_t>>& sizes) {
+    std::vector<Buffer<std::uint32_t>> found(sizes.size());
+    inRanges(std::uint32_t(tree.arcOf.size()), sizes.size(),
+             [&](std::size_t p, std::uint32_t begin, std::uint32_t end) {
+                 sizes[p].assign(tree.pieces.size(), 0);
+                 for (std::uint32_t k = begin; k < end; ++k) {
+                     const std::uint32_t piece = tree.arcOf[k];
+                     if (piece == kNoSample) {
+                         found[p].push_back(k);
+                     } else {
+                         ++sizes[p][piece];
+                     }
+                 }
+             });
+    Buffer<std::uint32_t> nodeRanks;
+    nodeRanks.reserve(tree.pieces.size() + 1);  // a tree: one node more than arcs
+    for (const Buffer<std::uint32_t>& part : found) nodeRanks.insert(nodeRanks.end(), part.begin(), part.end());
+    return nodeRanks;
+}
+
 // The nodes, numbered by sample index; marked in arcOf.
-void numberNodes(const Volume& volume, AugmentedTree& tree, ContourTree& out) {
-    const auto n = std::uint32_t(tree.arcOf.size());
-    std::vector<std::uint32_t> nodeRanks;  // by sample
-    for (std::uint32_t k = 0; k < n; ++k) {
-        if (tree.arcOf[k] == kNoSample) nodeRanks.push_back(k);
-    }
+void numberNodes(const Volume& volume, AugmentedTree& tree, Buffer<std::uint32_t>& nodeRanks, ContourTree& out) {
     sortByKey(nodeRanks, [&](std::uint32_t k) { return tree.order[k]; });
     out.nodes.resize(nodeRanks.size());
     visitSamples(volume, [&](const auto* values) {
@@ -43,48 +73,48 @@ void numberNodes(const Volume& volume, AugmentedTree& tree, ContourTree& out) {
 }
 
 // The arcs: chains first, by their smallest sample, then the edges between
-// two nodes; arcOf renumbered to match, and each node's degrees counted.
-void numberArcs(AugmentedTree& tree, ContourTree& out) {
-    const auto chains = std::uint32_t(tree.chains.size());
-    std::vector<std::uint32_t> byFirst(chains);
-    for (std::uint32_t c = 0; c < chains; ++c) byFirst[c] = c;
-    sortByKey(byFirst, [&](std::uint32_t c) { return tree.chains[c].smallest; });
+// two nodes, by the sample peeled (the pieces by key), and each node's
+// degrees counted. Returns the piece of each arc.
+Buffer<std::uint32_t> numberArcs(AugmentedTree& tree, ContourTree& out) {
+    const auto count = std::uint32_t(tree.pieces.size());
+    Buffer<std::uint32_t> byKey(count);
+    for (std::uint32_t p = 0; p < count; ++p) byKey[p] = p;
+    sortByKey(byKey, [&](std::uint32_t p) { return tree.pieces[p].key; });
     auto node = [&](std::uint32_t k) { return tree.arcOf[k] & ~kNodeBit; };
-    out.arcs.resize(chains);
-    std::vector<std::uint32_t> renumber(chains);
-    for (std::uint32_t a = 0; a < chains; ++a) {
-        const AugmentedTree::Chain& chain = tree.chains[byFirst[a]];
-        out.arcs[a].lower = node(chain.lower), out.arcs[a].upper = node(chain.upper);
-        renumber[byFirst[a]] = a;
+    out.arcs.resize(count);
+    for (std::uint32_t a = 0; a < count; ++a) {
+        const AugmentedTree::Piece& piece = tree.pieces[byKey[a]];
+        out.arcs[a].lower = node(piece.lower), out.arcs[a].upper = node(piece.upper);
     }
-    std::vector<AugmentedTree::Chain>().swap(tree.chains);
-    for (std::uint32_t& a : tree.arcOf) {
-        if (!isNode(a)) a = renumber[a];
-    }
-    std::sort(tree.between.begin(), tree.between.end());
-    for (const AugmentedTree::Between& edge : tree.between) {
-        ContourTree::Arc arc;
-        arc.lower = node(edge.lower), arc.upper = node(edge.upper);
-        out.arcs.push_back(arc);
-    }
-    std::vector<AugmentedTree::Between>().swap(tree.between);
+    Buffer<AugmentedTree::Piece>().swap(tree.pieces);
     for (const ContourTree::Arc& arc : out.arcs) ++out.nodes[arc.lower].up, ++out.nodes[arc.upper].down;
+    return byKey;
 }
 
-// The arcs' regular samples, bucketed in ascending order.
-void fillSamples(const AugmentedTree& tree, std::uint32_t chains, ContourTree& out) {
-    std::vector<std::size_t> start(std::size_t(chains) + 1, 0);
-    for (const std::uint32_t a : tree.arcOf) {
-        if (!isNode(a)) ++start[a + 1];
+// The arcs' regular samples, bucketed by piece in ascending order; the
+// buckets lie in arc order, and each part of the ranks fills its own share of
+// each bucket, after the shares of the parts before it. `sizes` (by part and
+// piece) become the shares' ends; they move in lists of 4 bytes a piece,
+// small enough to stay in cache, rather than in the arcs' records (samples
+// < 2^31, so they fit).
+void fillSamples(const AugmentedTree& tree, std::uint32_t chains, Buffer<std::uint32_t>&& pieceOfArc,
+                 std::vector<Buffer<std::uint32_t>>& sizes, ContourTree& out) {
+    std::uint32_t sum = 0;
+    for (std::uint32_t a = 0; a < chains; ++a) {  // the chains are the first arcs; edges hold no samples
+        out.arcs[a].begin = sum;
+        for (Buffer<std::uint32_t>& part : sizes) sum += std::exchange(part[pieceOfArc[a]], sum);
+        out.arcs[a].end = sum;
     }
-    for (std::size_t a = 0; a < chains; ++a) start[a + 1] += start[a];
-    for (std::size_t a = 0; a < chains; ++a) out.arcs[a].begin = out.arcs[a].end = start[a];
-    out.samples.resize(start[chains]);
-    const auto n = std::uint32_t(tree.arcOf.size());
-    for (std::uint32_t k = 0; k < n; ++k) {
-        const std::uint32_t a = tree.arcOf[k];
-        if (!isNode(a)) out.samples[out.arcs[a].end++] = tree.order[k];
-    }
+    Buffer<std::uint32_t>().swap(pieceOfArc);  // gone before the samples come
+    out.samples.resize(sum);
+    inRanges(std::uint32_t(tree.arcOf.size()), sizes.size(),
+             [&](std::size_t p, std::uint32_t begin, std::uint32_t end) {
+                 std::uint32_t* at = sizes[p].data();
+                 for (std::uint32_t k = begin; k < end; ++k) {
+                     const std::uint32_t piece = tree.arcOf[k];
+                     if (!isNode(piece)) out.samples[at[piece]++] = tree.order[k];
+                 }
+             });
 }
 
 void indexNodeArcs(ContourTree& out) {
@@ -92,7 +122,7 @@ void indexNodeArcs(ContourTree& out) {
     for (const ContourTree::Arc& arc : out.arcs) ++out.nodeArcBegin[arc.lower + 1], ++out.nodeArcBegin[arc.upper + 1];
     for (std::size_t n = 0; n < out.nodes.size(); ++n) out.nodeArcBegin[n + 1] += out.nodeArcBegin[n];
     out.nodeArcs.resize(out.nodeArcBegin.back());
-    std::vector<std::uint32_t> fill(out.nodeArcBegin.begin(), out.nodeArcBegin.end() - 1);
+    Buffer<std::uint32_t> fill(out.nodeArcBegin.begin(), out.nodeArcBegin.end() - 1);
     for (std::size_t a = 0; a < out.arcs.size(); ++a) {
         out.nodeArcs[fill[out.arcs[a].lower]++] = std::uint32_t(a);
         out.nodeArcs[fill[out.arcs[a].upper]++] = std::uint32_t(a);
@@ -101,14 +131,18 @@ void indexNodeArcs(ContourTree& out) {
 
 }  // namespace
 
-ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented) {
+ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented, int threads) {
     ContourTree out;
     out.dims = volume.dims();
-    const auto chains = std::uint32_t(augmented.chains.size());
-    numberNodes(volume, augmented, out);
-    numberArcs(augmented, out);
-    fillSamples(augmented, chains, out);
-    Buffer<std::uint32_t>().swap(augmented.arcOf), Buffer<std::uint32_t>().swap(augmented.order);
+    const std::uint32_t chains = augmented.chains;
+    const bool large = augmented.arcOf.size() >= (std::size_t(1) << 16);
+    std::vector<Buffer<std::uint32_t>> sizes(large ? std::size_t(std::clamp(threads, 1, 4)) : 1);
+    Buffer<std::uint32_t> nodeRanks = findNodes(augmented, sizes);
+    numberNodes(volume, augmented, nodeRanks, out);
+    Buffer<std::uint32_t>().swap(nodeRanks);
+    fillSamples(augmented, chains, numberArcs(augmented, out), sizes, out);
+    augmented.arcOf = {}, augmented.order = {};
+    augmented.sorted.shrink(0), augmented.spare.shrink(0);
     indexNodeArcs(out);
     return out;
 }

@@ -11,21 +11,28 @@
 // component in each sweep, and through which neighbour), the two sweeps
 // (union-find with randomized linking and path halving, each root keeping the
 // rank of its component's newest sample; only candidates read their whole
-// neighbourhood), mergeTrees. The sweeps write the trees and degrees by rank,
-// the position in the order: the merge walks each arc in value order, and
-// where arcs do not interleave the next sample of an arc is the next rank, so
-// it reads memory in sequence instead of anywhere in the grid.
+// neighbourhood), countLinks (each rank's arcs above in the join tree and below
+// in the split tree, from the links; on two threads each sweep's thread counts
+// its own tree when done) and mergeTrees. The sweeps write the
+// trees by rank, the position in the order: the merge walks each arc in value
+// order, and where arcs do not interleave the next sample of an arc is the
+// next rank, so it reads memory in sequence instead of anywhere in the grid.
 //
 // Memory: the order, the two trees and their two union-find forests, 4 bytes
-// each per sample, the class byte and a degree byte per tree: 23 bytes per
-// sample at the peak. The forests and classes are gone by the merge, which
-// packs the degrees into one byte and adds each rank's arc (4 bytes) and its
-// stack of leaves (at most 4 bytes): 21 at most.
+// each per sample, and the class byte: 21 bytes per sample at the peak (17 on
+// one thread, where the split sweep reuses the join sweep's forest). The
+// order, the join tree and the forests live in the sort's two blocks (Pages),
+// so the kernel zeroes only the split tree's and the classes' pages afresh.
+// The forests and classes are gone by the merge, which puts each rank's arc
+// (4 bytes) and state (a byte) where the forests were, and adds its stack of
+// leaves (at most 4 bytes) and a 12-byte piece per arc.
 #include <algorithm>
 #include <cassert>
 #include <iterator>
 #include <thread>
 #include <utility>
+
+#include <unistd.h>
 
 #include "extract/contour_tree/contour_tree_build.h"
 #include "isotrack/errors.h"
@@ -40,7 +47,7 @@ namespace {
 // path halving, without storing ranks).
 constexpr std::uint32_t kRootBit = 0x80000000u;
 
-std::uint32_t findRoot(Buffer<std::uint32_t>& forest, std::uint32_t s) {
+std::uint32_t findRoot(const Slice<std::uint32_t>& forest, std::uint32_t s) {
     for (;;) {
         const std::uint32_t parent = forest[s];
         if (parent & kRootBit) return s;
@@ -64,14 +71,14 @@ constexpr std::uint32_t kPrefetchDistance = 16;
 // One sweep: the join tree when Up (from the top, 6 neighbours), the split tree
 // otherwise (from the bottom, 18 neighbours), both by rank (k, the position in
 // the order). When the sample of rank k meets a component, the rank of the
-// component's newest sample gets link = k, and degree[k] counts the components
-// it meets; both are written where the merge reads them, with no renumbering
-// after. A sample of one class (classifySamples) meets the component of the
-// one neighbour its class names, or none; only candidates read their whole
-// neighbourhood.
+// component's newest sample gets link = k, where the merge reads it, with no
+// renumbering after. A sample of one class (classifySamples) meets the
+// component of the one neighbour its class names, or none; only candidates
+// read their whole neighbourhood. The forest (by sample) needs no start: each
+// sample's entry is written when the sweep reaches it, before it is read.
 template <bool Up, class T>
-void sweep(const T* values, const Dims& dims, const Buffer<std::uint32_t>& order, const Buffer<std::uint8_t>& classes,
-           Buffer<std::uint32_t>& link, Buffer<std::uint8_t>& degree, const BuildProgress& progress) {
+void sweep(const T* values, const Dims& dims, const Slice<std::uint32_t>& order, const Buffer<std::uint8_t>& classes,
+           const Slice<std::uint32_t>& forest, const Slice<std::uint32_t>& link, const BuildProgress& progress) {
     const auto n = std::uint32_t(order.size());
     const SampleOrder<T> cmp{values};
     const Neighbours neighbours{dims};
@@ -84,9 +91,7 @@ void sweep(const T* values, const Dims& dims, const Buffer<std::uint32_t>& order
     }
     auto classOf = [&](std::uint32_t s) { return std::uint8_t(Up ? classes[s] & 7u : classes[s] >> 3); };
     auto rankAt = [&](std::uint32_t step) { return Up ? n - 1 - step : step; };
-    Buffer<std::uint32_t> forest(n);  // by sample; a root holds the rank of its newest sample
-    link.assign(n, kNoSample);
-    degree.assign(n, 0);
+    std::fill(link.begin(), link.end(), kNoSample);
     auto meet = [&](std::uint32_t k, std::uint32_t& root, std::uint32_t r) {
         link[forest[r] & ~kRootBit] = k;
         const bool keep = linkPriority(root) > linkPriority(r);
@@ -110,7 +115,6 @@ void sweep(const T* values, const Dims& dims, const Buffer<std::uint32_t>& order
         std::uint32_t root = s;
         if (c == 0) continue;
         if (c != kCandidate) {
-            degree[k] = 1;
             meet(k, root, findRoot(forest, std::uint32_t(std::int64_t(s) + offset[c])));
             continue;
         }
@@ -118,7 +122,6 @@ void sweep(const T* values, const Dims& dims, const Buffer<std::uint32_t>& order
             if (Up ? !cmp.below(s, m) : !cmp.below(m, s)) return;  // not swept yet
             const std::uint32_t r = findRoot(forest, m);
             if (r == root) return;
-            ++degree[k];
             meet(k, root, r);
         });
     }
@@ -132,7 +135,7 @@ bool isGone(std::uint8_t state) { return (state & 7u) == 7u; }
 bool isLeaf(std::uint8_t state) { return !isGone(state) && (state & 7u) + (state >> 3) == 1; }
 
 // Follows link past removed samples, shortening the path on the way.
-std::uint32_t liveLink(Buffer<std::uint32_t>& link, const Buffer<std::uint8_t>& state, std::uint32_t s) {
+std::uint32_t liveLink(const Slice<std::uint32_t>& link, const Slice<std::uint8_t>& state, std::uint32_t s) {
     std::uint32_t t = link[s];
     while (t != kNoSample && isGone(state[t])) t = link[t];
     for (std::uint32_t u = s; u != t;) u = std::exchange(link[u], t);  // the whole path points past them now
@@ -146,35 +149,38 @@ std::uint32_t liveLink(Buffer<std::uint32_t>& link, const Buffer<std::uint8_t>& 
 // node of the contour tree when it is one of either tree (Carr et al.: the
 // contour tree's up-degree is the join tree's, its down-degree the split
 // tree's), so the regular ones are known before the merge.
-void mergeTrees(Buffer<std::uint32_t>& joinDown, Buffer<std::uint32_t>& splitUp, Buffer<std::uint8_t>& state,
-                AugmentedTree& tree, const BuildProgress& progress) {
+void mergeTrees(const Slice<std::uint32_t>& joinDown, const Slice<std::uint32_t>& splitUp,
+                const Slice<std::uint8_t>& state, AugmentedTree& tree, const BuildProgress& progress) {
     const auto n = std::uint32_t(state.size());
     constexpr std::uint8_t kRegular = 1 + kOneBelow;
     constexpr std::uint32_t kUnpeeled = kNoSample - 1;
-    tree.arcOf.resize(n);
-    std::vector<std::uint32_t> leaves;
+    Buffer<std::uint32_t> leaves;
+    std::size_t nodes = 0;
     for (std::uint32_t k = 0; k < n; ++k) {
         tree.arcOf[k] = state[k] == kRegular ? kUnpeeled : kNoSample;
+        nodes += state[k] == kRegular ? 0 : 1;
         if (isLeaf(state[k])) leaves.push_back(k);
     }
+    tree.pieces.reserve(nodes - 1);  // a tree: one arc fewer than nodes
     // Peeled first from the stack's top: the leaves in the order of their samples.
     sortByKey(leaves, [&](std::uint32_t k) { return tree.order[k]; });
     auto edge = [&](std::uint32_t s, std::uint32_t t) {  // peeled s, its edge to t
         const bool regularS = tree.arcOf[s] != kNoSample, regularT = tree.arcOf[t] != kNoSample;
         if (!regularS && !regularT) {
-            tree.between.push_back({tree.order[s], std::min(s, t), std::max(s, t)});
+            tree.pieces.push_back({std::min(s, t), std::max(s, t), tree.order[s] | AugmentedTree::kEdgeBit});
             return;
         }
         if (!regularS) {  // a walk from node s enters a chain
-            tree.arcOf[t] = std::uint32_t(tree.chains.size());
-            tree.chains.push_back({});
-            (s < t ? tree.chains.back().lower : tree.chains.back().upper) = s;
+            tree.arcOf[t] = std::uint32_t(tree.pieces.size());
+            tree.pieces.push_back({});
+            ++tree.chains;
+            (s < t ? tree.pieces.back().lower : tree.pieces.back().upper) = s;
         }
         assert(!regularS || tree.arcOf[s] != kUnpeeled);  // a regular sample is peeled only after the walk entered it
-        AugmentedTree::Chain& chain = tree.chains[tree.arcOf[regularS ? s : t]];
+        AugmentedTree::Piece& chain = tree.pieces[tree.arcOf[regularS ? s : t]];
         if (regularT) {
             tree.arcOf[t] = tree.arcOf[regularS ? s : t];
-            chain.smallest = std::min(chain.smallest, tree.order[t]);
+            chain.key = std::min(chain.key, tree.order[t]);
         } else {  // and leaves it at node t
             (t < s ? chain.lower : chain.upper) = t;
         }
@@ -204,7 +210,48 @@ void mergeTrees(Buffer<std::uint32_t>& joinDown, Buffer<std::uint32_t>& splitUp,
     }
 }
 
+// The merge's state from the links: a rank's arcs above it in the join tree
+// are the ranks whose join link is it, and below it in the split tree those
+// whose split link is it; each adds `unit` to out there.
+void countLinks(const Slice<std::uint32_t>& link, const Slice<std::uint8_t>& out, std::uint8_t unit) {
+    for (const std::uint32_t to : link) {
+        if (to != kNoSample) out[to] = std::uint8_t(out[to] + unit);
+    }
+}
+
 }  // namespace
+
+Pages::Pages(std::size_t bytes) : bytes_(bytes) {
+    if (bytes == 0) return;
+    base_ = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (base_ == MAP_FAILED) {
+        base_ = nullptr, bytes_ = 0;
+        throw std::bad_alloc();
+    }
+#if defined(MADV_HUGEPAGE)
+    madvise(base_, bytes, MADV_HUGEPAGE);  // fewer faults and TLB misses; only a hint
+#endif
+}
+
+Pages::Pages(Pages&& other) noexcept
+    : base_(std::exchange(other.base_, nullptr)), bytes_(std::exchange(other.bytes_, 0)) {}
+
+Pages& Pages::operator=(Pages&& other) noexcept {
+    if (this != &other) {
+        shrink(0);
+        base_ = std::exchange(other.base_, nullptr), bytes_ = std::exchange(other.bytes_, 0);
+    }
+    return *this;
+}
+
+void Pages::shrink(std::size_t bytes) {
+    if (!base_ || bytes >= bytes_) return;
+    const auto page = std::size_t(sysconf(_SC_PAGESIZE));
+    auto pages = [&](std::size_t b) { return (b + page - 1) / page * page; };
+    if (pages(bytes) < pages(bytes_)) munmap(at<char>(pages(bytes)), pages(bytes_) - pages(bytes));
+    bytes_ = bytes;
+    if (bytes == 0) base_ = nullptr;
+}
 
 AugmentedTree augmentedContourTree(const Volume& volume, int threads, const BuildProgress& progress) {
     const Dims& dims = volume.dims();
@@ -215,18 +262,42 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
         throw InputError("the contour tree takes volumes of fewer than 2^31 samples");
     }
     AugmentedTree tree;
-    const auto n = std::uint64_t(volume.sampleCount());
+    const auto n = std::uint32_t(volume.sampleCount());
     progress.start(ContourTreeProgress::Phase::Sorting, 0);
-    tree.order = sortSamples(volume, threads);
-    progress.start(ContourTreeProgress::Phase::Sweeping, 2 * n);  // both sweeps count
+    // The sort's blocks, 8 bytes a sample each, hold the rest: sorted the
+    // order and the join links, spare the two forests, then the merge's
+    // arcOf and state.
+    SortedSamples sorted = sortSamples(volume, threads);
+    const std::size_t half = 4 * std::size_t(n);
+    tree.order = sorted.order();
+    const Slice<std::uint32_t> joinDown = sliceOf<std::uint32_t>(sorted.sorted, half, n);
+    const Pages splitPages(half);
+    const Slice<std::uint32_t> splitUp = sliceOf<std::uint32_t>(splitPages, 0, n);
+    const bool together = threads > 1;  // the two sweeps at once, each with a forest of its own
+    if (!together) sorted.spare.shrink(half);
+    progress.start(ContourTreeProgress::Phase::Sweeping, 2 * std::uint64_t(n));  // both sweeps count
     Buffer<std::uint8_t> classes = classifySamples(volume, threads);
     progress.check();
-    Buffer<std::uint32_t> joinDown, splitUp;
-    Buffer<std::uint8_t> up, down;  // by rank
     visitSamples(volume, [&](const auto* values) {
-        auto join = [&] { sweep<true>(values, dims, tree.order, classes, joinDown, up, progress); };
-        auto split = [&] { sweep<false>(values, dims, tree.order, classes, splitUp, down, progress); };
-        if (threads > 1) {
+        // Together, each thread counts its tree's arcs where its forest was: the
+        // join tree's in the first n bytes of spare, the split tree's at half.
+        auto count = [&](const Slice<std::uint32_t>& link, std::size_t at, std::uint8_t unit) {
+            if (!together || progress.cancelled()) return;
+            const Slice<std::uint8_t> counts = sliceOf<std::uint8_t>(sorted.spare, at, n);
+            std::fill(counts.begin(), counts.end(), std::uint8_t(0));
+            countLinks(link, counts, unit);
+        };
+        auto join = [&] {
+            sweep<true>(values, dims, tree.order, classes, sliceOf<std::uint32_t>(sorted.spare, 0, n), joinDown,
+                        progress);
+            count(joinDown, 0, 1);
+        };
+        auto split = [&] {  // on one thread, in the join forest's place after it
+            sweep<false>(values, dims, tree.order, classes,
+                         sliceOf<std::uint32_t>(sorted.spare, together ? half : 0, n), splitUp, progress);
+            count(splitUp, half, kOneBelow);
+        };
+        if (together) {
             std::thread joiner(join);
             split();
             joiner.join();
@@ -238,10 +309,22 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
     Buffer<std::uint8_t>().swap(classes);
     progress.check();
     progress.start(ContourTreeProgress::Phase::Merging, n);
-    Buffer<std::uint8_t>& state = up;
-    for (std::size_t k = 0; k < state.size(); ++k) state[k] = std::uint8_t(up[k] | down[k] << 3);
-    Buffer<std::uint8_t>().swap(down);
+    sorted.spare.shrink(half + n);  // the rest of the split forest
+    Pages statePages(together ? 0 : n);
+    const Slice<std::uint8_t> state =
+        sliceOf<std::uint8_t>(together ? sorted.spare : statePages, together ? half : 0, n);
+    if (together) {  // the join tree's counts join the split tree's
+        const std::uint8_t* up = sorted.spare.at<std::uint8_t>(0);
+        for (std::size_t k = 0; k < n; ++k) state[k] = std::uint8_t(state[k] + up[k]);
+    } else {
+        std::fill(state.begin(), state.end(), std::uint8_t(0));
+        countLinks(joinDown, state, 1);
+        countLinks(splitUp, state, kOneBelow);
+    }
+    tree.arcOf = sliceOf<std::uint32_t>(sorted.spare, 0, n);
     mergeTrees(joinDown, splitUp, state, tree, progress);
+    sorted.sorted.shrink(half), sorted.spare.shrink(half);  // the links and state are done with
+    tree.sorted = std::move(sorted.sorted), tree.spare = std::move(sorted.spare);
     return tree;
 }
 
@@ -249,7 +332,7 @@ ContourTree computeContourTreeImpl(const Volume& volume, int threads, ContourTre
     const BuildProgress build(progress);
     AugmentedTree augmented = augmentedContourTree(volume, threads, build);
     build.start(ContourTreeProgress::Phase::Arcs, 0);
-    ContourTree tree = compressContourTree(volume, std::move(augmented));
+    ContourTree tree = compressContourTree(volume, std::move(augmented), threads);
     build.start(ContourTreeProgress::Phase::Done, 0);
     return tree;
 }

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <new>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <sys/mman.h>
@@ -66,6 +67,48 @@ struct MappedAllocator {
 template <class T>
 using Buffer = std::vector<T, MappedAllocator<T>>;
 
+// A block of pages of its own (mapped, advised for huge pages), which the
+// build's passes use one after another: the sort's two 8-byte-a-sample blocks
+// hold the order, the links and the forests after it, and the merge's state
+// after those, so the kernel zeroes each page once. Contents start undefined
+// on reuse (zero when fresh); each user writes before it reads.
+class Pages {
+public:
+    Pages() = default;
+    explicit Pages(std::size_t bytes);
+    Pages(const Pages&) = delete;
+    Pages& operator=(const Pages&) = delete;
+    Pages(Pages&& other) noexcept;
+    Pages& operator=(Pages&& other) noexcept;
+    ~Pages() { shrink(0); }
+    template <class T>
+    T* at(std::size_t byteOffset) const {
+        return reinterpret_cast<T*>(static_cast<char*>(base_) + byteOffset);
+    }
+    std::size_t bytes() const { return bytes_; }
+    // Hands the pages from `bytes` on back to the kernel.
+    void shrink(std::size_t bytes);
+
+private:
+    void* base_ = nullptr;
+    std::size_t bytes_ = 0;
+};
+
+// Count items of T at some place in Pages.
+template <class T>
+struct Slice {
+    T* items = nullptr;
+    std::size_t count = 0;
+    T& operator[](std::size_t i) const { return items[i]; }
+    T* begin() const { return items; }
+    T* end() const { return items + count; }
+    std::size_t size() const { return count; }
+};
+template <class T>
+Slice<T> sliceOf(const Pages& pages, std::size_t byteOffset, std::size_t count) {
+    return {pages.at<T>(byteOffset), count};
+}
+
 // The total order of the samples: by value, NaN lowest, ties by index.
 template <class T>
 struct SampleOrder {
@@ -110,26 +153,32 @@ struct Neighbours {
     }
 };
 
+// The build's lists of a few bytes a node or sample are Buffers too, not on
+// the heap: the executable's heap is never trimmed (app/main.cpp), so what the
+// build put there would stay resident beside the tree it leaves.
+//
 // The contour tree as the merge leaves it, by rank (the position in order):
-// each rank's arc, and the arcs' ends. The merge peels each arc in one walk
-// from a node, sample after sample, so it numbers the chains of regular
+// each rank's arc, and the arcs as pieces. The merge peels each arc in one
+// walk from a node, sample after sample, so it numbers the chains of regular
 // samples as it goes (in the order it peels them) and notes their end nodes;
 // an edge between two nodes is an arc of its own, noted with the sample that
-// the merge peeled it from.
+// the merge peeled it from. Both are pieces of 12 bytes in one list, which
+// holds one per arc (the nodes less one), so it is reserved once.
 struct AugmentedTree {
     static constexpr std::uint32_t kIndexMask = 0x7fffffffu;  // ranks and samples fit below it
-    struct Chain {
+    static constexpr std::uint32_t kEdgeBit = ~kIndexMask;
+    struct Piece {
         std::uint32_t lower = kNoSample, upper = kNoSample;  // the ranks of its end nodes
-        std::uint32_t smallest = kNoSample;                  // its smallest sample index
+        // A chain's smallest sample index, or kEdgeBit and the sample peeled for
+        // an edge between two nodes: the arcs' order (chains by their smallest
+        // sample, then the edges by the sample peeled) is the order of keys.
+        std::uint32_t key = kNoSample;
     };
-    struct Between {
-        std::uint32_t holder, lower, upper;  // the sample peeled, the ranks of the ends
-        bool operator<(const Between& other) const { return holder < other.holder; }
-    };
-    Buffer<std::uint32_t> order;  // the samples, ascending
-    Buffer<std::uint32_t> arcOf;  // by rank: a regular sample's chain; kNoSample for a node
-    std::vector<Chain> chains;
-    std::vector<Between> between;
+    Pages sorted, spare;         // the sort's blocks (SortedSamples), holding the two below
+    Slice<std::uint32_t> order;  // the samples, ascending
+    Slice<std::uint32_t> arcOf;  // by rank: a regular sample's piece; kNoSample for a node
+    Buffer<Piece> pieces;
+    std::uint32_t chains = 0;  // the pieces that are chains
 };
 
 // Reports progress to a ContourTreeProgress, if any, every kStride samples,
@@ -163,14 +212,41 @@ private:
     ContourTreeProgress* progress_;
 };
 
-// Sorts items by key(item), a 32-bit key each, read once: the pairs are sorted
-// in place of comparisons that would read the keys anywhere in memory.
-template <class Key>
-void sortByKey(std::vector<std::uint32_t>& items, Key&& key) {
-    std::vector<std::uint64_t> pairs(items.size());
-    for (std::size_t i = 0; i < items.size(); ++i) pairs[i] = std::uint64_t(key(items[i])) << 32 | items[i];
-    std::sort(pairs.begin(), pairs.end());
-    for (std::size_t i = 0; i < items.size(); ++i) items[i] = std::uint32_t(pairs[i]);
+// Sorts items by key(item), a 32-bit key each, read once, stably (equal keys
+// keep their items' order): (key, item) pairs sorted by key, in place of
+// comparisons that would read the keys anywhere in memory. Large lists go by
+// an LSD radix sort (11-bit digits, passes where one digit holds every key
+// skipped), small ones by std::sort.
+template <class Items, class Key>
+void sortByKey(Items& items, Key&& key) {
+    const std::size_t n = items.size();
+    Buffer<std::uint64_t> pairs(n);
+    for (std::size_t i = 0; i < n; ++i) pairs[i] = std::uint64_t(key(items[i])) << 32 | i;
+    constexpr int kDigitBits = 11, kPasses = 3;
+    constexpr std::size_t kBuckets = std::size_t(1) << kDigitBits;
+    if (n < 4 * kBuckets) {
+        std::sort(pairs.begin(), pairs.end());  // the index below the key keeps it stable
+    } else {
+        std::vector<std::uint32_t> count(kPasses * kBuckets);
+        auto digit = [](std::uint64_t pair, int pass) {
+            return std::size_t(pair >> (32 + kDigitBits * pass)) & (kBuckets - 1);
+        };
+        for (const std::uint64_t pair : pairs) {
+            for (int pass = 0; pass < kPasses; ++pass) ++count[std::size_t(pass) * kBuckets + digit(pair, pass)];
+        }
+        Buffer<std::uint64_t> spare(n);
+        for (int pass = 0; pass < kPasses; ++pass) {
+            std::uint32_t* c = &count[std::size_t(pass) * kBuckets];
+            if (std::find(c, c + kBuckets, std::uint32_t(n)) != c + kBuckets) continue;  // nothing moves
+            std::uint32_t sum = 0;
+            for (std::size_t b = 0; b < kBuckets; ++b) sum += std::exchange(c[b], sum);
+            for (const std::uint64_t pair : pairs) spare[c[digit(pair, pass)]++] = pair;
+            pairs.swap(spare);
+        }
+    }
+    Items sorted(n);
+    for (std::size_t i = 0; i < n; ++i) sorted[i] = items[std::uint32_t(pairs[i])];
+    items.swap(sorted);
 }
 
 // Each sample's class for the two sweeps (contour_tree_classify.cpp): the join
@@ -187,12 +263,19 @@ Buffer<std::uint8_t> classifySamples(const Volume& volume, int threads);
 std::int64_t neighbourOffset(const Dims& dims, std::uint8_t position);
 
 // Samples sorted ascending in the order above (a stable radix sort, on up to
-// `threads` threads).
-Buffer<std::uint32_t> sortSamples(const Volume& volume, int threads);
+// `threads` threads): the order in the first half of `sorted` (8 bytes a
+// sample), and `spare`, 8 bytes a sample more that the sort used and left.
+struct SortedSamples {
+    Pages sorted, spare;
+    std::uint32_t count = 0;
+    Slice<std::uint32_t> order() const { return sliceOf<std::uint32_t>(sorted, 0, count); }
+};
+SortedSamples sortSamples(const Volume& volume, int threads);
 // Join tree, split tree and their merge (Carr et al.'s algorithm).
 AugmentedTree augmentedContourTree(const Volume& volume, int threads,
                                    const BuildProgress& progress = BuildProgress{nullptr});
-// Chains of regular samples into arcs between the critical ones.
-ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented);
+// Chains of regular samples into arcs between the critical ones (the passes
+// over the ranks on up to 4 of `threads`).
+ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented, int threads);
 
 }  // namespace isotrack::detail
