@@ -25,6 +25,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <unordered_map>
 #include <utility>
@@ -60,16 +61,58 @@ GridEdge edgeThroughSample(int x, int y, int z, const Dims& n) {
 
 constexpr std::uint32_t kNoVertex = std::numeric_limits<std::uint32_t>::max();
 
-// Vertex ids by key (a sample's index times 8 plus 0..2 for its edges along x,
-// y and z, 3 for the sample, 4..7 for a cell's centres), in a hash map: for
-// walks, which go anywhere.
-class HashSlots {
+// Vertex ids of a walk, which goes anywhere: four slots per sample (its edges
+// along x, y and z, then the sample itself) in blocks of 4x4x4 samples made
+// when a walk first reaches them, so lookups neither hash nor allocate per
+// vertex; the rare centres of fanned loops (slot 4..7 of a cell) in a map.
+class BlockSlots {
 public:
-    std::uint32_t& slot(std::uint64_t key) { return map_.try_emplace(key, kNoVertex).first->second; }
-    std::size_t size() const { return map_.size(); }
+    explicit BlockSlots(const Dims& n)
+        : blocks_{(n[0] + kSide - 1) / kSide, (n[1] + kSide - 1) / kSide, (n[2] + kSide - 1) / kSide},
+          table_(std::size_t(blocks_[0]) * std::size_t(blocks_[1]) * std::size_t(blocks_[2]), nullptr) {}
+
+    std::uint32_t& slot(int x, int y, int z, int kind) {
+        if (kind >= 4) {
+            const std::uint64_t cell =
+                std::uint64_t(x) +
+                std::uint64_t(kMaxSide) * (std::uint64_t(y) + std::uint64_t(kMaxSide) * std::uint64_t(z));
+            return centres_.try_emplace(cell * 4 + std::uint64_t(kind - 4), kNoVertex).first->second;
+        }
+        const std::size_t block =
+            std::size_t(x / kSide) +
+            std::size_t(blocks_[0]) * (std::size_t(y / kSide) + std::size_t(blocks_[1]) * std::size_t(z / kSide));
+        std::uint32_t*& slots = table_[block];
+        if (!slots) slots = newBlock();
+        return slots[std::size_t(((z % kSide * kSide + y % kSide) * kSide + x % kSide) * 4 + kind)];
+    }
+
+    std::size_t bytes() const {
+        return table_.size() * sizeof(table_[0]) + chunks_.size() * kChunkSlots * sizeof(std::uint32_t) +
+               centres_.size() * (sizeof(std::uint64_t) + sizeof(std::uint32_t) + 2 * sizeof(void*));
+    }
 
 private:
-    std::unordered_map<std::uint64_t, std::uint32_t> map_;
+    static constexpr int kSide = 4;
+    static constexpr std::size_t kBlockSlots = 4 * kSide * kSide * kSide;
+    static constexpr std::size_t kChunkSlots = 64 * kBlockSlots;
+    static constexpr std::uint64_t kMaxSide = std::uint64_t(1) << 21;
+
+    std::uint32_t* newBlock() {
+        if (chunks_.empty() || used_ == kChunkSlots) {
+            chunks_.push_back(std::make_unique<std::uint32_t[]>(kChunkSlots));
+            used_ = 0;
+        }
+        std::uint32_t* block = chunks_.back().get() + used_;
+        std::fill(block, block + kBlockSlots, kNoVertex);
+        used_ += kBlockSlots;
+        return block;
+    }
+
+    std::array<int, 3> blocks_;
+    std::vector<std::uint32_t*> table_;
+    std::vector<std::unique_ptr<std::uint32_t[]>> chunks_;
+    std::size_t used_ = 0;
+    std::unordered_map<std::uint64_t, std::uint32_t> centres_;
 };
 
 // The same for marchSnap, which goes slab by slab: the slots of two slices of
@@ -77,7 +120,8 @@ private:
 // the cell being emitted's centres.
 class SliceSlots {
 public:
-    SliceSlots(const Dims& n) : slice_(std::size_t(n[0]) * std::size_t(n[1])), slots_(8 * slice_, kNoVertex) {}
+    SliceSlots(const Dims& n)
+        : nx_(std::size_t(n[0])), slice_(std::size_t(n[0]) * std::size_t(n[1])), slots_(8 * slice_, kNoVertex) {}
 
     // Before emitting the cells between slices z and z + 1.
     void startSlab(int z) {
@@ -85,23 +129,24 @@ public:
         std::fill(slots_.begin() + std::ptrdiff_t(top), slots_.begin() + std::ptrdiff_t(top + 4 * slice_), kNoVertex);
     }
 
-    std::uint32_t& slot(std::uint64_t key) {
-        const std::uint64_t sample = key >> 3, kind = key & 7;
+    std::uint32_t& slot(int x, int y, int z, int kind) {
         if (kind >= 4) {
-            if (sample != centreCell_) {
-                centreCell_ = sample;
+            const std::array<int, 3> cell{x, y, z};
+            if (cell != centreCell_) {
+                centreCell_ = cell;
                 centres_.fill(kNoVertex);
             }
             return centres_[std::size_t(kind - 4)];
         }
-        const std::size_t parity = std::size_t(sample / slice_) & 1;
-        return slots_[(parity * 4 + kind) * slice_ + std::size_t(sample % slice_)];
+        const std::size_t parity = std::size_t(z) & 1;
+        return slots_[(parity * 4 + std::size_t(kind)) * slice_ + std::size_t(x) + nx_ * std::size_t(y)];
     }
 
 private:
+    std::size_t nx_;
     std::size_t slice_;
     std::vector<std::uint32_t> slots_;
-    std::uint64_t centreCell_ = ~std::uint64_t(0);
+    std::array<int, 3> centreCell_{-1, -1, -1};
     std::array<std::uint32_t, 4> centres_{};
 };
 
@@ -156,8 +201,7 @@ private:
             const auto& o = cube::kVertexOffset[std::size_t(corner - kSnapCornerVertex)];
             for (int k = 0; k < 3; ++k) p[k] += o[std::size_t(k)];
         }
-        const std::uint64_t key = std::uint64_t(grid_.index(p[0], p[1], p[2])) * 8 + std::uint64_t(axis);
-        std::uint32_t& slot = slots.slot(key);
+        std::uint32_t& slot = slots.slot(p[0], p[1], p[2], axis);
         if (slot != kNoVertex) return slot;
         slot = std::uint32_t(mesh.vertices.size());
         Vertex v{};
@@ -175,8 +219,7 @@ private:
     // The vertex at the mean of a centred loop's corners, with their mean normal.
     template <class Slots>
     std::uint32_t centre(const SnapCase& cased, int loop, int x, int y, int z, Mesh& mesh, Slots& slots) const {
-        const std::uint64_t key = std::uint64_t(grid_.index(x, y, z)) * 8 + 4 + std::uint64_t(loop);
-        if (slots.slot(key) != kNoVertex) return slots.slot(key);
+        if (const std::uint32_t id = slots.slot(x, y, z, 4 + loop); id != kNoVertex) return id;
         double position[3] = {0, 0, 0}, normal[3] = {0, 0, 0};
         int count = 0;
         for (const std::int8_t corner : cased.centres[std::size_t(loop)]) {
@@ -194,7 +237,7 @@ private:
         const auto id = std::uint32_t(mesh.vertices.size());
         mesh.vertices.push_back(v);
         mesh.vertexEdges.push_back(GridEdge{x, y, z, kCellInterior});
-        slots.slot(key) = id;
+        slots.slot(x, y, z, 4 + loop) = id;
         return id;
     }
 
@@ -228,7 +271,7 @@ class SnapWalk final : public TrilinearWalk {
 public:
     // `visited` (one bit per piece, per cell's first sample) may be shared by walks.
     SnapWalk(std::shared_ptr<const SnapCells<T>> cells, std::vector<std::uint8_t>* visited)
-        : cells_(std::move(cells)), visited_(visited) {
+        : cells_(std::move(cells)), visited_(visited), slots_(cells_->volume().dims()) {
         if (!visited_) {
             own_.assign(cells_->volume().sampleCount(), 0);
             visited_ = &own_;
@@ -277,8 +320,7 @@ public:
     const Mesh& mesh() const override { return mesh_; }
     std::size_t piecesVisited() const override { return visitedPieces_; }
     std::size_t workingBytes() const override {
-        return own_.size() + queue_.capacity() * sizeof(queue_[0]) +
-               slots_.size() * (sizeof(std::uint64_t) + sizeof(std::uint32_t) + 2 * sizeof(void*));
+        return own_.size() + queue_.capacity() * sizeof(queue_[0]) + slots_.bytes();
     }
 
 private:
@@ -288,7 +330,7 @@ private:
     std::vector<std::array<int, 4>> queue_;
     std::size_t head_ = 0, visitedPieces_ = 0;
     Mesh mesh_;
-    HashSlots slots_;
+    BlockSlots slots_;
 };
 
 // The (cell, piece) a walk from `seed` starts at: a cell around the seed edge.
