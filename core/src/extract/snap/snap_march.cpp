@@ -153,8 +153,8 @@ private:
 template <class T>
 class SnapCells {
 public:
-    SnapCells(const Volume& volume, const T* samples, double iso)
-        : volume_(volume), grid_(volume, samples, iso), states_(snapStates(volume, iso)) {}
+    SnapCells(const Volume& volume, const T* samples, double iso, int threads)
+        : volume_(volume), grid_(volume, samples, iso), states_(snapStates(volume, iso, threads)) {}
 
     const Volume& volume() const { return volume_; }
     SampleState state(int x, int y, int z) const { return states_[grid_.index(x, y, z)]; }
@@ -172,6 +172,17 @@ public:
             at |= unsigned(isAt(s)) << v;
         }
         return snapCaseIndex(std::uint8_t(above), std::uint8_t(at));
+    }
+
+    // The 2-state configuration of cell (x, y, z): its snap table entry's
+    // aboveMask, without reading the table (snapCaseIndex keeps it in the low byte).
+    std::uint8_t aboveMask(int x, int y, int z) const {
+        unsigned above = 0;
+        for (int v = 0; v < cube::kVertexCount; ++v) {
+            const auto& o = cube::kVertexOffset[std::size_t(v)];
+            above |= unsigned(isAbove(state(x + o[0], y + o[1], z + o[2]))) << v;
+        }
+        return std::uint8_t(above);
     }
 
     // Appends the triangles of `piece` (all pieces when negative) of cell (x, y, z).
@@ -266,6 +277,18 @@ void removeReversedPairs(Mesh& mesh) {
     dropUnusedVertices(mesh);
 }
 
+// cube::edgeAcrossFace for every edge and face, computed once.
+const std::array<std::array<std::int8_t, cube::kFaceCount>, cube::kEdgeCount>& edgesAcrossFaces() {
+    static const auto table = [] {
+        std::array<std::array<std::int8_t, cube::kFaceCount>, cube::kEdgeCount> across{};
+        for (int e = 0; e < cube::kEdgeCount; ++e)
+            for (int f = 0; f < cube::kFaceCount; ++f)
+                across[std::size_t(e)][std::size_t(f)] = std::int8_t(cube::edgeAcrossFace(e, f));
+        return across;
+    }();
+    return table;
+}
+
 template <class T>
 class SnapWalk final : public TrilinearWalk {
 public:
@@ -287,20 +310,22 @@ public:
 
     std::size_t advance(std::size_t pieceBudget) override {
         const auto& continuation = continuationTable(TableKind::Consistent);
+        const auto& across = edgesAcrossFaces();
         std::size_t emitted = 0;
         for (; emitted < pieceBudget && head_ < queue_.size(); ++emitted) {
             const auto [x, y, z, piece] = queue_[head_++];
             const int index = cells_->config(x, y, z);
             cells_->emit(index, piece, x, y, z, mesh_, slots_);
-            const Piece& exits = continuation[snapTable()[std::size_t(index)].aboveMask].pieces[std::size_t(piece)];
+            const Piece& exits = continuation[index & 0xff].pieces[std::size_t(piece)];
             for (int f = 0; f < cube::kFaceCount; ++f) {
+                if (exits.exits[std::size_t(f)][0] < 0) continue;
                 int n[3] = {x, y, z};
                 n[cube::faceAxis(f)] += cube::faceSide(f) ? 1 : -1;
                 if (!cells_->cellInside(n[0], n[1], n[2])) continue;
+                const std::uint8_t above = cells_->aboveMask(n[0], n[1], n[2]);
                 for (const std::int8_t edge : exits.exits[std::size_t(f)]) {
                     if (edge < 0) break;
-                    const int entry = cube::edgeAcrossFace(edge, f);
-                    const std::uint8_t above = snapTable()[std::size_t(cells_->config(n[0], n[1], n[2]))].aboveMask;
+                    const int entry = across[std::size_t(edge)][std::size_t(f)];
                     const int next = continuation[above].pieceOfEdge[std::size_t(entry)];
                     if (next < 0) throw std::logic_error("snap walk: an exit edge is not crossed across the face");
                     enqueue(n[0], n[1], n[2], next);
@@ -353,7 +378,7 @@ std::array<int, 4> seedPiece(const SnapCells<T>& cells, double iso, const GridEd
             std::array<int, 3> origin{};
             origin[std::size_t(u)] = du;
             origin[std::size_t(w)] = dw;
-            const std::uint8_t above = snapTable()[std::size_t(cells.config(c[0], c[1], c[2]))].aboveMask;
+            const std::uint8_t above = cells.aboveMask(c[0], c[1], c[2]);
             const int piece = continuationTable(TableKind::Consistent)[above]
                                   .pieceOfEdge[std::size_t(cube::edgeAt(origin, seed.axis))];
             if (piece >= 0) return {c[0], c[1], c[2], piece};
@@ -363,18 +388,18 @@ std::array<int, 4> seedPiece(const SnapCells<T>& cells, double iso, const GridEd
 }
 
 template <class T>
-std::vector<Surface> allSnapTyped(const Volume& volume, const T* samples, double iso) {
+std::vector<Surface> allSnapTyped(const Volume& volume, const T* samples, double iso, int threads) {
     const auto start = std::chrono::steady_clock::now();
     std::vector<Surface> surfaces;
     const Dims& n = volume.dims();
     if (n[0] < 2 || n[1] < 2 || n[2] < 2) return surfaces;
-    const auto cells = std::make_shared<const SnapCells<T>>(volume, samples, iso);
+    const auto cells = std::make_shared<const SnapCells<T>>(volume, samples, iso, threads);
     const auto& continuation = continuationTable(TableKind::Consistent);
     std::vector<std::uint8_t> visited(volume.sampleCount(), 0);
     for (int z = 0; z + 1 < n[2]; ++z) {
         for (int y = 0; y + 1 < n[1]; ++y) {
             for (int x = 0; x + 1 < n[0]; ++x) {
-                const std::uint8_t above = snapTable()[std::size_t(cells->config(x, y, z))].aboveMask;
+                const std::uint8_t above = cells->aboveMask(x, y, z);
                 for (int p = 0; p < continuation[above].pieceCount; ++p) {
                     if (visited[volume.index(x, y, z)] >> p & 1u) continue;
                     SnapWalk<T> walk(cells, &visited);
@@ -395,20 +420,23 @@ std::vector<Surface> allSnapTyped(const Volume& volume, const T* samples, double
 
 }  // namespace
 
-Mesh marchSnap(const Volume& volume, double iso) {
+Mesh marchSnap(const Volume& volume, double iso, int threads) {
     return visitSamples(volume, [&](const auto* samples) {
         using T = std::remove_cv_t<std::remove_pointer_t<decltype(samples)>>;
         Mesh mesh;
         const Dims& n = volume.dims();
         if (n[0] < 2 || n[1] < 2 || n[2] < 2) return mesh;
-        const SnapCells<T> cells(volume, samples, iso);
+        const SnapCells<T> cells(volume, samples, iso, threads);
         SliceSlots slots(n);
         for (int z = 0; z + 1 < n[2]; ++z) {
             slots.startSlab(z);
             for (int y = 0; y + 1 < n[1]; ++y) {
                 for (int x = 0; x + 1 < n[0]; ++x) {
-                    const int index = cells.config(x, y, z);
-                    if (snapTable()[std::size_t(index)].count > 0) cells.emit(index, -1, x, y, z, mesh, slots);
+                    // A cell with all its samples on one side has no triangles:
+                    // the table refines the 2-state one (tested in snap_test).
+                    const std::uint8_t above = cells.aboveMask(x, y, z);
+                    if (above == 0 || above == 0xff) continue;
+                    cells.emit(cells.config(x, y, z), -1, x, y, z, mesh, slots);
                 }
             }
         }
@@ -417,10 +445,10 @@ Mesh marchSnap(const Volume& volume, double iso) {
     });
 }
 
-std::unique_ptr<TrilinearWalk> startSnap(const Volume& volume, double iso, const GridEdge& seed) {
+std::unique_ptr<TrilinearWalk> startSnap(const Volume& volume, double iso, const GridEdge& seed, int threads) {
     return visitSamples(volume, [&](const auto* samples) -> std::unique_ptr<TrilinearWalk> {
         using T = std::remove_cv_t<std::remove_pointer_t<decltype(samples)>>;
-        const auto cells = std::make_shared<const SnapCells<T>>(volume, samples, iso);
+        const auto cells = std::make_shared<const SnapCells<T>>(volume, samples, iso, threads);
         const auto [x, y, z, piece] = seedPiece(*cells, iso, seed);
         auto walk = std::make_unique<SnapWalk<T>>(cells, nullptr);
         walk->enqueue(x, y, z, piece);
@@ -437,17 +465,17 @@ Surface finishedSnap(TrilinearWalk& walk, const Volume& volume) {
     return surface;
 }
 
-Surface trackSnap(const Volume& volume, double iso, const GridEdge& seed) {
+Surface trackSnap(const Volume& volume, double iso, const GridEdge& seed, int threads) {
     const auto start = std::chrono::steady_clock::now();
-    const auto walk = startSnap(volume, iso, seed);
+    const auto walk = startSnap(volume, iso, seed, threads);
     walk->advance(std::numeric_limits<std::size_t>::max());
     Surface surface = finishedSnap(*walk, volume);
     surface.stats.seconds = secondsSince(start);
     return surface;
 }
 
-std::vector<Surface> allSnap(const Volume& volume, double iso) {
-    return visitSamples(volume, [&](const auto* samples) { return allSnapTyped(volume, samples, iso); });
+std::vector<Surface> allSnap(const Volume& volume, double iso, int threads) {
+    return visitSamples(volume, [&](const auto* samples) { return allSnapTyped(volume, samples, iso, threads); });
 }
 
 }  // namespace isotrack::detail

@@ -20,6 +20,11 @@
 // result does not depend on the order of the scan, and extractions that visit
 // different cells agree. Segments whose two samples equal the isovalue stay as
 // they are: there the surface itself touches itself.
+//
+// Threads: pass 1 writes each slice of samples on its own; pass 2 and each
+// round of pass 3 read only the states before them and collect the samples to
+// release per slice (per run of candidates), applied once all are collected
+// in scan order, so the states are the same on any number of threads.
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -27,6 +32,7 @@
 
 #include "extract/snap/snap_march.h"
 #include "isotrack/cube.h"
+#include "support/parallel.h"
 
 namespace isotrack::detail {
 namespace {
@@ -111,12 +117,23 @@ int trianglesOnSegment(const StateGrid& grid, const std::array<int, 3>& p, const
     return int(count);
 }
 
+// Concatenated in order.
+std::vector<std::size_t> joined(const std::vector<std::vector<std::size_t>>& parts) {
+    std::size_t total = 0;
+    for (const auto& part : parts) total += part.size();
+    std::vector<std::size_t> all;
+    all.reserve(total);
+    for (const auto& part : parts) all.insert(all.end(), part.begin(), part.end());
+    return all;
+}
+
 // Pass 2 (see the top of the file).
-void keepSurfaces(std::vector<SampleState>& states, const std::vector<SampleState>& unsnapped, const Dims& n) {
+void keepSurfaces(std::vector<SampleState>& states, const std::vector<SampleState>& unsnapped, const Dims& n,
+                  int threads) {
     const std::size_t strides[3] = {1, std::size_t(n[0]), std::size_t(n[0]) * std::size_t(n[1])};
-    std::vector<std::size_t> release;
-    std::size_t i = 0;
-    for (int z = 0; z < n[2]; ++z) {
+    std::vector<std::vector<std::size_t>> release(static_cast<std::size_t>(n[2]));
+    parallelFor(n[2], threads, [&](int z) {
+        std::size_t i = std::size_t(z) * strides[2];
         for (int y = 0; y < n[1]; ++y) {
             for (int x = 0; x < n[0]; ++x, ++i) {
                 if (!isAt(states[i]) || isAt(unsnapped[i])) continue;
@@ -129,44 +146,61 @@ void keepSurfaces(std::vector<SampleState>& states, const std::vector<SampleStat
                         anchored = !isAt(states[other]) && isAbove(states[other]) == isAbove(unsnapped[i]);
                     }
                 }
-                if (!anchored) release.push_back(i);
+                if (!anchored) release[std::size_t(z)].push_back(i);
             }
         }
-    }
-    for (const std::size_t r : release) states[r] = unsnapped[r];
+    });
+    for (const auto& slice : release)
+        for (const std::size_t r : slice) states[r] = unsnapped[r];
 }
 
 // Pass 3 (see the top of the file).
-void keepSheetsApart(std::vector<SampleState>& states, const std::vector<SampleState>& unsnapped, const Dims& n) {
+void keepSheetsApart(std::vector<SampleState>& states, const std::vector<SampleState>& unsnapped, const Dims& n,
+                     int threads) {
     // The samples to check: every one that snapped, then, after a round, those a
     // released sample can change the cells of (within two samples of it).
-    std::vector<std::size_t> candidates;
-    for (std::size_t i = 0; i < states.size(); ++i) {
-        if (isAt(states[i]) && !isAt(unsnapped[i])) candidates.push_back(i);
-    }
+    const std::size_t slice = std::size_t(n[0]) * std::size_t(n[1]);
+    std::vector<std::vector<std::size_t>> snapped(static_cast<std::size_t>(n[2]));
+    parallelFor(n[2], threads, [&](int z) {
+        for (std::size_t i = std::size_t(z) * slice, end = i + slice; i < end; ++i) {
+            if (isAt(states[i]) && !isAt(unsnapped[i])) snapped[std::size_t(z)].push_back(i);
+        }
+    });
+    std::vector<std::size_t> candidates = joined(snapped);
+    snapped = {};
     std::vector<std::uint8_t> queued(states.size(), 0);  // a candidate of this round
     for (const std::size_t c : candidates) queued[c] = 1;
     const std::size_t strides[3] = {1, std::size_t(n[0]), std::size_t(n[0]) * std::size_t(n[1])};
     for (;;) {
         const StateGrid grid{states, n};
-        std::vector<std::size_t> release;
-        for (const std::size_t i : candidates) {
-            if (!isAt(states[i])) continue;
-            const std::array<int, 3> p{int(i % strides[1]), int(i / strides[1] % std::size_t(n[1])),
-                                       int(i / strides[2])};
-            for (int neighbour = 0; neighbour < 27; ++neighbour) {
-                const std::array<int, 3> q{p[0] + neighbour % 3 - 1, p[1] + neighbour / 3 % 3 - 1,
-                                           p[2] + neighbour / 9 - 1};
-                if (neighbour == 13 || q[0] < 0 || q[1] < 0 || q[2] < 0 || q[0] >= n[0] || q[1] >= n[1] || q[2] >= n[2])
-                    continue;
-                const std::size_t other = grid.index(q[0], q[1], q[2]);
-                // A segment between two candidates is checked from its first end only.
-                if (!isAt(states[other]) || (neighbour < 13 && queued[other]) || trianglesOnSegment(grid, p, q) <= 2)
-                    continue;
-                release.push_back(i);
-                if (!isAt(unsnapped[other])) release.push_back(other);
+        // Runs of candidates, each checked on one thread.
+        constexpr std::size_t kRun = 4096;
+        std::vector<std::vector<std::size_t>> released((candidates.size() + kRun - 1) / kRun);
+        parallelFor(int(released.size()), threads, [&](int run) {
+            std::vector<std::size_t>& release = released[std::size_t(run)];
+            const std::size_t first = std::size_t(run) * kRun, last = std::min(first + kRun, candidates.size());
+            for (std::size_t c = first; c < last; ++c) {
+                const std::size_t i = candidates[c];
+                if (!isAt(states[i])) continue;
+                const std::array<int, 3> p{int(i % strides[1]), int(i / strides[1] % std::size_t(n[1])),
+                                           int(i / strides[2])};
+                for (int neighbour = 0; neighbour < 27; ++neighbour) {
+                    const std::array<int, 3> q{p[0] + neighbour % 3 - 1, p[1] + neighbour / 3 % 3 - 1,
+                                               p[2] + neighbour / 9 - 1};
+                    if (neighbour == 13 || q[0] < 0 || q[1] < 0 || q[2] < 0 || q[0] >= n[0] || q[1] >= n[1] ||
+                        q[2] >= n[2])
+                        continue;
+                    const std::size_t other = grid.index(q[0], q[1], q[2]);
+                    // A segment between two candidates is checked from its first end only.
+                    if (!isAt(states[other]) || (neighbour < 13 && queued[other]) ||
+                        trianglesOnSegment(grid, p, q) <= 2)
+                        continue;
+                    release.push_back(i);
+                    if (!isAt(unsnapped[other])) release.push_back(other);
+                }
             }
-        }
+        });
+        const std::vector<std::size_t> release = joined(released);
         for (const std::size_t c : candidates) queued[c] = 0;
         if (release.empty()) return;
         for (const std::size_t r : release) states[r] = unsnapped[r];
@@ -189,14 +223,14 @@ void keepSheetsApart(std::vector<SampleState>& states, const std::vector<SampleS
 
 }  // namespace
 
-std::vector<SampleState> snapStates(const Volume& volume, double iso) {
+std::vector<SampleState> snapStates(const Volume& volume, double iso, int threads) {
     return visitSamples(volume, [&](const auto* samples) {
         const Dims& n = volume.dims();
         const std::size_t strides[3] = {1, std::size_t(n[0]), std::size_t(n[0]) * std::size_t(n[1])};
         std::vector<SampleState> states(volume.sampleCount(), SampleState::Below);
         std::vector<SampleState> unsnapped(volume.sampleCount(), SampleState::Below);
-        std::size_t i = 0;
-        for (int z = 0; z < n[2]; ++z) {
+        parallelFor(n[2], threads, [&](int z) {
+            std::size_t i = std::size_t(z) * strides[2];
             for (int y = 0; y < n[1]; ++y) {
                 for (int x = 0; x < n[0]; ++x, ++i) {
                     const double value = static_cast<double>(samples[i]);
@@ -213,9 +247,9 @@ std::vector<SampleState> snapStates(const Volume& volume, double iso) {
                     states[i] = at ? static_cast<SampleState>(std::uint8_t(unsnapped[i]) | 2u) : unsnapped[i];
                 }
             }
-        }
-        keepSurfaces(states, unsnapped, n);
-        keepSheetsApart(states, unsnapped, n);
+        });
+        keepSurfaces(states, unsnapped, n, threads);
+        keepSheetsApart(states, unsnapped, n, threads);
         return states;
     });
 }
