@@ -229,14 +229,32 @@ std::vector<SampleState> snapStates(const Volume& volume, double iso, int thread
         const std::size_t strides[3] = {1, std::size_t(n[0]), std::size_t(n[0]) * std::size_t(n[1])};
         std::vector<SampleState> states(volume.sampleCount(), SampleState::Below);
         std::vector<SampleState> unsnapped(volume.sampleCount(), SampleState::Below);
+        // Sides first; then only a sample with a neighbour on the other side
+        // (a crossed edge) can snap, and only those read their neighbours' values.
         parallelFor(n[2], threads, [&](int z) {
-            std::size_t i = std::size_t(z) * strides[2];
+            for (std::size_t i = std::size_t(z) * strides[2], end = i + strides[2]; i < end; ++i) {
+                const double value = static_cast<double>(samples[i]);
+                unsnapped[i] = value == iso ? SampleState::At : value >= iso ? SampleState::Above : SampleState::Below;
+            }
+        });
+        parallelFor(n[2], threads, [&](int z) {
+            const auto* side = reinterpret_cast<const std::uint8_t*>(unsnapped.data());
             for (int y = 0; y < n[1]; ++y) {
-                for (int x = 0; x < n[0]; ++x, ++i) {
+                const std::size_t row = std::size_t(z) * strides[2] + std::size_t(y) * strides[1];
+                // Neighbouring rows, the row itself where there is none (no crossing there).
+                const std::size_t across[4] = {y > 0 ? row - strides[1] : row, y + 1 < n[1] ? row + strides[1] : row,
+                                               z > 0 ? row - strides[2] : row, z + 1 < n[2] ? row + strides[2] : row};
+                for (int x = 0; x < n[0]; ++x) {
+                    const std::size_t i = row + std::size_t(x);
+                    const unsigned above = side[i] & 1u;
+                    unsigned crossed = (side[x > 0 ? i - 1 : i] & 1u) ^ above;
+                    crossed |= (side[x + 1 < n[0] ? i + 1 : i] & 1u) ^ above;
+                    for (const std::size_t r : across) crossed |= (side[r + std::size_t(x)] & 1u) ^ above;
+                    if (!crossed) {
+                        states[i] = unsnapped[i];
+                        continue;
+                    }
                     const double value = static_cast<double>(samples[i]);
-                    unsnapped[i] = value == iso   ? SampleState::At
-                                   : value >= iso ? SampleState::Above
-                                                  : SampleState::Below;
                     bool at = value == iso;
                     const int p[3] = {x, y, z};
                     for (int k = 0; k < 3 && !at; ++k) {
