@@ -127,47 +127,44 @@ std::vector<std::size_t> joined(const std::vector<std::vector<std::size_t>>& par
     return all;
 }
 
-// Pass 2 (see the top of the file).
-void keepSurfaces(std::vector<SampleState>& states, const std::vector<SampleState>& unsnapped, const Dims& n,
-                  int threads) {
+// Pass 2 (see the top of the file), over the samples pass 1 snapped, by slice
+// (`snapped`); returns those that stay snapped, in sample order.
+std::vector<std::size_t> keepSurfaces(std::vector<SampleState>& states, const std::vector<SampleState>& unsnapped,
+                                      const Dims& n, int threads, std::vector<std::vector<std::size_t>>& snapped) {
     const std::size_t strides[3] = {1, std::size_t(n[0]), std::size_t(n[0]) * std::size_t(n[1])};
     std::vector<std::vector<std::size_t>> release(static_cast<std::size_t>(n[2]));
     parallelFor(n[2], threads, [&](int z) {
-        std::size_t i = std::size_t(z) * strides[2];
-        for (int y = 0; y < n[1]; ++y) {
-            for (int x = 0; x < n[0]; ++x, ++i) {
-                if (!isAt(states[i]) || isAt(unsnapped[i])) continue;
-                const int p[3] = {x, y, z};
-                bool anchored = false;
-                for (int k = 0; k < 3 && !anchored; ++k) {
-                    for (int side = 0; side < 2 && !anchored; ++side) {
-                        if (side == 0 ? p[k] == 0 : p[k] + 1 >= n[k]) continue;
-                        const std::size_t other = side == 0 ? i - strides[k] : i + strides[k];
-                        anchored = !isAt(states[other]) && isAbove(states[other]) == isAbove(unsnapped[i]);
-                    }
+        std::vector<std::size_t>& kept = snapped[std::size_t(z)];
+        std::size_t keptCount = 0;
+        for (const std::size_t i : kept) {
+            const std::size_t inSlice = i - std::size_t(z) * strides[2];
+            const int p[3] = {int(inSlice % strides[1]), int(inSlice / strides[1]), z};
+            bool anchored = false;
+            for (int k = 0; k < 3 && !anchored; ++k) {
+                for (int side = 0; side < 2 && !anchored; ++side) {
+                    if (side == 0 ? p[k] == 0 : p[k] + 1 >= n[k]) continue;
+                    const std::size_t other = side == 0 ? i - strides[k] : i + strides[k];
+                    anchored = !isAt(states[other]) && isAbove(states[other]) == isAbove(unsnapped[i]);
                 }
-                if (!anchored) release[std::size_t(z)].push_back(i);
             }
+            if (anchored)
+                kept[keptCount++] = i;
+            else
+                release[std::size_t(z)].push_back(i);
         }
+        kept.resize(keptCount);
     });
     for (const auto& slice : release)
         for (const std::size_t r : slice) states[r] = unsnapped[r];
+    return joined(snapped);
 }
 
-// Pass 3 (see the top of the file).
+// Pass 3 (see the top of the file), from the samples still snapped after pass 2
+// (`candidates`, in sample order).
 void keepSheetsApart(std::vector<SampleState>& states, const std::vector<SampleState>& unsnapped, const Dims& n,
-                     int threads) {
+                     int threads, std::vector<std::size_t> candidates) {
     // The samples to check: every one that snapped, then, after a round, those a
     // released sample can change the cells of (within two samples of it).
-    const std::size_t slice = std::size_t(n[0]) * std::size_t(n[1]);
-    std::vector<std::vector<std::size_t>> snapped(static_cast<std::size_t>(n[2]));
-    parallelFor(n[2], threads, [&](int z) {
-        for (std::size_t i = std::size_t(z) * slice, end = i + slice; i < end; ++i) {
-            if (isAt(states[i]) && !isAt(unsnapped[i])) snapped[std::size_t(z)].push_back(i);
-        }
-    });
-    std::vector<std::size_t> candidates = joined(snapped);
-    snapped = {};
     std::vector<std::uint8_t> queued(states.size(), 0);  // a candidate of this round
     for (const std::size_t c : candidates) queued[c] = 1;
     const std::size_t strides[3] = {1, std::size_t(n[0]), std::size_t(n[0]) * std::size_t(n[1])};
@@ -229,6 +226,7 @@ std::vector<SampleState> snapStates(const Volume& volume, double iso, int thread
         const std::size_t strides[3] = {1, std::size_t(n[0]), std::size_t(n[0]) * std::size_t(n[1])};
         std::vector<SampleState> states(volume.sampleCount(), SampleState::Below);
         std::vector<SampleState> unsnapped(volume.sampleCount(), SampleState::Below);
+        std::vector<std::vector<std::size_t>> snapped(static_cast<std::size_t>(n[2]));  // by pass 1, per slice
         // Sides first; then only a sample with a neighbour on the other side
         // (a crossed edge) can snap, and only those read their neighbours' values.
         parallelFor(n[2], threads, [&](int z) {
@@ -263,11 +261,11 @@ std::vector<SampleState> snapStates(const Volume& volume, double iso, int thread
                             at = snapsTowards(value, static_cast<double>(samples[i + strides[k]]), iso);
                     }
                     states[i] = at ? static_cast<SampleState>(std::uint8_t(unsnapped[i]) | 2u) : unsnapped[i];
+                    if (at && !isAt(unsnapped[i])) snapped[std::size_t(z)].push_back(i);
                 }
             }
         });
-        keepSurfaces(states, unsnapped, n, threads);
-        keepSheetsApart(states, unsnapped, n, threads);
+        keepSheetsApart(states, unsnapped, n, threads, keepSurfaces(states, unsnapped, n, threads, snapped));
         return states;
     });
 }
