@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "extract/snap/snap_march.h"
@@ -70,20 +71,34 @@ struct StateGrid {
     }
 };
 
+// The table entries of the eight cells around sample p (cell p - 1 + d for d
+// in {0, 1}^3, d's bits x, y, z), null outside the volume: read once for all
+// the segments from p.
+struct CellsAround {
+    std::array<const SnapCase*, 8> entry{};
+
+    CellsAround(const StateGrid& grid, const std::array<int, 3>& p) {
+        const auto& table = snapTable();
+        for (int d = 0; d < 8; ++d) {
+            const int c[3] = {p[0] - 1 + (d & 1), p[1] - 1 + (d >> 1 & 1), p[2] - 1 + (d >> 2)};
+            bool inside = true;
+            for (int k = 0; k < 3; ++k) inside = inside && c[k] >= 0 && c[k] + 1 < grid.n[std::size_t(k)];
+            entry[std::size_t(d)] = inside ? &table[std::size_t(grid.config(c[0], c[1], c[2]))] : nullptr;
+        }
+    }
+};
+
 // The triangles left on the segment between samples p and q (neighbours on
 // the grid, their offsets -1, 0 or 1 on each axis) once pairs over the same
-// three vertices cancel, over the cells that hold both.
-int trianglesOnSegment(const StateGrid& grid, const std::array<int, 3>& p, const std::array<int, 3>& q) {
+// three vertices cancel, over the cells that hold both (`around`: p's). The
+// count does not depend on the order of the cells: a key stays when it is
+// found an odd number of times.
+int trianglesOnSegment(const StateGrid& grid, const CellsAround& around, const std::array<int, 3>& p,
+                       const std::array<int, 3>& q) {
     // Keys of the triangles found, only the first `count` of them set (left
     // uninitialised: this runs for every pair of neighbours at the isovalue).
     std::array<std::array<std::uint64_t, 3>, 4 * kMaxSnapTriangles> found;
     std::size_t count = 0;
-    const auto& table = snapTable();
-    std::array<int, 3> low{}, high{};
-    for (int k = 0; k < 3; ++k) {
-        low[std::size_t(k)] = std::max({std::max(p[std::size_t(k)], q[std::size_t(k)]) - 1, 0});
-        high[std::size_t(k)] = std::min({std::min(p[std::size_t(k)], q[std::size_t(k)]), grid.n[std::size_t(k)] - 2});
-    }
     auto localVertex = [](const std::array<int, 3>& point, const int c[3]) {
         for (int v = 0; v < cube::kVertexCount; ++v) {
             const auto& o = cube::kVertexOffset[std::size_t(v)];
@@ -91,27 +106,26 @@ int trianglesOnSegment(const StateGrid& grid, const std::array<int, 3>& p, const
         }
         return -1;
     };
-    for (int z = low[2]; z <= high[2]; ++z) {
-        for (int y = low[1]; y <= high[1]; ++y) {
-            for (int x = low[0]; x <= high[0]; ++x) {
-                const int c[3] = {x, y, z};
-                const int a = kSnapCornerVertex + localVertex(p, c), b = kSnapCornerVertex + localVertex(q, c);
-                const SnapCase& cased = table[std::size_t(grid.config(x, y, z))];
-                for (int t = 0; t < cased.count; ++t) {
-                    const auto& tri = cased.triangles[std::size_t(t)];
-                    const bool hasA = tri[0] == a || tri[1] == a || tri[2] == a;
-                    if (!hasA || !(tri[0] == b || tri[1] == b || tri[2] == b)) continue;
-                    std::array<std::uint64_t, 3> key{};
-                    for (int k = 0; k < 3; ++k) key[std::size_t(k)] = grid.cornerKey(tri[std::size_t(k)], x, y, z);
-                    std::sort(key.begin(), key.end());
-                    const auto end = found.begin() + std::ptrdiff_t(count);
-                    const auto twin = std::find(found.begin(), end, key);
-                    if (twin != end)
-                        *twin = found[--count];
-                    else
-                        found[count++] = key;
-                }
-            }
+    for (int d = 0; d < 8; ++d) {
+        const int c[3] = {p[0] - 1 + (d & 1), p[1] - 1 + (d >> 1 & 1), p[2] - 1 + (d >> 2)};
+        if (!around.entry[std::size_t(d)] || q[0] < c[0] || q[0] > c[0] + 1 || q[1] < c[1] || q[1] > c[1] + 1 ||
+            q[2] < c[2] || q[2] > c[2] + 1)
+            continue;
+        const int a = kSnapCornerVertex + localVertex(p, c), b = kSnapCornerVertex + localVertex(q, c);
+        const SnapCase& cased = *around.entry[std::size_t(d)];
+        for (int t = 0; t < cased.count; ++t) {
+            const auto& tri = cased.triangles[std::size_t(t)];
+            const bool hasA = tri[0] == a || tri[1] == a || tri[2] == a;
+            if (!hasA || !(tri[0] == b || tri[1] == b || tri[2] == b)) continue;
+            std::array<std::uint64_t, 3> key{};
+            for (int k = 0; k < 3; ++k) key[std::size_t(k)] = grid.cornerKey(tri[std::size_t(k)], c[0], c[1], c[2]);
+            std::sort(key.begin(), key.end());
+            const auto end = found.begin() + std::ptrdiff_t(count);
+            const auto twin = std::find(found.begin(), end, key);
+            if (twin != end)
+                *twin = found[--count];
+            else
+                found[count++] = key;
         }
     }
     return int(count);
@@ -181,6 +195,7 @@ void keepSheetsApart(std::vector<SampleState>& states, const std::vector<SampleS
                 if (!isAt(states[i])) continue;
                 const std::array<int, 3> p{int(i % strides[1]), int(i / strides[1] % std::size_t(n[1])),
                                            int(i / strides[2])};
+                std::optional<CellsAround> around;  // read at p's first neighbour at the isovalue
                 for (int neighbour = 0; neighbour < 27; ++neighbour) {
                     const std::array<int, 3> q{p[0] + neighbour % 3 - 1, p[1] + neighbour / 3 % 3 - 1,
                                                p[2] + neighbour / 9 - 1};
@@ -189,9 +204,9 @@ void keepSheetsApart(std::vector<SampleState>& states, const std::vector<SampleS
                         continue;
                     const std::size_t other = grid.index(q[0], q[1], q[2]);
                     // A segment between two candidates is checked from its first end only.
-                    if (!isAt(states[other]) || (neighbour < 13 && queued[other]) ||
-                        trianglesOnSegment(grid, p, q) <= 2)
-                        continue;
+                    if (!isAt(states[other]) || (neighbour < 13 && queued[other])) continue;
+                    if (!around) around.emplace(grid, p);
+                    if (trianglesOnSegment(grid, *around, p, q) <= 2) continue;
                     release.push_back(i);
                     if (!isAt(unsnapped[other])) release.push_back(other);
                 }
