@@ -38,6 +38,33 @@
 namespace isotrack::detail {
 namespace {
 
+// Where each table corner of a cell lies (the sample it is on or starts from,
+// as offsets) and its slot (0..2: the edge's axis; 3: the sample itself);
+// and the cube vertex at each offset (x + 2y + 4z). Computed once.
+struct CornerPlaces {
+    std::array<std::array<int, 3>, kSnapCornerCentre> offset{};
+    std::array<std::uint64_t, kSnapCornerCentre> slot{};
+    std::array<int, 8> vertexAt{};
+};
+
+const CornerPlaces& cornerPlaces() {
+    static const CornerPlaces places = [] {
+        CornerPlaces out;
+        for (int corner = 0; corner < kSnapCornerCentre; ++corner) {
+            const bool edge = corner < kSnapCornerVertex;
+            out.offset[std::size_t(corner)] =
+                edge ? cube::edgeOrigin(corner) : cube::kVertexOffset[std::size_t(corner - kSnapCornerVertex)];
+            out.slot[std::size_t(corner)] = edge ? std::uint64_t(cube::edgeAxis(corner)) : 3;
+        }
+        for (int v = 0; v < cube::kVertexCount; ++v) {
+            const auto& o = cube::kVertexOffset[std::size_t(v)];
+            out.vertexAt[std::size_t(o[0] + 2 * o[1] + 4 * o[2])] = v;
+        }
+        return out;
+    }();
+    return places;
+}
+
 struct StateGrid {
     const std::vector<SampleState>& states;
     Dims n;
@@ -55,19 +82,10 @@ struct StateGrid {
         return snapCaseIndex(std::uint8_t(above), std::uint8_t(at));
     }
     // A corner of cell (x, y, z) as the extractors key its vertex.
-    std::uint64_t cornerKey(int corner, int x, int y, int z) const {
-        int p[3] = {x, y, z};
-        std::uint64_t slot = 3;
+    std::uint64_t cornerKey(const CornerPlaces& places, int corner, int x, int y, int z) const {
         if (corner >= kSnapCornerCentre) return index(x, y, z) * 8 + 4 + std::uint64_t(corner - kSnapCornerCentre);
-        if (corner < kSnapCornerVertex) {
-            const auto& o = cube::edgeOrigin(corner);
-            for (int k = 0; k < 3; ++k) p[k] += o[std::size_t(k)];
-            slot = std::uint64_t(cube::edgeAxis(corner));
-        } else {
-            const auto& o = cube::kVertexOffset[std::size_t(corner - kSnapCornerVertex)];
-            for (int k = 0; k < 3; ++k) p[k] += o[std::size_t(k)];
-        }
-        return index(p[0], p[1], p[2]) * 8 + slot;
+        const auto& o = places.offset[std::size_t(corner)];
+        return index(x + o[0], y + o[1], z + o[2]) * 8 + places.slot[std::size_t(corner)];
     }
 };
 
@@ -99,26 +117,24 @@ int trianglesOnSegment(const StateGrid& grid, const CellsAround& around, const s
     // uninitialised: this runs for every pair of neighbours at the isovalue).
     std::array<std::array<std::uint64_t, 3>, 4 * kMaxSnapTriangles> found;
     std::size_t count = 0;
-    auto localVertex = [](const std::array<int, 3>& point, const int c[3]) {
-        for (int v = 0; v < cube::kVertexCount; ++v) {
-            const auto& o = cube::kVertexOffset[std::size_t(v)];
-            if (c[0] + o[0] == point[0] && c[1] + o[1] == point[1] && c[2] + o[2] == point[2]) return v;
-        }
-        return -1;
-    };
+    const CornerPlaces& places = cornerPlaces();
     for (int d = 0; d < 8; ++d) {
         const int c[3] = {p[0] - 1 + (d & 1), p[1] - 1 + (d >> 1 & 1), p[2] - 1 + (d >> 2)};
         if (!around.entry[std::size_t(d)] || q[0] < c[0] || q[0] > c[0] + 1 || q[1] < c[1] || q[1] > c[1] + 1 ||
             q[2] < c[2] || q[2] > c[2] + 1)
             continue;
-        const int a = kSnapCornerVertex + localVertex(p, c), b = kSnapCornerVertex + localVertex(q, c);
+        // p is at offset 1 - d in the cell, q at q - p + 1 - d.
+        const int a = kSnapCornerVertex + places.vertexAt[std::size_t(7 - d)];
+        const int b =
+            kSnapCornerVertex + places.vertexAt[std::size_t((q[0] - c[0]) + 2 * (q[1] - c[1]) + 4 * (q[2] - c[2]))];
         const SnapCase& cased = *around.entry[std::size_t(d)];
         for (int t = 0; t < cased.count; ++t) {
             const auto& tri = cased.triangles[std::size_t(t)];
             const bool hasA = tri[0] == a || tri[1] == a || tri[2] == a;
             if (!hasA || !(tri[0] == b || tri[1] == b || tri[2] == b)) continue;
             std::array<std::uint64_t, 3> key{};
-            for (int k = 0; k < 3; ++k) key[std::size_t(k)] = grid.cornerKey(tri[std::size_t(k)], c[0], c[1], c[2]);
+            for (int k = 0; k < 3; ++k)
+                key[std::size_t(k)] = grid.cornerKey(places, tri[std::size_t(k)], c[0], c[1], c[2]);
             std::sort(key.begin(), key.end());
             const auto end = found.begin() + std::ptrdiff_t(count);
             const auto twin = std::find(found.begin(), end, key);
