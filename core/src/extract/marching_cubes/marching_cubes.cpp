@@ -574,7 +574,7 @@ Mesh marchingCubes(const Volume& volume, double iso, TableKind table, int thread
     if (table == TableKind::Trilinear)
         mesh = marchTrilinear(volume, iso, threads);
     else if (table == TableKind::Snap)
-        mesh = marchSnap(volume, iso);
+        mesh = marchSnap(volume, iso, threads);
     else
         march(volume, iso, table, threads, mesh, nullptr, nullptr, progress);
     volume.throwIfDamaged();  // a mapped file that shrank meanwhile read as zeros

@@ -25,6 +25,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <unordered_map>
 #include <utility>
@@ -60,16 +61,58 @@ GridEdge edgeThroughSample(int x, int y, int z, const Dims& n) {
 
 constexpr std::uint32_t kNoVertex = std::numeric_limits<std::uint32_t>::max();
 
-// Vertex ids by key (a sample's index times 8 plus 0..2 for its edges along x,
-// y and z, 3 for the sample, 4..7 for a cell's centres), in a hash map: for
-// walks, which go anywhere.
-class HashSlots {
+// Vertex ids of a walk, which goes anywhere: four slots per sample (its edges
+// along x, y and z, then the sample itself) in blocks of 4x4x4 samples made
+// when a walk first reaches them, so lookups neither hash nor allocate per
+// vertex; the rare centres of fanned loops (slot 4..7 of a cell) in a map.
+class BlockSlots {
 public:
-    std::uint32_t& slot(std::uint64_t key) { return map_.try_emplace(key, kNoVertex).first->second; }
-    std::size_t size() const { return map_.size(); }
+    explicit BlockSlots(const Dims& n)
+        : blocks_{(n[0] + kSide - 1) / kSide, (n[1] + kSide - 1) / kSide, (n[2] + kSide - 1) / kSide},
+          table_(std::size_t(blocks_[0]) * std::size_t(blocks_[1]) * std::size_t(blocks_[2]), nullptr) {}
+
+    std::uint32_t& slot(int x, int y, int z, int kind) {
+        if (kind >= 4) {
+            const std::uint64_t cell =
+                std::uint64_t(x) +
+                std::uint64_t(kMaxSide) * (std::uint64_t(y) + std::uint64_t(kMaxSide) * std::uint64_t(z));
+            return centres_.try_emplace(cell * 4 + std::uint64_t(kind - 4), kNoVertex).first->second;
+        }
+        const std::size_t block =
+            std::size_t(x / kSide) +
+            std::size_t(blocks_[0]) * (std::size_t(y / kSide) + std::size_t(blocks_[1]) * std::size_t(z / kSide));
+        std::uint32_t*& slots = table_[block];
+        if (!slots) slots = newBlock();
+        return slots[std::size_t(((z % kSide * kSide + y % kSide) * kSide + x % kSide) * 4 + kind)];
+    }
+
+    std::size_t bytes() const {
+        return table_.size() * sizeof(table_[0]) + chunks_.size() * kChunkSlots * sizeof(std::uint32_t) +
+               centres_.size() * (sizeof(std::uint64_t) + sizeof(std::uint32_t) + 2 * sizeof(void*));
+    }
 
 private:
-    std::unordered_map<std::uint64_t, std::uint32_t> map_;
+    static constexpr int kSide = 4;
+    static constexpr std::size_t kBlockSlots = 4 * kSide * kSide * kSide;
+    static constexpr std::size_t kChunkSlots = 64 * kBlockSlots;
+    static constexpr std::uint64_t kMaxSide = std::uint64_t(1) << 21;
+
+    std::uint32_t* newBlock() {
+        if (chunks_.empty() || used_ == kChunkSlots) {
+            chunks_.push_back(std::make_unique<std::uint32_t[]>(kChunkSlots));
+            used_ = 0;
+        }
+        std::uint32_t* block = chunks_.back().get() + used_;
+        std::fill(block, block + kBlockSlots, kNoVertex);
+        used_ += kBlockSlots;
+        return block;
+    }
+
+    std::array<int, 3> blocks_;
+    std::vector<std::uint32_t*> table_;
+    std::vector<std::unique_ptr<std::uint32_t[]>> chunks_;
+    std::size_t used_ = 0;
+    std::unordered_map<std::uint64_t, std::uint32_t> centres_;
 };
 
 // The same for marchSnap, which goes slab by slab: the slots of two slices of
@@ -77,7 +120,8 @@ private:
 // the cell being emitted's centres.
 class SliceSlots {
 public:
-    SliceSlots(const Dims& n) : slice_(std::size_t(n[0]) * std::size_t(n[1])), slots_(8 * slice_, kNoVertex) {}
+    SliceSlots(const Dims& n)
+        : nx_(std::size_t(n[0])), slice_(std::size_t(n[0]) * std::size_t(n[1])), slots_(8 * slice_, kNoVertex) {}
 
     // Before emitting the cells between slices z and z + 1.
     void startSlab(int z) {
@@ -85,31 +129,32 @@ public:
         std::fill(slots_.begin() + std::ptrdiff_t(top), slots_.begin() + std::ptrdiff_t(top + 4 * slice_), kNoVertex);
     }
 
-    std::uint32_t& slot(std::uint64_t key) {
-        const std::uint64_t sample = key >> 3, kind = key & 7;
+    std::uint32_t& slot(int x, int y, int z, int kind) {
         if (kind >= 4) {
-            if (sample != centreCell_) {
-                centreCell_ = sample;
+            const std::array<int, 3> cell{x, y, z};
+            if (cell != centreCell_) {
+                centreCell_ = cell;
                 centres_.fill(kNoVertex);
             }
             return centres_[std::size_t(kind - 4)];
         }
-        const std::size_t parity = std::size_t(sample / slice_) & 1;
-        return slots_[(parity * 4 + kind) * slice_ + std::size_t(sample % slice_)];
+        const std::size_t parity = std::size_t(z) & 1;
+        return slots_[(parity * 4 + std::size_t(kind)) * slice_ + std::size_t(x) + nx_ * std::size_t(y)];
     }
 
 private:
+    std::size_t nx_;
     std::size_t slice_;
     std::vector<std::uint32_t> slots_;
-    std::uint64_t centreCell_ = ~std::uint64_t(0);
+    std::array<int, 3> centreCell_{-1, -1, -1};
     std::array<std::uint32_t, 4> centres_{};
 };
 
 template <class T>
 class SnapCells {
 public:
-    SnapCells(const Volume& volume, const T* samples, double iso)
-        : volume_(volume), grid_(volume, samples, iso), states_(snapStates(volume, iso)) {}
+    SnapCells(const Volume& volume, const T* samples, double iso, int threads)
+        : volume_(volume), grid_(volume, samples, iso), states_(snapStates(volume, iso, threads)) {}
 
     const Volume& volume() const { return volume_; }
     SampleState state(int x, int y, int z) const { return states_[grid_.index(x, y, z)]; }
@@ -127,6 +172,17 @@ public:
             at |= unsigned(isAt(s)) << v;
         }
         return snapCaseIndex(std::uint8_t(above), std::uint8_t(at));
+    }
+
+    // The 2-state configuration of cell (x, y, z): its snap table entry's
+    // aboveMask, without reading the table (snapCaseIndex keeps it in the low byte).
+    std::uint8_t aboveMask(int x, int y, int z) const {
+        unsigned above = 0;
+        for (int v = 0; v < cube::kVertexCount; ++v) {
+            const auto& o = cube::kVertexOffset[std::size_t(v)];
+            above |= unsigned(isAbove(state(x + o[0], y + o[1], z + o[2]))) << v;
+        }
+        return std::uint8_t(above);
     }
 
     // Appends the triangles of `piece` (all pieces when negative) of cell (x, y, z).
@@ -156,8 +212,7 @@ private:
             const auto& o = cube::kVertexOffset[std::size_t(corner - kSnapCornerVertex)];
             for (int k = 0; k < 3; ++k) p[k] += o[std::size_t(k)];
         }
-        const std::uint64_t key = std::uint64_t(grid_.index(p[0], p[1], p[2])) * 8 + std::uint64_t(axis);
-        std::uint32_t& slot = slots.slot(key);
+        std::uint32_t& slot = slots.slot(p[0], p[1], p[2], axis);
         if (slot != kNoVertex) return slot;
         slot = std::uint32_t(mesh.vertices.size());
         Vertex v{};
@@ -175,8 +230,7 @@ private:
     // The vertex at the mean of a centred loop's corners, with their mean normal.
     template <class Slots>
     std::uint32_t centre(const SnapCase& cased, int loop, int x, int y, int z, Mesh& mesh, Slots& slots) const {
-        const std::uint64_t key = std::uint64_t(grid_.index(x, y, z)) * 8 + 4 + std::uint64_t(loop);
-        if (slots.slot(key) != kNoVertex) return slots.slot(key);
+        if (const std::uint32_t id = slots.slot(x, y, z, 4 + loop); id != kNoVertex) return id;
         double position[3] = {0, 0, 0}, normal[3] = {0, 0, 0};
         int count = 0;
         for (const std::int8_t corner : cased.centres[std::size_t(loop)]) {
@@ -194,7 +248,7 @@ private:
         const auto id = std::uint32_t(mesh.vertices.size());
         mesh.vertices.push_back(v);
         mesh.vertexEdges.push_back(GridEdge{x, y, z, kCellInterior});
-        slots.slot(key) = id;
+        slots.slot(x, y, z, 4 + loop) = id;
         return id;
     }
 
@@ -223,12 +277,24 @@ void removeReversedPairs(Mesh& mesh) {
     dropUnusedVertices(mesh);
 }
 
+// cube::edgeAcrossFace for every edge and face, computed once.
+const std::array<std::array<std::int8_t, cube::kFaceCount>, cube::kEdgeCount>& edgesAcrossFaces() {
+    static const auto table = [] {
+        std::array<std::array<std::int8_t, cube::kFaceCount>, cube::kEdgeCount> across{};
+        for (int e = 0; e < cube::kEdgeCount; ++e)
+            for (int f = 0; f < cube::kFaceCount; ++f)
+                across[std::size_t(e)][std::size_t(f)] = std::int8_t(cube::edgeAcrossFace(e, f));
+        return across;
+    }();
+    return table;
+}
+
 template <class T>
 class SnapWalk final : public TrilinearWalk {
 public:
     // `visited` (one bit per piece, per cell's first sample) may be shared by walks.
     SnapWalk(std::shared_ptr<const SnapCells<T>> cells, std::vector<std::uint8_t>* visited)
-        : cells_(std::move(cells)), visited_(visited) {
+        : cells_(std::move(cells)), visited_(visited), slots_(cells_->volume().dims()) {
         if (!visited_) {
             own_.assign(cells_->volume().sampleCount(), 0);
             visited_ = &own_;
@@ -244,20 +310,22 @@ public:
 
     std::size_t advance(std::size_t pieceBudget) override {
         const auto& continuation = continuationTable(TableKind::Consistent);
+        const auto& across = edgesAcrossFaces();
         std::size_t emitted = 0;
         for (; emitted < pieceBudget && head_ < queue_.size(); ++emitted) {
             const auto [x, y, z, piece] = queue_[head_++];
             const int index = cells_->config(x, y, z);
             cells_->emit(index, piece, x, y, z, mesh_, slots_);
-            const Piece& exits = continuation[snapTable()[std::size_t(index)].aboveMask].pieces[std::size_t(piece)];
+            const Piece& exits = continuation[index & 0xff].pieces[std::size_t(piece)];
             for (int f = 0; f < cube::kFaceCount; ++f) {
+                if (exits.exits[std::size_t(f)][0] < 0) continue;
                 int n[3] = {x, y, z};
                 n[cube::faceAxis(f)] += cube::faceSide(f) ? 1 : -1;
                 if (!cells_->cellInside(n[0], n[1], n[2])) continue;
+                const std::uint8_t above = cells_->aboveMask(n[0], n[1], n[2]);
                 for (const std::int8_t edge : exits.exits[std::size_t(f)]) {
                     if (edge < 0) break;
-                    const int entry = cube::edgeAcrossFace(edge, f);
-                    const std::uint8_t above = snapTable()[std::size_t(cells_->config(n[0], n[1], n[2]))].aboveMask;
+                    const int entry = across[std::size_t(edge)][std::size_t(f)];
                     const int next = continuation[above].pieceOfEdge[std::size_t(entry)];
                     if (next < 0) throw std::logic_error("snap walk: an exit edge is not crossed across the face");
                     enqueue(n[0], n[1], n[2], next);
@@ -277,8 +345,7 @@ public:
     const Mesh& mesh() const override { return mesh_; }
     std::size_t piecesVisited() const override { return visitedPieces_; }
     std::size_t workingBytes() const override {
-        return own_.size() + queue_.capacity() * sizeof(queue_[0]) +
-               slots_.size() * (sizeof(std::uint64_t) + sizeof(std::uint32_t) + 2 * sizeof(void*));
+        return own_.size() + queue_.capacity() * sizeof(queue_[0]) + slots_.bytes();
     }
 
 private:
@@ -288,7 +355,7 @@ private:
     std::vector<std::array<int, 4>> queue_;
     std::size_t head_ = 0, visitedPieces_ = 0;
     Mesh mesh_;
-    HashSlots slots_;
+    BlockSlots slots_;
 };
 
 // The (cell, piece) a walk from `seed` starts at: a cell around the seed edge.
@@ -311,7 +378,7 @@ std::array<int, 4> seedPiece(const SnapCells<T>& cells, double iso, const GridEd
             std::array<int, 3> origin{};
             origin[std::size_t(u)] = du;
             origin[std::size_t(w)] = dw;
-            const std::uint8_t above = snapTable()[std::size_t(cells.config(c[0], c[1], c[2]))].aboveMask;
+            const std::uint8_t above = cells.aboveMask(c[0], c[1], c[2]);
             const int piece = continuationTable(TableKind::Consistent)[above]
                                   .pieceOfEdge[std::size_t(cube::edgeAt(origin, seed.axis))];
             if (piece >= 0) return {c[0], c[1], c[2], piece};
@@ -321,18 +388,18 @@ std::array<int, 4> seedPiece(const SnapCells<T>& cells, double iso, const GridEd
 }
 
 template <class T>
-std::vector<Surface> allSnapTyped(const Volume& volume, const T* samples, double iso) {
+std::vector<Surface> allSnapTyped(const Volume& volume, const T* samples, double iso, int threads) {
     const auto start = std::chrono::steady_clock::now();
     std::vector<Surface> surfaces;
     const Dims& n = volume.dims();
     if (n[0] < 2 || n[1] < 2 || n[2] < 2) return surfaces;
-    const auto cells = std::make_shared<const SnapCells<T>>(volume, samples, iso);
+    const auto cells = std::make_shared<const SnapCells<T>>(volume, samples, iso, threads);
     const auto& continuation = continuationTable(TableKind::Consistent);
     std::vector<std::uint8_t> visited(volume.sampleCount(), 0);
     for (int z = 0; z + 1 < n[2]; ++z) {
         for (int y = 0; y + 1 < n[1]; ++y) {
             for (int x = 0; x + 1 < n[0]; ++x) {
-                const std::uint8_t above = snapTable()[std::size_t(cells->config(x, y, z))].aboveMask;
+                const std::uint8_t above = cells->aboveMask(x, y, z);
                 for (int p = 0; p < continuation[above].pieceCount; ++p) {
                     if (visited[volume.index(x, y, z)] >> p & 1u) continue;
                     SnapWalk<T> walk(cells, &visited);
@@ -353,20 +420,23 @@ std::vector<Surface> allSnapTyped(const Volume& volume, const T* samples, double
 
 }  // namespace
 
-Mesh marchSnap(const Volume& volume, double iso) {
+Mesh marchSnap(const Volume& volume, double iso, int threads) {
     return visitSamples(volume, [&](const auto* samples) {
         using T = std::remove_cv_t<std::remove_pointer_t<decltype(samples)>>;
         Mesh mesh;
         const Dims& n = volume.dims();
         if (n[0] < 2 || n[1] < 2 || n[2] < 2) return mesh;
-        const SnapCells<T> cells(volume, samples, iso);
+        const SnapCells<T> cells(volume, samples, iso, threads);
         SliceSlots slots(n);
         for (int z = 0; z + 1 < n[2]; ++z) {
             slots.startSlab(z);
             for (int y = 0; y + 1 < n[1]; ++y) {
                 for (int x = 0; x + 1 < n[0]; ++x) {
-                    const int index = cells.config(x, y, z);
-                    if (snapTable()[std::size_t(index)].count > 0) cells.emit(index, -1, x, y, z, mesh, slots);
+                    // A cell with all its samples on one side has no triangles:
+                    // the table refines the 2-state one (tested in snap_test).
+                    const std::uint8_t above = cells.aboveMask(x, y, z);
+                    if (above == 0 || above == 0xff) continue;
+                    cells.emit(cells.config(x, y, z), -1, x, y, z, mesh, slots);
                 }
             }
         }
@@ -375,10 +445,10 @@ Mesh marchSnap(const Volume& volume, double iso) {
     });
 }
 
-std::unique_ptr<TrilinearWalk> startSnap(const Volume& volume, double iso, const GridEdge& seed) {
+std::unique_ptr<TrilinearWalk> startSnap(const Volume& volume, double iso, const GridEdge& seed, int threads) {
     return visitSamples(volume, [&](const auto* samples) -> std::unique_ptr<TrilinearWalk> {
         using T = std::remove_cv_t<std::remove_pointer_t<decltype(samples)>>;
-        const auto cells = std::make_shared<const SnapCells<T>>(volume, samples, iso);
+        const auto cells = std::make_shared<const SnapCells<T>>(volume, samples, iso, threads);
         const auto [x, y, z, piece] = seedPiece(*cells, iso, seed);
         auto walk = std::make_unique<SnapWalk<T>>(cells, nullptr);
         walk->enqueue(x, y, z, piece);
@@ -395,17 +465,17 @@ Surface finishedSnap(TrilinearWalk& walk, const Volume& volume) {
     return surface;
 }
 
-Surface trackSnap(const Volume& volume, double iso, const GridEdge& seed) {
+Surface trackSnap(const Volume& volume, double iso, const GridEdge& seed, int threads) {
     const auto start = std::chrono::steady_clock::now();
-    const auto walk = startSnap(volume, iso, seed);
+    const auto walk = startSnap(volume, iso, seed, threads);
     walk->advance(std::numeric_limits<std::size_t>::max());
     Surface surface = finishedSnap(*walk, volume);
     surface.stats.seconds = secondsSince(start);
     return surface;
 }
 
-std::vector<Surface> allSnap(const Volume& volume, double iso) {
-    return visitSamples(volume, [&](const auto* samples) { return allSnapTyped(volume, samples, iso); });
+std::vector<Surface> allSnap(const Volume& volume, double iso, int threads) {
+    return visitSamples(volume, [&](const auto* samples) { return allSnapTyped(volume, samples, iso, threads); });
 }
 
 }  // namespace isotrack::detail

@@ -21,29 +21,34 @@ namespace isotrack::detail {
 // at when it equals `iso` or when a crossing on one of its grid edges lies
 // within kSnapDistance of it (snapsTowards, with the samples as they are, not
 // as snapped), unless that would lay two sheets on one grid edge
-// (snap_states.cpp).
-std::vector<SampleState> snapStates(const Volume& volume, double iso);
+// (snap_states.cpp). The same states on any number of `threads`.
+std::vector<SampleState> snapStates(const Volume& volume, double iso, int threads);
 
 // Every cell, one mesh: one vertex per crossed grid edge whose ends are both
 // off the isovalue, one per sample at the isovalue that a triangle uses (its
 // vertexEdges entry is a grid edge from or to the sample, on the volume's
 // border when the sample is). Pairs of triangles over the same three vertices
 // are removed (detail::removeFins).
-Mesh marchSnap(const Volume& volume, double iso);
+// The states are decided on `threads` threads; the cells are emitted on one,
+// so the mesh is the same, byte for byte, on any number.
+Mesh marchSnap(const Volume& volume, double iso, int threads);
 
 // The surface through `seed` by continuation over the 2-state configurations
 // the snapped ones refine (the consistent table's), walked breadth-first a budget of (cell, piece) pairs
 // at a time; the walk's interface is the trilinear table's (TrilinearWalk).
-// InputError when the seed is outside or not crossed.
-std::unique_ptr<TrilinearWalk> startSnap(const Volume& volume, double iso, const GridEdge& seed);
+// InputError when the seed is outside or not crossed. `threads` decide the
+// states (snapStates); the walk itself is on the caller's thread.
+std::unique_ptr<TrilinearWalk> startSnap(const Volume& volume, double iso, const GridEdge& seed, int threads = 1);
 
 // The walk's surface (its mesh taken), its reversed pairs removed, measured.
 Surface finishedSnap(TrilinearWalk& walk, const Volume& volume);
 
-Surface trackSnap(const Volume& volume, double iso, const GridEdge& seed);
+// The states on `threads` threads, the walk on one: the same surface on any number.
+Surface trackSnap(const Volume& volume, double iso, const GridEdge& seed, int threads);
 
 // Every surface by continuation from each (cell, piece) no walk has visited,
 // most triangles first; surfaces that snapping collapses to nothing are dropped.
-std::vector<Surface> allSnap(const Volume& volume, double iso);
+// The states on `threads` threads, the walks on one: the same surfaces on any number.
+std::vector<Surface> allSnap(const Volume& volume, double iso, int threads);
 
 }  // namespace isotrack::detail

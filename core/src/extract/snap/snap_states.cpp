@@ -20,16 +20,50 @@
 // result does not depend on the order of the scan, and extractions that visit
 // different cells agree. Segments whose two samples equal the isovalue stay as
 // they are: there the surface itself touches itself.
+//
+// Threads: pass 1 writes each slice of samples on its own; pass 2 and each
+// round of pass 3 read only the states before them and collect the samples to
+// release per slice (per run of candidates), applied once all are collected
+// in scan order, so the states are the same on any number of threads.
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "extract/snap/snap_march.h"
 #include "isotrack/cube.h"
+#include "support/parallel.h"
 
 namespace isotrack::detail {
 namespace {
+
+// Where each table corner of a cell lies (the sample it is on or starts from,
+// as offsets) and its slot (0..2: the edge's axis; 3: the sample itself);
+// and the cube vertex at each offset (x + 2y + 4z). Computed once.
+struct CornerPlaces {
+    std::array<std::array<int, 3>, kSnapCornerCentre> offset{};
+    std::array<std::uint64_t, kSnapCornerCentre> slot{};
+    std::array<int, 8> vertexAt{};
+};
+
+const CornerPlaces& cornerPlaces() {
+    static const CornerPlaces places = [] {
+        CornerPlaces out;
+        for (int corner = 0; corner < kSnapCornerCentre; ++corner) {
+            const bool edge = corner < kSnapCornerVertex;
+            out.offset[std::size_t(corner)] =
+                edge ? cube::edgeOrigin(corner) : cube::kVertexOffset[std::size_t(corner - kSnapCornerVertex)];
+            out.slot[std::size_t(corner)] = edge ? std::uint64_t(cube::edgeAxis(corner)) : 3;
+        }
+        for (int v = 0; v < cube::kVertexCount; ++v) {
+            const auto& o = cube::kVertexOffset[std::size_t(v)];
+            out.vertexAt[std::size_t(o[0] + 2 * o[1] + 4 * o[2])] = v;
+        }
+        return out;
+    }();
+    return places;
+}
 
 struct StateGrid {
     const std::vector<SampleState>& states;
@@ -48,125 +82,153 @@ struct StateGrid {
         return snapCaseIndex(std::uint8_t(above), std::uint8_t(at));
     }
     // A corner of cell (x, y, z) as the extractors key its vertex.
-    std::uint64_t cornerKey(int corner, int x, int y, int z) const {
-        int p[3] = {x, y, z};
-        std::uint64_t slot = 3;
+    std::uint64_t cornerKey(const CornerPlaces& places, int corner, int x, int y, int z) const {
         if (corner >= kSnapCornerCentre) return index(x, y, z) * 8 + 4 + std::uint64_t(corner - kSnapCornerCentre);
-        if (corner < kSnapCornerVertex) {
-            const auto& o = cube::edgeOrigin(corner);
-            for (int k = 0; k < 3; ++k) p[k] += o[std::size_t(k)];
-            slot = std::uint64_t(cube::edgeAxis(corner));
-        } else {
-            const auto& o = cube::kVertexOffset[std::size_t(corner - kSnapCornerVertex)];
-            for (int k = 0; k < 3; ++k) p[k] += o[std::size_t(k)];
+        const auto& o = places.offset[std::size_t(corner)];
+        return index(x + o[0], y + o[1], z + o[2]) * 8 + places.slot[std::size_t(corner)];
+    }
+};
+
+// The table entries of the eight cells around sample p (cell p - 1 + d for d
+// in {0, 1}^3, d's bits x, y, z), null outside the volume: read once for all
+// the segments from p.
+struct CellsAround {
+    std::array<const SnapCase*, 8> entry{};
+
+    CellsAround(const StateGrid& grid, const std::array<int, 3>& p) {
+        const auto& table = snapTable();
+        for (int d = 0; d < 8; ++d) {
+            const int c[3] = {p[0] - 1 + (d & 1), p[1] - 1 + (d >> 1 & 1), p[2] - 1 + (d >> 2)};
+            bool inside = true;
+            for (int k = 0; k < 3; ++k) inside = inside && c[k] >= 0 && c[k] + 1 < grid.n[std::size_t(k)];
+            entry[std::size_t(d)] = inside ? &table[std::size_t(grid.config(c[0], c[1], c[2]))] : nullptr;
         }
-        return index(p[0], p[1], p[2]) * 8 + slot;
     }
 };
 
 // The triangles left on the segment between samples p and q (neighbours on
 // the grid, their offsets -1, 0 or 1 on each axis) once pairs over the same
-// three vertices cancel, over the cells that hold both.
-int trianglesOnSegment(const StateGrid& grid, const std::array<int, 3>& p, const std::array<int, 3>& q) {
+// three vertices cancel, over the cells that hold both (`around`: p's). The
+// count does not depend on the order of the cells: a key stays when it is
+// found an odd number of times.
+int trianglesOnSegment(const StateGrid& grid, const CellsAround& around, const std::array<int, 3>& p,
+                       const std::array<int, 3>& q) {
     // Keys of the triangles found, only the first `count` of them set (left
     // uninitialised: this runs for every pair of neighbours at the isovalue).
     std::array<std::array<std::uint64_t, 3>, 4 * kMaxSnapTriangles> found;
     std::size_t count = 0;
-    const auto& table = snapTable();
-    std::array<int, 3> low{}, high{};
-    for (int k = 0; k < 3; ++k) {
-        low[std::size_t(k)] = std::max({std::max(p[std::size_t(k)], q[std::size_t(k)]) - 1, 0});
-        high[std::size_t(k)] = std::min({std::min(p[std::size_t(k)], q[std::size_t(k)]), grid.n[std::size_t(k)] - 2});
-    }
-    auto localVertex = [](const std::array<int, 3>& point, const int c[3]) {
-        for (int v = 0; v < cube::kVertexCount; ++v) {
-            const auto& o = cube::kVertexOffset[std::size_t(v)];
-            if (c[0] + o[0] == point[0] && c[1] + o[1] == point[1] && c[2] + o[2] == point[2]) return v;
-        }
-        return -1;
-    };
-    for (int z = low[2]; z <= high[2]; ++z) {
-        for (int y = low[1]; y <= high[1]; ++y) {
-            for (int x = low[0]; x <= high[0]; ++x) {
-                const int c[3] = {x, y, z};
-                const int a = kSnapCornerVertex + localVertex(p, c), b = kSnapCornerVertex + localVertex(q, c);
-                const SnapCase& cased = table[std::size_t(grid.config(x, y, z))];
-                for (int t = 0; t < cased.count; ++t) {
-                    const auto& tri = cased.triangles[std::size_t(t)];
-                    const bool hasA = tri[0] == a || tri[1] == a || tri[2] == a;
-                    if (!hasA || !(tri[0] == b || tri[1] == b || tri[2] == b)) continue;
-                    std::array<std::uint64_t, 3> key{};
-                    for (int k = 0; k < 3; ++k) key[std::size_t(k)] = grid.cornerKey(tri[std::size_t(k)], x, y, z);
-                    std::sort(key.begin(), key.end());
-                    const auto end = found.begin() + std::ptrdiff_t(count);
-                    const auto twin = std::find(found.begin(), end, key);
-                    if (twin != end)
-                        *twin = found[--count];
-                    else
-                        found[count++] = key;
-                }
-            }
+    const CornerPlaces& places = cornerPlaces();
+    for (int d = 0; d < 8; ++d) {
+        const int c[3] = {p[0] - 1 + (d & 1), p[1] - 1 + (d >> 1 & 1), p[2] - 1 + (d >> 2)};
+        if (!around.entry[std::size_t(d)] || q[0] < c[0] || q[0] > c[0] + 1 || q[1] < c[1] || q[1] > c[1] + 1 ||
+            q[2] < c[2] || q[2] > c[2] + 1)
+            continue;
+        // p is at offset 1 - d in the cell, q at q - p + 1 - d.
+        const int a = kSnapCornerVertex + places.vertexAt[std::size_t(7 - d)];
+        const int b =
+            kSnapCornerVertex + places.vertexAt[std::size_t((q[0] - c[0]) + 2 * (q[1] - c[1]) + 4 * (q[2] - c[2]))];
+        const SnapCase& cased = *around.entry[std::size_t(d)];
+        for (int t = 0; t < cased.count; ++t) {
+            const auto& tri = cased.triangles[std::size_t(t)];
+            const bool hasA = tri[0] == a || tri[1] == a || tri[2] == a;
+            if (!hasA || !(tri[0] == b || tri[1] == b || tri[2] == b)) continue;
+            std::array<std::uint64_t, 3> key{};
+            for (int k = 0; k < 3; ++k)
+                key[std::size_t(k)] = grid.cornerKey(places, tri[std::size_t(k)], c[0], c[1], c[2]);
+            std::sort(key.begin(), key.end());
+            const auto end = found.begin() + std::ptrdiff_t(count);
+            const auto twin = std::find(found.begin(), end, key);
+            if (twin != end)
+                *twin = found[--count];
+            else
+                found[count++] = key;
         }
     }
     return int(count);
 }
 
-// Pass 2 (see the top of the file).
-void keepSurfaces(std::vector<SampleState>& states, const std::vector<SampleState>& unsnapped, const Dims& n) {
-    const std::size_t strides[3] = {1, std::size_t(n[0]), std::size_t(n[0]) * std::size_t(n[1])};
-    std::vector<std::size_t> release;
-    std::size_t i = 0;
-    for (int z = 0; z < n[2]; ++z) {
-        for (int y = 0; y < n[1]; ++y) {
-            for (int x = 0; x < n[0]; ++x, ++i) {
-                if (!isAt(states[i]) || isAt(unsnapped[i])) continue;
-                const int p[3] = {x, y, z};
-                bool anchored = false;
-                for (int k = 0; k < 3 && !anchored; ++k) {
-                    for (int side = 0; side < 2 && !anchored; ++side) {
-                        if (side == 0 ? p[k] == 0 : p[k] + 1 >= n[k]) continue;
-                        const std::size_t other = side == 0 ? i - strides[k] : i + strides[k];
-                        anchored = !isAt(states[other]) && isAbove(states[other]) == isAbove(unsnapped[i]);
-                    }
-                }
-                if (!anchored) release.push_back(i);
-            }
-        }
-    }
-    for (const std::size_t r : release) states[r] = unsnapped[r];
+// Concatenated in order.
+std::vector<std::size_t> joined(const std::vector<std::vector<std::size_t>>& parts) {
+    std::size_t total = 0;
+    for (const auto& part : parts) total += part.size();
+    std::vector<std::size_t> all;
+    all.reserve(total);
+    for (const auto& part : parts) all.insert(all.end(), part.begin(), part.end());
+    return all;
 }
 
-// Pass 3 (see the top of the file).
-void keepSheetsApart(std::vector<SampleState>& states, const std::vector<SampleState>& unsnapped, const Dims& n) {
+// Pass 2 (see the top of the file), over the samples pass 1 snapped, by slice
+// (`snapped`); returns those that stay snapped, in sample order.
+std::vector<std::size_t> keepSurfaces(std::vector<SampleState>& states, const std::vector<SampleState>& unsnapped,
+                                      const Dims& n, int threads, std::vector<std::vector<std::size_t>>& snapped) {
+    const std::size_t strides[3] = {1, std::size_t(n[0]), std::size_t(n[0]) * std::size_t(n[1])};
+    std::vector<std::vector<std::size_t>> release(static_cast<std::size_t>(n[2]));
+    parallelFor(n[2], threads, [&](int z) {
+        std::vector<std::size_t>& kept = snapped[std::size_t(z)];
+        std::size_t keptCount = 0;
+        for (const std::size_t i : kept) {
+            const std::size_t inSlice = i - std::size_t(z) * strides[2];
+            const int p[3] = {int(inSlice % strides[1]), int(inSlice / strides[1]), z};
+            bool anchored = false;
+            for (int k = 0; k < 3 && !anchored; ++k) {
+                for (int side = 0; side < 2 && !anchored; ++side) {
+                    if (side == 0 ? p[k] == 0 : p[k] + 1 >= n[k]) continue;
+                    const std::size_t other = side == 0 ? i - strides[k] : i + strides[k];
+                    anchored = !isAt(states[other]) && isAbove(states[other]) == isAbove(unsnapped[i]);
+                }
+            }
+            if (anchored)
+                kept[keptCount++] = i;
+            else
+                release[std::size_t(z)].push_back(i);
+        }
+        kept.resize(keptCount);
+    });
+    for (const auto& slice : release)
+        for (const std::size_t r : slice) states[r] = unsnapped[r];
+    return joined(snapped);
+}
+
+// Pass 3 (see the top of the file), from the samples still snapped after pass 2
+// (`candidates`, in sample order).
+void keepSheetsApart(std::vector<SampleState>& states, const std::vector<SampleState>& unsnapped, const Dims& n,
+                     int threads, std::vector<std::size_t> candidates) {
     // The samples to check: every one that snapped, then, after a round, those a
     // released sample can change the cells of (within two samples of it).
-    std::vector<std::size_t> candidates;
-    for (std::size_t i = 0; i < states.size(); ++i) {
-        if (isAt(states[i]) && !isAt(unsnapped[i])) candidates.push_back(i);
-    }
     std::vector<std::uint8_t> queued(states.size(), 0);  // a candidate of this round
     for (const std::size_t c : candidates) queued[c] = 1;
     const std::size_t strides[3] = {1, std::size_t(n[0]), std::size_t(n[0]) * std::size_t(n[1])};
     for (;;) {
         const StateGrid grid{states, n};
-        std::vector<std::size_t> release;
-        for (const std::size_t i : candidates) {
-            if (!isAt(states[i])) continue;
-            const std::array<int, 3> p{int(i % strides[1]), int(i / strides[1] % std::size_t(n[1])),
-                                       int(i / strides[2])};
-            for (int neighbour = 0; neighbour < 27; ++neighbour) {
-                const std::array<int, 3> q{p[0] + neighbour % 3 - 1, p[1] + neighbour / 3 % 3 - 1,
-                                           p[2] + neighbour / 9 - 1};
-                if (neighbour == 13 || q[0] < 0 || q[1] < 0 || q[2] < 0 || q[0] >= n[0] || q[1] >= n[1] || q[2] >= n[2])
-                    continue;
-                const std::size_t other = grid.index(q[0], q[1], q[2]);
-                // A segment between two candidates is checked from its first end only.
-                if (!isAt(states[other]) || (neighbour < 13 && queued[other]) || trianglesOnSegment(grid, p, q) <= 2)
-                    continue;
-                release.push_back(i);
-                if (!isAt(unsnapped[other])) release.push_back(other);
+        // Runs of candidates, each checked on one thread.
+        constexpr std::size_t kRun = 4096;
+        std::vector<std::vector<std::size_t>> released((candidates.size() + kRun - 1) / kRun);
+        parallelFor(int(released.size()), threads, [&](int run) {
+            std::vector<std::size_t>& release = released[std::size_t(run)];
+            const std::size_t first = std::size_t(run) * kRun, last = std::min(first + kRun, candidates.size());
+            for (std::size_t c = first; c < last; ++c) {
+                const std::size_t i = candidates[c];
+                if (!isAt(states[i])) continue;
+                const std::array<int, 3> p{int(i % strides[1]), int(i / strides[1] % std::size_t(n[1])),
+                                           int(i / strides[2])};
+                std::optional<CellsAround> around;  // read at p's first neighbour at the isovalue
+                for (int neighbour = 0; neighbour < 27; ++neighbour) {
+                    const std::array<int, 3> q{p[0] + neighbour % 3 - 1, p[1] + neighbour / 3 % 3 - 1,
+                                               p[2] + neighbour / 9 - 1};
+                    if (neighbour == 13 || q[0] < 0 || q[1] < 0 || q[2] < 0 || q[0] >= n[0] || q[1] >= n[1] ||
+                        q[2] >= n[2])
+                        continue;
+                    const std::size_t other = grid.index(q[0], q[1], q[2]);
+                    // A segment between two candidates is checked from its first end only.
+                    if (!isAt(states[other]) || (neighbour < 13 && queued[other])) continue;
+                    if (!around) around.emplace(grid, p);
+                    if (trianglesOnSegment(grid, *around, p, q) <= 2) continue;
+                    release.push_back(i);
+                    if (!isAt(unsnapped[other])) release.push_back(other);
+                }
             }
-        }
+        });
+        const std::vector<std::size_t> release = joined(released);
         for (const std::size_t c : candidates) queued[c] = 0;
         if (release.empty()) return;
         for (const std::size_t r : release) states[r] = unsnapped[r];
@@ -189,20 +251,39 @@ void keepSheetsApart(std::vector<SampleState>& states, const std::vector<SampleS
 
 }  // namespace
 
-std::vector<SampleState> snapStates(const Volume& volume, double iso) {
+std::vector<SampleState> snapStates(const Volume& volume, double iso, int threads) {
     return visitSamples(volume, [&](const auto* samples) {
         const Dims& n = volume.dims();
         const std::size_t strides[3] = {1, std::size_t(n[0]), std::size_t(n[0]) * std::size_t(n[1])};
         std::vector<SampleState> states(volume.sampleCount(), SampleState::Below);
         std::vector<SampleState> unsnapped(volume.sampleCount(), SampleState::Below);
-        std::size_t i = 0;
-        for (int z = 0; z < n[2]; ++z) {
+        std::vector<std::vector<std::size_t>> snapped(static_cast<std::size_t>(n[2]));  // by pass 1, per slice
+        // Sides first; then only a sample with a neighbour on the other side
+        // (a crossed edge) can snap, and only those read their neighbours' values.
+        parallelFor(n[2], threads, [&](int z) {
+            for (std::size_t i = std::size_t(z) * strides[2], end = i + strides[2]; i < end; ++i) {
+                const double value = static_cast<double>(samples[i]);
+                unsnapped[i] = value == iso ? SampleState::At : value >= iso ? SampleState::Above : SampleState::Below;
+            }
+        });
+        parallelFor(n[2], threads, [&](int z) {
+            const auto* side = reinterpret_cast<const std::uint8_t*>(unsnapped.data());
             for (int y = 0; y < n[1]; ++y) {
-                for (int x = 0; x < n[0]; ++x, ++i) {
+                const std::size_t row = std::size_t(z) * strides[2] + std::size_t(y) * strides[1];
+                // Neighbouring rows, the row itself where there is none (no crossing there).
+                const std::size_t across[4] = {y > 0 ? row - strides[1] : row, y + 1 < n[1] ? row + strides[1] : row,
+                                               z > 0 ? row - strides[2] : row, z + 1 < n[2] ? row + strides[2] : row};
+                for (int x = 0; x < n[0]; ++x) {
+                    const std::size_t i = row + std::size_t(x);
+                    const unsigned above = side[i] & 1u;
+                    unsigned crossed = (side[x > 0 ? i - 1 : i] & 1u) ^ above;
+                    crossed |= (side[x + 1 < n[0] ? i + 1 : i] & 1u) ^ above;
+                    for (const std::size_t r : across) crossed |= (side[r + std::size_t(x)] & 1u) ^ above;
+                    if (!crossed) {
+                        states[i] = unsnapped[i];
+                        continue;
+                    }
                     const double value = static_cast<double>(samples[i]);
-                    unsnapped[i] = value == iso   ? SampleState::At
-                                   : value >= iso ? SampleState::Above
-                                                  : SampleState::Below;
                     bool at = value == iso;
                     const int p[3] = {x, y, z};
                     for (int k = 0; k < 3 && !at; ++k) {
@@ -211,11 +292,11 @@ std::vector<SampleState> snapStates(const Volume& volume, double iso) {
                             at = snapsTowards(value, static_cast<double>(samples[i + strides[k]]), iso);
                     }
                     states[i] = at ? static_cast<SampleState>(std::uint8_t(unsnapped[i]) | 2u) : unsnapped[i];
+                    if (at && !isAt(unsnapped[i])) snapped[std::size_t(z)].push_back(i);
                 }
             }
-        }
-        keepSurfaces(states, unsnapped, n);
-        keepSheetsApart(states, unsnapped, n);
+        });
+        keepSheetsApart(states, unsnapped, n, threads, keepSurfaces(states, unsnapped, n, threads, snapped));
         return states;
     });
 }

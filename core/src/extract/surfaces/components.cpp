@@ -526,7 +526,7 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
 std::vector<Surface> detail::extractAllSurfaces(const Volume& volume, double iso, TableKind table, int threads,
                                                 const std::atomic<bool>* cancel, ExtractProgress* progress) {
     if (table == TableKind::Trilinear) return detail::allTrilinear(volume, iso, threads);
-    if (table == TableKind::Snap) return detail::allSnap(volume, iso);
+    if (table == TableKind::Snap) return detail::allSnap(volume, iso, threads);
     detail::LabelledMesh labelled = detail::marchLabelled(volume, iso, table, threads, progress);
     if (detail::cancelled(cancel)) return {};
     Split split(labelled, volume, table, threads);

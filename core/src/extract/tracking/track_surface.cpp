@@ -37,7 +37,7 @@ Surface walkWhole(const TrackWorker& worker, TrackState& state, TableKind table,
 
 Surface track(const Volume& volume, double iso, const GridEdge& seed, TableKind table, int threads) {
     if (table == TableKind::Trilinear) return detail::trackTrilinear(volume, iso, seed, threads);
-    if (table == TableKind::Snap) return detail::trackSnap(volume, iso, seed);
+    if (table == TableKind::Snap) return detail::trackSnap(volume, iso, seed, threads);
     const auto start = Clock::now();
     // More threads than the volume's tiles can share out would only wait on one another.
     threads = std::min({threads, kMaxTrackThreads, detail::SparseBlocks::usefulThreads(volume.dims())});
@@ -61,7 +61,7 @@ std::vector<Surface> trackAllSurfaces(const Volume& volume, double iso, TableKin
     std::vector<Surface> surfaces;
     const Dims& n = volume.dims();
     if (n[0] < 2 || n[1] < 2 || n[2] < 2) return surfaces;
-    if (table == TableKind::Snap) return detail::allSnap(volume, iso);
+    if (table == TableKind::Snap) return detail::allSnap(volume, iso, 1);
     const auto worker = makeWorker(volume, iso, table);
     const auto& continuation = continuationTable(table);
     std::vector<std::uint8_t> visited(volume.sampleCount(), 0);

@@ -12,6 +12,7 @@
 #include "isotrack/fields.h"
 #include "isotrack/marching_cubes.h"
 #include "isotrack/mesh_processing.h"
+#include "isotrack/snap_table.h"
 #include "isotrack/surface.h"
 #include "isotrack/tracking.h"
 
@@ -208,4 +209,14 @@ TEST_CASE("snap: tables by name", "[core][snap]") {
     CHECK(std::string(tableKindName(TableKind::Snap)) == "snap");
     CHECK(std::count(kTableKinds.begin(), kTableKinds.end(), TableKind::Snap) == 1);
     CHECK_THROWS_AS(parseTableKind("snapmc"), InputError);
+}
+
+// marchSnap skips the cells whose samples are all on one side without reading
+// the table; it may because no such entry has a triangle, whatever its at samples.
+TEST_CASE("snap: entries with every sample on one side have no triangles", "[core][snap][tables]") {
+    for (const unsigned above : {0u, 0xffu}) {
+        for (unsigned at = 0; at < 256; ++at) {
+            CHECK(int(snapTable()[std::size_t(snapCaseIndex(std::uint8_t(above), std::uint8_t(at)))].count) == 0);
+        }
+    }
 }
