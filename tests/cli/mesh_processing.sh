@@ -122,21 +122,34 @@ for table in consistent snap; do
         fail "smoothing ($table) left the mean dihedral angle at $after (from $before)"
 done
 
-# Decimation to a tenth: at most 11% of the triangles, closed if the input was,
-# within a voxel (the smallest spacing, 0.957 mm) of the original both ways.
-for input in raw cap; do
-    flag=""
-    [[ $input == cap ]] && flag=--cap
-    "$isotrack" "${skull[@]}" $flag --decimate 0.1 --out "${input}_decimated.ply" > "${input}_decimated.json"
-    ratio=$($py -c "import sys; print(int(sys.argv[2]) / int(sys.argv[1]))" "$(surface $input.json triangles)" \
-                "$(surface ${input}_decimated.json triangles)")
-    hausdorff=$("$distance" "$input.ply" "${input}_decimated.ply")
-    echo "decimate 0.1 ($input): ratio $ratio, Hausdorff $hausdorff mm," \
-         "closed $(surface ${input}_decimated.json closed), border loops $(surface ${input}_decimated.json border_loops)"
-    $py -c "import sys; sys.exit(not float(sys.argv[1]) <= 0.11)" "$ratio" || fail "--decimate 0.1 kept $ratio"
-    $py -c "import sys; sys.exit(not float(sys.argv[1]) < 0.9570312)" "$hausdorff" || fail "Hausdorff $hausdorff mm"
-    [[ $(surface ${input}_decimated.json border_loops) == $(surface $input.json border_loops) ]] ||
-        fail "decimation changed the border loops"
+# Decimation to a tenth, with both tables: at most 11% of the triangles,
+# closed if the input was, within a voxel (the smallest spacing, 0.957 mm) of
+# the original both ways. The consistent skull keeps its border loops; on the
+# snapped one, whose sheets meet at grid points, splitting the pinched edges
+# adds loops (9 -> 14 measured), so only its closure is asserted.
+"$isotrack" "${skull[@]}" --table snap --out snap.ply > snap.json
+for table in consistent snap; do
+    for input in raw cap; do
+        flag="" base=$input
+        [[ $input == cap ]] && flag=--cap
+        [[ $table == snap ]] && base=snap && [[ $input == cap ]] && base=snap_cap
+        out=${table}_${input}_decimated
+        "$isotrack" "${skull[@]}" --table $table $flag --decimate 0.1 --out "$out.ply" > "$out.json"
+        ratio=$($py -c "import sys; print(int(sys.argv[2]) / int(sys.argv[1]))" "$(surface $base.json triangles)" \
+                    "$(surface $out.json triangles)")
+        hausdorff=$("$distance" "$base.ply" "$out.ply")
+        echo "decimate 0.1 ($table, $input): ratio $ratio, Hausdorff $hausdorff mm," \
+             "closed $(surface $out.json closed), border loops $(surface $out.json border_loops)"
+        $py -c "import sys; sys.exit(not float(sys.argv[1]) <= 0.11)" "$ratio" || fail "--decimate 0.1 ($table) kept $ratio"
+        $py -c "import sys; sys.exit(not float(sys.argv[1]) < 0.9570312)" "$hausdorff" ||
+            fail "--decimate 0.1 ($table): Hausdorff $hausdorff mm"
+        if [[ $table == consistent ]]; then
+            [[ $(surface $out.json border_loops) == $(surface $base.json border_loops) ]] ||
+                fail "decimation changed the border loops"
+        fi
+        if [[ $input == cap ]]; then
+            [[ $(surface $out.json closed) == True ]] || fail "decimating the capped skull ($table) opened it"
+        fi
+    done
 done
-[[ $(surface cap_decimated.json closed) == True ]] || fail "decimating the capped skull opened it"
 echo "ok"

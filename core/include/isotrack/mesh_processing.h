@@ -96,8 +96,9 @@ struct MeshProcessing {
     bool decimates() const { return decimateRatio < 1.0 || decimateError.has_value(); }
 };
 
-// The error bound decimation uses unless told otherwise: half the volume's
-// smallest spacing.
+// The error bound decimation uses unless told otherwise: 0.94 of the volume's
+// smallest spacing, so the result stays within a voxel of the input both ways
+// (decimate.cpp checks it).
 double defaultDecimateError(const Volume& volume);
 
 // How far smoothing may move a vertex unless told otherwise: half the volume's

@@ -81,6 +81,7 @@ NearSurface::NearSurface(const Buffer<Vertex>& vertices, const std::vector<std::
     for (std::size_t t = 0; t < count; ++t) forCells(t, [&](std::size_t c) { ++first_[c + 1]; });
     for (std::size_t c = 0; c + 1 < first_.size(); ++c) first_[c + 1] += first_[c];
     triangles_.resize(first_.back());
+    testedBy_.assign(count, 0u);
     std::vector<std::uint32_t> fill(first_.begin(), first_.end() - 1);
     for (std::size_t t = 0; t < count; ++t)
         forCells(t, [&](std::size_t c) { triangles_[fill[c]++] = std::uint32_t(t); });
@@ -90,25 +91,54 @@ long NearSurface::cellOf(double c, int axis) const {
     return std::clamp(long(std::floor((c - lo_[axis]) / cell_[axis])), 0L, n_[axis] - 1);
 }
 
-bool NearSurface::near(const float* point) const {
-    const V3 p = at(point);
-    const double reach2 = reach_ * reach_;
-    long from[3], to[3];
-    const double coords[3] = {p.x, p.y, p.z};
-    for (int a = 0; a < 3; ++a) from[a] = cellOf(coords[a] - reach_, a), to[a] = cellOf(coords[a] + reach_, a);
+template <class Visit>
+bool NearSurface::forTrianglesNear(const float* p, Visit&& visit) const {
+    auto visitCell = [&](long x, long y, long z) {
+        const std::size_t c = std::size_t(x + n_[0] * (y + n_[1] * z));
+        for (std::uint32_t i = first_[c]; i < first_[c + 1]; ++i) {
+            const std::uint32_t t = triangles_[i];
+            if (testedBy_[t] == query_) continue;
+            testedBy_[t] = query_;
+            if (visit(std::size_t(t))) return true;
+        }
+        return false;
+    };
+    if (++query_ == 0) std::fill(testedBy_.begin(), testedBy_.end(), 0u), query_ = 1;
+    // p's own cell first: the nearest triangles are most often there.
+    long from[3], to[3], own[3];
+    for (int a = 0; a < 3; ++a)
+        from[a] = cellOf(p[a] - reach_, a), to[a] = cellOf(p[a] + reach_, a), own[a] = cellOf(p[a], a);
+    if (visitCell(own[0], own[1], own[2])) return true;
     for (long z = from[2]; z <= to[2]; ++z)
         for (long y = from[1]; y <= to[1]; ++y)
-            for (long x = from[0]; x <= to[0]; ++x) {
-                const std::size_t c = std::size_t(x + n_[0] * (y + n_[1] * z));
-                for (std::uint32_t i = first_[c]; i < first_[c + 1]; ++i) {
-                    const std::size_t t = triangles_[i];
-                    if (triangleDistance2(p, at(vertices_[indices_[3 * t]].position),
-                                          at(vertices_[indices_[3 * t + 1]].position),
-                                          at(vertices_[indices_[3 * t + 2]].position)) <= reach2)
-                        return true;
-                }
-            }
+            for (long x = from[0]; x <= to[0]; ++x)
+                if ((x != own[0] || y != own[1] || z != own[2]) && visitCell(x, y, z)) return true;
     return false;
+}
+
+bool NearSurface::near(const float* point, double radius) const {
+    const V3 p = at(point);
+    const double reach2 = radius * radius;
+    return forTrianglesNear(point, [&](std::size_t t) {
+        return triangleDistance2(p, at(vertices_[indices_[3 * t]].position),
+                                 at(vertices_[indices_[3 * t + 1]].position),
+                                 at(vertices_[indices_[3 * t + 2]].position)) <= reach2;
+    });
+}
+
+double NearSurface::distanceBound(const float* point, double close) const {
+    const V3 p = at(point);
+    const double close2 = close * close;
+    double best2 = reach_ * reach_;
+    bool found = false;
+    forTrianglesNear(point, [&](std::size_t t) {
+        const double d2 =
+            triangleDistance2(p, at(vertices_[indices_[3 * t]].position), at(vertices_[indices_[3 * t + 1]].position),
+                              at(vertices_[indices_[3 * t + 2]].position));
+        if (d2 <= best2) best2 = d2, found = true;
+        return best2 <= close2;
+    });
+    return found ? std::sqrt(best2) : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace isotrack::detail

@@ -46,10 +46,13 @@ void remeasure(Surface& surface) {
 
 double defaultDecimateError(const Volume& volume) {
     const Vec3d& s = volume.spacing();
-    return 0.5 * std::min({s[0], s[1], s[2]});
+    return 0.94 * std::min({s[0], s[1], s[2]});
 }
 
-double defaultSmoothTolerance(const Volume& volume) { return defaultDecimateError(volume); }
+double defaultSmoothTolerance(const Volume& volume) {
+    const Vec3d& s = volume.spacing();
+    return 0.5 * std::min({s[0], s[1], s[2]});
+}
 
 void applyVolumeDefaults(MeshProcessing& processing, const Volume& volume) {
     if (processing.decimateRatio < 1.0 && !processing.decimateError)

@@ -117,7 +117,7 @@ TEST_CASE("decimating a snapped integer ball leaves no zero-area triangle", "[co
     const Mesh original = surface.mesh;
     MeshProcessing decimate;
     decimate.decimateRatio = 0.1;
-    decimate.decimateError = 0.5;  // the CLI's default: half a voxel
+    decimate.decimateError = 0.94;  // the CLI's default: 0.94 of a voxel
     processSurface(surface, decimate);
     CHECK(zeroAreaTriangles(surface.mesh) == 0);
     CHECK(surface.stats.closed);
