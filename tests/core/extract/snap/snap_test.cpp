@@ -7,6 +7,7 @@
 #include <set>
 #include <tuple>
 
+#include "core/extract/snap/random_integers.h"
 #include "core/mesh_checks.h"
 #include "isotrack/errors.h"
 #include "isotrack/fields.h"
@@ -39,16 +40,7 @@ std::multiset<std::array<Point, 3>> trianglesByPosition(const Mesh& mesh) {
     return out;
 }
 
-// Integer samples in [-range, range] at isovalue 0: many samples equal it, and
-// crossings near a sample snap it.
-Volume randomIntegers(const Dims& dims, std::mt19937& rng, int range) {
-    Volume v(dims, ScalarType::Int16);
-    std::uniform_int_distribution<int> pick(-range, range);
-    for (int z = 0; z < dims[2]; ++z)
-        for (int y = 0; y < dims[1]; ++y)
-            for (int x = 0; x < dims[0]; ++x) v.setValue(x, y, z, pick(rng));
-    return v;
-}
+using test::randomIntegers;
 
 Volume noise(const Dims& dims, std::mt19937& rng) {
     Volume v(dims, ScalarType::Float32);

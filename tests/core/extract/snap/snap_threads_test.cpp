@@ -8,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include "core/extract/snap/random_integers.h"
 #include "extract/snap/snap_march.h"
 #include "isotrack/marching_cubes.h"
 #include "isotrack/snap_table.h"
@@ -17,16 +18,7 @@ using namespace isotrack;
 
 namespace {
 
-// Integer samples in [-range, range]: at isovalue 0 many equal it, and at 0.5
-// many crossings lie near a sample, so all three passes have work.
-Volume randomIntegers(const Dims& dims, std::mt19937& rng, int range) {
-    Volume v(dims, ScalarType::Int16);
-    std::uniform_int_distribution<int> pick(-range, range);
-    for (int z = 0; z < dims[2]; ++z)
-        for (int y = 0; y < dims[1]; ++y)
-            for (int x = 0; x < dims[0]; ++x) v.setValue(x, y, z, pick(rng));
-    return v;
-}
+using test::randomIntegers;
 
 bool sameMesh(const Mesh& a, const Mesh& b) {
     return a.indices == b.indices && a.vertices.size() == b.vertices.size() &&
