@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Where the mean dihedral angle of a smoothed CT surface stays, and what two
-other smoothings reach, for docs/meshes.md (issue 47's "halve it" criterion).
+other smoothings reach, for docs/meshes.md (the goal of halving it).
 
 Usage: /usr/bin/python3 bench/smoothing_analysis.py VOLUME.nrrd UNSMOOTHED.ply SMOOTHED.ply
 (VOLUME: an axis-aligned NRRD at the origin, for its sizes and spacings)
