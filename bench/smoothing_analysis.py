@@ -28,6 +28,8 @@ import numpy as np
 import scipy.sparse as sparse
 from scipy.spatial import cKDTree
 
+from mesh_measures import enclosed_volume as volume, read_ply, sampled_hausdorff as hausdorff
+
 
 def read_nrrd_grid(path):
     head = open(path, "rb").read(4096).split(b"\n\n")[0].decode()
@@ -36,17 +38,6 @@ def read_nrrd_grid(path):
         return np.array([float(s) for s in next(x for x in head.splitlines() if x.startswith(name)).split()[1:]])
 
     return field("sizes:"), field("spacings:")
-
-
-def read_ply(path):
-    data = open(path, "rb").read()
-    start = data.index(b"end_header\n") + len(b"end_header\n")
-    head = data[:start].decode()
-    nv = int(head.split("element vertex ")[1].split()[0])
-    nf = int(head.split("element face ")[1].split()[0])
-    v = np.frombuffer(data, "<f4", nv * 6, start).reshape(nv, 6)[:, :3].astype(float)
-    f = np.frombuffer(data, np.dtype([("n", "u1"), ("i", "<i4", 3)]), nf, start + nv * 24)["i"].astype(np.int64)
-    return v, f
 
 
 def face_normals(v, f):
@@ -80,19 +71,6 @@ def dihedral(v, f, a, b):
     n, ok, _ = face_normals(v, f)
     d = np.arccos(np.clip((n[a] * n[b]).sum(axis=1), -1, 1))
     return np.where(ok[a] & ok[b], d, np.nan)
-
-
-def volume(v, f):
-    return abs(np.einsum("ij,ij->i", v[f[:, 0]], np.cross(v[f[:, 1]], v[f[:, 2]])).sum() / 6)
-
-
-def hausdorff(v, w, f):
-    def samples(x):
-        p = [x[f[:, i]] for i in range(3)]
-        return np.vstack([x, (p[0] + p[1] + p[2]) / 3, (p[0] + p[1]) / 2, (p[1] + p[2]) / 2, (p[2] + p[0]) / 2])
-
-    s, t = samples(v), samples(w)
-    return max(cKDTree(t).query(s)[0].max(), cKDTree(s).query(t)[0].max())
 
 
 def umbrella(n, f, fixed_edges):
