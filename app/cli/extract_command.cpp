@@ -362,7 +362,7 @@ int runExtract(const ExtractOptions& options) {
     const Source source = loadSource(options.source);
     const Dims& dims = source.volume.dims();
 
-    const Extraction result = extract(options, source, table);
+    const Extraction result = namingSource(source, [&] { return extract(options, source, table); });
     const double seconds = median(result.seconds);
     if (!options.out.empty())
         writeMesh(options.out, result.mesh, perSurface(options.method) ? &result.faceComponent : nullptr);

@@ -12,6 +12,7 @@
 
 #include "command_line/raw_options.h"
 #include "isotrack/dicom.h"
+#include "isotrack/errors.h"
 #include "isotrack/orientation.h"
 #include "isotrack/volume.h"
 
@@ -42,6 +43,17 @@ struct Source {
     std::optional<DicomContents> dicom;  // DICOM: the series, the one read and the files skipped
     std::size_t dicomSeries = 0;
 };
+
+// Runs work() on the source's volume; a WorkingMemoryError from core (work
+// too large for the memory available) comes out naming the file or field.
+template <class Work>
+decltype(auto) namingSource(const Source& source, Work&& work) {
+    try {
+        return work();
+    } catch (const WorkingMemoryError& e) {
+        throw WorkingMemoryError(source.name + ": " + e.what());
+    }
+}
 
 // What can be checked before anything is read: one of --volume and --field,
 // a well-formed field spec, a finite --iso. Throws InputError.

@@ -80,7 +80,8 @@ int runTree(const TreeOptions& options) {
     const Source source = loadSource(options.source);
     const double at = options.at.value_or(source.iso);
     ContourTree tree;
-    const double seconds = secondsOf([&] { tree = buildContourTree(source.volume, options.threads); });
+    const double seconds = secondsOf(
+        [&] { tree = namingSource(source, [&] { return buildContourTree(source.volume, options.threads); }); });
     const double simplifySeconds =
         secondsOf([&] { simplifyContourTree(tree, options.minPersistence, options.minSize); });
     std::size_t kept = 0;

@@ -6,7 +6,9 @@
 #   triangles of the same ball extracted from an in-memory crop;
 # - a file truncated while `all` streams over it: one line naming it, exit 1,
 #   no core dump, and the mesh the command was to replace left as it was;
-# - a gzip volume whose decoded samples exceed memory is refused at once.
+# - a gzip volume whose decoded samples exceed memory is refused at once;
+# - the snap table and the contour tree refuse a volume whose working arrays
+#   exceed the memory left (ulimit -v), naming the file.
 # Usage: mapped_volumes.sh ISOTRACK SOURCE_DIR WORK_DIR   (exit 77: no numpy)
 set -euo pipefail
 isotrack=$1
@@ -89,4 +91,22 @@ elapsed_ms=$((($(date +%s%N) - start) / 1000000))
     fail "gzip refusal: $(cat gzip.err)"
 [[ $elapsed_ms -lt 1000 ]] || fail "gzip refusal took $elapsed_ms ms"
 echo "gzip: $(cat gzip.err) ($elapsed_ms ms)"
+# Work that keeps bytes per sample beside a mapped volume (the snap table's
+# states, the contour tree's build) is refused before it allocates, naming the
+# file, when they do not fit: here under an address-space limit (ulimit -v) that
+# leaves under 1 GiB beside a 1 GiB sparse file.
+truncate -s 1G zeros.raw
+zeros=(--volume zeros.raw --dims 1024,1024,1024 --type uint8 --iso 0.5)
+for run in "extract --table snap" "extract --method tree" "tree"; do
+    # shellcheck disable=SC2086
+    if (ulimit -v 2000000 && exec "$isotrack" $run "${zeros[@]}") > /dev/null 2> limit.err; then
+        fail "$run: a volume whose working arrays exceed the limit was accepted"
+    fi
+    want="zeros.raw: the snap table's sample states, 3 bytes a sample: 1024 x 1024 x 1024 samples need 3.0 GiB, more"
+    [[ $run == "extract --table snap" ]] ||
+        want="zeros.raw: the contour tree's build, 24 bytes a sample: 1024 x 1024 x 1024 samples need 24.0 GiB, more"
+    [[ $(wc -l < limit.err) -eq 1 ]] && grep -q "^isotrack: $want than the .* of memory available$" limit.err ||
+        fail "$run: $(cat limit.err)"
+    echo "$run under ulimit -v: $(cat limit.err)"
+done
 echo "mapped volumes: all checks passed"

@@ -37,4 +37,12 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// Work whose own arrays (a byte or more per sample) would not fit in the memory
+// available, refused before anything is allocated. The message names what and
+// the sizes, not the volume's file, which the caller adds.
+class WorkingMemoryError : public InputError {
+public:
+    using InputError::InputError;
+};
+
 }  // namespace isotrack

@@ -56,7 +56,9 @@ private:
     int guardSlot_ = -1;
 };
 
-// Memory the system can give without swapping (Linux: MemAvailable), in bytes.
+// Memory the system can give without swapping (Linux: MemAvailable), and no
+// more than the process's limits leave (ulimit -v and -d: RLIMIT_AS, RLIMIT_DATA),
+// in bytes.
 std::uint64_t availableMemoryBytes();
 
 }  // namespace isotrack

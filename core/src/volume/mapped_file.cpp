@@ -12,6 +12,7 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/mman.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -189,14 +190,31 @@ const MappedFile* MappedFile::containing(const void* address) {
 }
 
 std::uint64_t availableMemoryBytes() {
+    std::uint64_t available = std::uint64_t(1) << 30;
     std::ifstream meminfo("/proc/meminfo");
-    std::string key;
+    std::string key, unit;
     std::uint64_t kib = 0;
-    std::string unit;
-    while (meminfo >> key >> kib >> unit)
-        if (key == "MemAvailable:") return kib * 1024;
-    const long pages = sysconf(_SC_AVPHYS_PAGES);
-    return pages > 0 ? std::uint64_t(pages) * pageSize() : std::uint64_t(1) << 30;
+    bool found = false;
+    while (!found && meminfo >> key >> kib >> unit) found = key == "MemAvailable:";
+    if (found) {
+        available = kib * 1024;
+    } else if (const long pages = sysconf(_SC_AVPHYS_PAGES); pages > 0) {
+        available = std::uint64_t(pages) * pageSize();
+    }
+    // What the process's limits leave (ulimit -v, ulimit -d): the address space
+    // and the data segment in use are statm's first and sixth fields, in pages.
+    std::uint64_t statm[6] = {};
+    std::ifstream self("/proc/self/statm");
+    for (std::uint64_t& field : statm) self >> field;
+    const int resources[2] = {RLIMIT_AS, RLIMIT_DATA};
+    const std::uint64_t used[2] = {statm[0] * pageSize(), statm[5] * pageSize()};
+    for (int r = 0; r < 2; ++r) {
+        rlimit limit{};
+        if (getrlimit(resources[r], &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) continue;
+        const auto cap = std::uint64_t(limit.rlim_cur);
+        available = std::min(available, cap > used[r] ? cap - used[r] : 0);
+    }
+    return available;
 }
 
 }  // namespace isotrack

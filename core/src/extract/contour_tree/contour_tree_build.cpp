@@ -36,6 +36,7 @@
 
 #include "extract/contour_tree/contour_tree_build.h"
 #include "isotrack/errors.h"
+#include "support/working_memory.h"
 
 namespace isotrack::detail {
 namespace {
@@ -364,6 +365,8 @@ double ContourTreeProgress::fraction() const {
 }
 
 ContourTree computeContourTree(const Volume& volume, int threads, ContourTreeProgress* progress) {
+    // The build's peak beyond the volume (docs/performance.md): 22-24 bytes a sample.
+    detail::requireWorkingMemory(volume, 24, "the contour tree's build");
     ContourTree tree = detail::computeContourTreeImpl(volume, threads, progress);
     volume.throwIfDamaged();  // a mapped file that shrank meanwhile read as zeros
     return tree;

@@ -34,6 +34,7 @@
 #include "extract/snap/snap_march.h"
 #include "isotrack/cube.h"
 #include "support/parallel.h"
+#include "support/working_memory.h"
 
 namespace isotrack::detail {
 namespace {
@@ -252,6 +253,8 @@ void keepSheetsApart(std::vector<SampleState>& states, const std::vector<SampleS
 }  // namespace
 
 std::vector<SampleState> snapStates(const Volume& volume, double iso, int threads) {
+    // states, unsnapped and pass 3's queued marks
+    requireWorkingMemory(volume, 3, "the snap table's sample states");
     return visitSamples(volume, [&](const auto* samples) {
         const Dims& n = volume.dims();
         const std::size_t strides[3] = {1, std::size_t(n[0]), std::size_t(n[0]) * std::size_t(n[1])};
