@@ -55,13 +55,18 @@ void persistenceSlider(const PanelState& state, std::vector<Action>& actions) {
 // A volume over the memory budget: the method reads all of it from disk only when told to.
 void confirmation(const ExtractionState& extraction, std::vector<Action>& actions) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.8f, 0.35f, 1.0f));
-    ImGui::TextWrapped("%s reads %s from disk (over the memory budget)", methodLabels(extraction.confirmMethod).choice,
+    // Track asks only with the snap table, whose sample states cover the whole volume.
+    const bool snapTrack = extraction.confirmMethod == Method::Track;
+    ImGui::TextWrapped("%s%s reads %s from disk (over the memory budget)",
+                       methodLabels(extraction.confirmMethod).choice, snapTrack ? " with the snap table" : "",
                        formatBytes(extraction.confirmBytes).c_str());
     ImGui::PopStyleColor();
     if (ImGui::Button("Extract")) actions.push_back(ConfirmExtraction{});
     ImGui::SameLine();
     if (ImGui::Button("Cancel")) actions.push_back(CancelExtraction{});
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("back to track: click a surface to grow it");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(snapTrack ? "back to the consistent table: click a surface to grow it"
+                                    : "back to track: click a surface to grow it");
 }
 
 }  // namespace

@@ -163,6 +163,11 @@ void ExtractionController::setSurfaceIso(std::uint32_t id, double iso) {
 void ExtractionController::confirm() {
     if (!confirmation_) throw InputError("confirm: no extraction waits for confirmation");
     confirmed_.insert(confirmation_->method);
+    if (pendingTrack_) {  // a click's track, not a request: tracked by the caller of takeConfirmedTrack
+        confirmedTrack_ = std::exchange(pendingTrack_, std::nullopt);
+        confirmation_.reset();
+        return;
+    }
     method_ = confirmation_->method;
     confirmation_.reset();
     submit();
@@ -171,7 +176,9 @@ void ExtractionController::confirm() {
 void ExtractionController::cancelConfirmation() {
     if (!confirmation_) return;
     confirmation_.reset();
+    pendingTrack_.reset();
     method_ = Method::Track;
+    if (table_ == TableKind::Snap) table_ = TableKind::Consistent;  // snap tracking reads the whole volume too
     submit();
 }
 
@@ -250,6 +257,13 @@ void ExtractionController::askConfirmation(const ExtractionResult& result) {
         return;
     }
     confirmation_ = Confirmation{result.method, result.confirmBytes};
+}
+
+bool ExtractionController::askBeforeTracking(const LoadedVolume& volume, const PendingTrack& track) {
+    if (table_ != TableKind::Snap || !volume.overBudget || confirmed_.count(Method::Track)) return false;
+    pendingTrack_ = track;
+    confirmation_ = Confirmation{Method::Track, volume.mappedBytes};
+    return true;
 }
 
 // A DICOM folder's files that were left out: a line each on stderr, and a

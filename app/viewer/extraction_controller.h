@@ -30,6 +30,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "render/renderer.h"
@@ -85,9 +86,18 @@ public:
         std::uint64_t bytes = 0;
     };
     const std::optional<Confirmation>& confirmation() const { return confirmation_; }
-    void confirm();                    // the method waiting may read the whole volume (InputError if none waits)
-    void cancelConfirmation();         // back to track
-    void chooseMethod(Method method);  // the user's choice, submitted: not switched to track on its own
+    void confirm();             // the method waiting may read the whole volume (InputError if none waits)
+    void cancelConfirmation();  // back to track (with the consistent table if it was snap)
+    // A click to track with the snap table, whose sample states cover the whole
+    // volume: on a volume over the budget it waits for confirm() (true), once
+    // per volume; confirmed, takeConfirmedTrack() hands it back to be tracked.
+    struct PendingTrack {
+        Vec3d point{};
+        std::optional<std::uint32_t> hit;
+    };
+    bool askBeforeTracking(const LoadedVolume& volume, const PendingTrack& track);
+    std::optional<PendingTrack> takeConfirmedTrack() { return std::exchange(confirmedTrack_, std::nullopt); }
+    void chooseMethod(Method method);                 // the user's choice, submitted: not switched to track on its own
     void setMethodChosen() { methodChosen_ = true; }  // --method was given
     std::uint64_t memoryBudget() const { return memoryBudget_; }
 
@@ -137,6 +147,7 @@ private:
 
     std::uint64_t memoryBudget_ = 0;
     std::optional<Confirmation> confirmation_;
+    std::optional<PendingTrack> pendingTrack_, confirmedTrack_;  // a click waiting for confirm(), and confirmed
     bool methodChosen_ = false;  // --method, or a method picked since: not switched to track on its own
 
     std::optional<double> shownIso_;

@@ -204,7 +204,10 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
         result.extractMs = msSince(start);
         return;
     }
-    if (request.method != Method::Track && loaded.overBudget && !request.confirmed) {
+    // Every method but track reads the whole volume, and so does the snap
+    // table (its sample states are decided over the whole volume).
+    const bool readsAll = request.method != Method::Track || request.table == TableKind::Snap;
+    if (readsAll && loaded.overBudget && !request.confirmed) {
         result.confirmBytes = loaded.mappedBytes;  // the viewer asks first; seeds wait too
         return;
     }

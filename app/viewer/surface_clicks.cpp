@@ -70,6 +70,7 @@ void SurfaceClicks::trackFrom(const Vec3d& point, std::optional<std::uint32_t> h
             return;
         }
     }
+    if (extraction_.askBeforeTracking(*volume, {point, hit})) return;
     SurfaceStructure* clicked = hit ? scene_.find(*hit) : nullptr;
     const TableKind table = extraction_.table();
     const bool every = extraction_.method() == Method::All || extraction_.method() == Method::Tree;

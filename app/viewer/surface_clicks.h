@@ -39,6 +39,8 @@ public:
     void click(const render::FrameView& view, float x, float y, bool track);
     // As a ctrl-click at that world point (a script's `track X Y Z`).
     void trackPoint(const Vec3d& point);
+    // A track that waited for the user's word (ExtractionController::askBeforeTracking).
+    void trackConfirmed(const ExtractionController::PendingTrack& track) { trackFrom(track.point, track.hit); }
     const nlohmann::json& picks() const { return picks_; }
 
 private:

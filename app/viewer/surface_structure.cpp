@@ -97,8 +97,9 @@ SurfaceStructure::~SurfaceStructure() = default;
 
 void SurfaceStructure::restartGrowth() {
     if (!volume_ || presence_ != Presence::Shown) return;  // not a tracked surface, or nothing to grow
-    tracker_ = std::make_unique<SurfaceTracker>(volume_->volume, iso_, table_);
-    tracker_->start(seed_);
+    auto tracker = std::make_unique<SurfaceTracker>(volume_->volume, iso_, table_);
+    tracker->start(seed_);  // may throw (the snap table's states may not fit): the surface stays as it was
+    tracker_ = std::move(tracker);
     mesh_ = Mesh{};
     stats_ = SurfaceStats{};
     gpu_.clear();

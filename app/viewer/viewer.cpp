@@ -173,6 +173,7 @@ void Viewer::frame() {
             actions_.clear();
             panel_.build(state, actions_);
             for (const ui::Action& action : actions_) actionHandler_.apply(action);
+            if (const auto track = extraction_.takeConfirmedTrack()) clicks_.trackConfirmed(*track);
         }
     } catch (const std::exception& e) {
         fail(e);

@@ -5,7 +5,8 @@
 # grows the surface `isotrack extract --method track` gives from that point
 # without asking; `all` waits for `confirm`, then yields the surfaces (count and
 # triangles) of `isotrack extract --method all`; the summary says mapped.
-# Without --iso the file is refused with a one-line message; under the budget
+# With the snap table track asks too. Without --iso the file is refused with
+# a one-line message; under the budget
 # `all` does not ask, so a `confirm` there is a script error.
 #   mapped_budget.sh ISOTRACK VIEWER_CHECK OUT_DIR
 set -euo pipefail
@@ -57,6 +58,25 @@ check(asked["checkpoints"][0]["confirm_bytes"] == volume["bytes"] and asked["che
 check(sorted(s["triangles"] for s in asked["surfaces"]) == theirs, "--method all, confirmed: other surfaces")
 print(f"tracked {cli_track['triangles']} triangles without asking; all asked for {volume['bytes']} bytes, "
       f"then {len(mine)} surfaces as extract; resident {volume['resident_bytes']} bytes")
+PY
+
+# With the snap table track asks too (its sample states cover the whole
+# volume): nothing grows before `confirm`, then the surface of
+# `isotrack extract --table snap --method track` from that point.
+printf 'wait\ntrack %s\nwait\ncheckpoint asked\nconfirm\nwait\ncheckpoint tracked\nquit\n' "$seed" > snap.isotrack
+"$isotrack" "${layout[@]}" --table snap --memory-budget 0.01 --script snap.isotrack --size 960x600 --json > snap.json
+"$isotrack" extract "${layout[@]}" --table snap --method track --seed "${seed// /,}" --json > snap_track.json
+"$python" - snap.json snap_track.json <<'PY'
+import json, sys
+session, track = (json.load(open(p)) for p in sys.argv[1:3])
+point = {c["name"]: c for c in session["checkpoints"]}
+bytes_ = session["volume"]["bytes"]
+if point["asked"]["confirm_bytes"] != bytes_ or point["asked"]["surfaces"] != 0:
+    sys.exit(f"mapped_budget: snap track did not ask first: {point['asked']}")
+grown = [s["triangles"] for s in session["surfaces"] if s["tracked"]]
+if grown != [track["surfaces"][0]["triangles"]]:
+    sys.exit(f"mapped_budget: snap track grew {grown}, extract gives {track['surfaces'][0]['triangles']}")
+print(f"snap track asked for {bytes_} bytes, then grew {grown[0]} triangles as extract")
 PY
 
 # No --iso over the budget: refused, naming the file, the budget and --iso.
