@@ -59,8 +59,7 @@ public:
         std::array<std::atomic<Block*>, 27> link;       // each adjacent block; null until looked up
         std::array<int, 3> origin{};                    // grid coordinates of local point (0, 0, 0)
         int owner = 0;                                  // the thread walking the block's cells
-        std::uint32_t pending = kNoPending;             // the tracker's first piece waiting in the block
-        bool queued = false;                            // the block waits its turn in the tracker's queue
+        std::uint32_t pending = kNoPending;             // the tracker's set of pieces waiting in the block, if any
         Block(const std::array<int, 3>& at, int thread, VertexSlots slots) : origin(at), owner(thread) {
             const std::uint64_t ready = slots == VertexSlots::Eager ? ~std::uint64_t(0) : 0;
             if (slots == VertexSlots::Eager) vertex.fill(kNoVertex);
