@@ -39,8 +39,10 @@ struct ContourTree {
     // exists when lower < v <= upper (a NaN lower counts as below every v).
     struct Arc {
         std::uint32_t lower = 0, upper = 0;  // nodes
-        std::size_t begin = 0, end = 0;      // its regular samples in samples[begin, end), ascending
-        bool pruned = false;                 // hidden by simplify()
+        // Its regular samples in samples[begin, end), ascending; 32 bits, as the
+        // tree takes fewer than 2^31 samples (20 bytes an arc rather than 32).
+        std::uint32_t begin = 0, end = 0;
+        bool pruned = false;  // hidden by simplify()
         std::size_t size() const { return end - begin; }
     };
     Dims dims{0, 0, 0};
