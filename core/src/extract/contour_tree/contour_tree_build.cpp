@@ -38,7 +38,6 @@
 
 #include "extract/contour_tree/contour_tree_build.h"
 #include "isotrack/errors.h"
-#include "support/parallel.h"
 
 namespace isotrack::detail {
 namespace {

@@ -21,6 +21,7 @@
 
 #include "isotrack/contour_tree.h"
 #include "isotrack/errors.h"
+#include "support/parallel.h"  // the passes' parts run on kept threads
 
 namespace isotrack::detail {
 

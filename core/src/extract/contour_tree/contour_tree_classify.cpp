@@ -24,7 +24,6 @@
 #include <type_traits>
 
 #include "extract/contour_tree/contour_tree_build.h"
-#include "support/parallel.h"
 
 namespace isotrack::detail {
 namespace {

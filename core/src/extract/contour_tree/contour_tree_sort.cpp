@@ -21,7 +21,6 @@
 #include <utility>
 
 #include "extract/contour_tree/contour_tree_build.h"
-#include "support/parallel.h"
 
 namespace isotrack::detail {
 namespace {
