@@ -200,9 +200,7 @@ public:
     // and then throws Cancelled when asked to stop. On a thread of a parallel
     // step (support/parallel.h) the step rethrows it on the calling thread.
     void step(std::uint32_t k) const {
-        if (!progress_ || (k & (kStride - 1)) != 0 || k == 0) return;
-        progress_->done.fetch_add(kStride, std::memory_order_relaxed);
-        check();
+        if (progress_ && (k & (kStride - 1)) == 0 && k != 0) countStride();
     }
     bool cancelled() const { return progress_ && progress_->cancel && progress_->cancel->load(); }
     void check() const {
@@ -221,6 +219,13 @@ public:
     }
 
 private:
+    // step()'s rare part, a call of its own so that step() stays inlined in
+    // the sweeps' and the merge's loops (the throw would make it too large).
+    [[gnu::noinline]] void countStride() const {
+        progress_->done.fetch_add(kStride, std::memory_order_relaxed);
+        check();
+    }
+
     ContourTreeProgress* progress_;
 };
 
