@@ -39,8 +39,10 @@ struct ContourTree {
     // exists when lower < v <= upper (a NaN lower counts as below every v).
     struct Arc {
         std::uint32_t lower = 0, upper = 0;  // nodes
-        std::size_t begin = 0, end = 0;      // its regular samples in samples[begin, end), ascending
-        bool pruned = false;                 // hidden by simplify()
+        // Its regular samples in samples[begin, end), ascending; 32 bits, as the
+        // tree takes fewer than 2^31 samples (20 bytes an arc rather than 32).
+        std::uint32_t begin = 0, end = 0;
+        bool pruned = false;  // hidden by simplify()
         std::size_t size() const { return end - begin; }
     };
     Dims dims{0, 0, 0};
@@ -85,9 +87,11 @@ struct ContourTreeProgress {
 // "sorting the samples", "sweeping the join and split trees", "merging them", "building arcs", "done".
 const char* contourTreePhaseName(ContourTreeProgress::Phase phase);
 
-// Builds the contour tree on up to two threads (the join and split trees at
-// once). Throws InputError for an empty volume or one of 2^31 samples or more,
-// and Cancelled (isotrack/errors.h) when progress->cancel is set meanwhile.
+// Builds the contour tree on `threads` threads, core's kept ones (the sort and
+// the class pass on all of them, the join and split trees at once on two, the
+// arcs on up to four). Throws InputError for an empty volume or one of 2^31
+// samples or more, and Cancelled (isotrack/errors.h) when progress->cancel is
+// set meanwhile (on any thread: it stops every part and is thrown here).
 ContourTree computeContourTree(const Volume& volume, int threads = 2, ContourTreeProgress* progress = nullptr);
 
 // Hides noise: repeatedly prunes the leaf branch (a chain of arcs from an

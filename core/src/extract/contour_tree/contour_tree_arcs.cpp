@@ -13,7 +13,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <thread>
 #include <utility>
 
 #include "extract/contour_tree/contour_tree_build.h"
@@ -25,31 +24,34 @@ namespace {
 constexpr std::uint32_t kNodeBit = 0x80000000u;
 bool isNode(std::uint32_t entry) { return (entry & kNodeBit) != 0; }
 
-// The ranks in parts, one a thread: fn(part, begin, end).
+// The ranks in parts, one a thread (kept threads, parallel.h): fn(part, begin,
+// end). The first exception of a part (Cancelled, from progress.inStrides in
+// its loop) is rethrown on the calling thread.
 template <class Fn>
 void inRanges(std::uint32_t n, std::size_t parts, Fn&& fn) {
     auto bound = [&](std::size_t p) { return std::uint32_t(std::uint64_t(n) * p / parts); };
-    std::vector<std::thread> helpers;
-    for (std::size_t p = 1; p < parts; ++p) helpers.emplace_back([&, p] { fn(p, bound(p), bound(p + 1)); });
-    fn(0, bound(0), bound(1));
-    for (std::thread& helper : helpers) helper.join();
+    parallelFor(int(parts), int(parts),
+                [&](int p) { fn(std::size_t(p), bound(std::size_t(p)), bound(std::size_t(p) + 1)); });
 }
 
 // The nodes (the ranks on no piece), and the count of each piece's samples
 // in each part of the ranks.
-Buffer<std::uint32_t> findNodes(const AugmentedTree& tree, std::vector<Buffer<std::uint32_t>>& sizes) {
+Buffer<std::uint32_t> findNodes(const AugmentedTree& tree, std::vector<Buffer<std::uint32_t>>& sizes,
+                                const BuildProgress& progress) {
     std::vector<Buffer<std::uint32_t>> found(sizes.size());
     inRanges(std::uint32_t(tree.arcOf.size()), sizes.size(),
              [&](std::size_t p, std::uint32_t begin, std::uint32_t end) {
                  sizes[p].assign(tree.pieces.size(), 0);
-                 for (std::uint32_t k = begin; k < end; ++k) {
-                     const std::uint32_t piece = tree.arcOf[k];
-                     if (piece == kNoSample) {
-                         found[p].push_back(k);
-                     } else {
-                         ++sizes[p][piece];
+                 progress.inStrides(begin, end, [&](std::uint32_t from, std::uint32_t to) {
+                     for (std::uint32_t k = from; k < to; ++k) {
+                         const std::uint32_t piece = tree.arcOf[k];
+                         if (piece == kNoSample) {
+                             found[p].push_back(k);
+                         } else {
+                             ++sizes[p][piece];
+                         }
                      }
-                 }
+                 });
              });
     Buffer<std::uint32_t> nodeRanks;
     nodeRanks.reserve(tree.pieces.size() + 1);  // a tree: one node more than arcs
@@ -98,7 +100,7 @@ Buffer<std::uint32_t> numberArcs(AugmentedTree& tree, ContourTree& out) {
 // small enough to stay in cache, rather than in the arcs' records (samples
 // < 2^31, so they fit).
 void fillSamples(const AugmentedTree& tree, std::uint32_t chains, Buffer<std::uint32_t>&& pieceOfArc,
-                 std::vector<Buffer<std::uint32_t>>& sizes, ContourTree& out) {
+                 std::vector<Buffer<std::uint32_t>>& sizes, ContourTree& out, const BuildProgress& progress) {
     std::uint32_t sum = 0;
     for (std::uint32_t a = 0; a < chains; ++a) {  // the chains are the first arcs; edges hold no samples
         out.arcs[a].begin = sum;
@@ -110,10 +112,12 @@ void fillSamples(const AugmentedTree& tree, std::uint32_t chains, Buffer<std::ui
     inRanges(std::uint32_t(tree.arcOf.size()), sizes.size(),
              [&](std::size_t p, std::uint32_t begin, std::uint32_t end) {
                  std::uint32_t* at = sizes[p].data();
-                 for (std::uint32_t k = begin; k < end; ++k) {
-                     const std::uint32_t piece = tree.arcOf[k];
-                     if (!isNode(piece)) out.samples[at[piece]++] = tree.order[k];
-                 }
+                 progress.inStrides(begin, end, [&](std::uint32_t from, std::uint32_t to) {
+                     for (std::uint32_t k = from; k < to; ++k) {
+                         const std::uint32_t piece = tree.arcOf[k];
+                         if (!isNode(piece)) out.samples[at[piece]++] = tree.order[k];
+                     }
+                 });
              });
 }
 
@@ -131,16 +135,17 @@ void indexNodeArcs(ContourTree& out) {
 
 }  // namespace
 
-ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented, int threads) {
+ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented, int threads,
+                                const BuildProgress& progress) {
     ContourTree out;
     out.dims = volume.dims();
     const std::uint32_t chains = augmented.chains;
     const bool large = augmented.arcOf.size() >= (std::size_t(1) << 16);
     std::vector<Buffer<std::uint32_t>> sizes(large ? std::size_t(std::clamp(threads, 1, 4)) : 1);
-    Buffer<std::uint32_t> nodeRanks = findNodes(augmented, sizes);
+    Buffer<std::uint32_t> nodeRanks = findNodes(augmented, sizes, progress);
     numberNodes(volume, augmented, nodeRanks, out);
     Buffer<std::uint32_t>().swap(nodeRanks);
-    fillSamples(augmented, chains, numberArcs(augmented, out), sizes, out);
+    fillSamples(augmented, chains, numberArcs(augmented, out), sizes, out, progress);
     augmented.arcOf = {}, augmented.order = {};
     augmented.sorted.shrink(0), augmented.spare.shrink(0);
     indexNodeArcs(out);

@@ -17,6 +17,9 @@
 // trees by rank, the position in the order: the merge walks each arc in value
 // order, and where arcs do not interleave the next sample of an arc is the
 // next rank, so it reads memory in sequence instead of anywhere in the grid.
+// The threaded passes (sort, classes, sweeps, arcs) run on core's kept threads
+// (support/parallel.h); a part's exception, Cancelled included (each part
+// checks for a cancel at least once a stride), is rethrown on the calling thread.
 //
 // Memory: the order, the two trees and their two union-find forests, 4 bytes
 // each per sample, and the class byte: 21 bytes per sample at the peak (17 on
@@ -29,7 +32,6 @@
 #include <algorithm>
 #include <cassert>
 #include <iterator>
-#include <thread>
 #include <utility>
 
 #include <unistd.h>
@@ -102,7 +104,7 @@ void sweep(const T* values, const Dims& dims, const Slice<std::uint32_t>& order,
         root = winner;
     };
     for (std::uint32_t step = 0; step < n; ++step) {
-        if (progress.step(step)) return;  // cancelled: the caller throws
+        progress.step(step);  // throws Cancelled when asked to stop
         if (step + 2 * kPrefetchDistance < n) __builtin_prefetch(&classes[order[rankAt(step + 2 * kPrefetchDistance)]]);
         if (step + kPrefetchDistance < n) {
             const std::uint32_t later = order[rankAt(step + kPrefetchDistance)];
@@ -206,7 +208,7 @@ void mergeTrees(const Slice<std::uint32_t>& joinDown, const Slice<std::uint32_t>
         edge(s, t);
         state[s] = kGone;
         --remaining;
-        if (progress.step(n - remaining)) progress.check();
+        progress.step(n - remaining);
         if (isLeaf(state[t])) leaves.push_back(t);
     }
 }
@@ -268,7 +270,7 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
     // The sort's blocks, 8 bytes a sample each, hold the rest: sorted the
     // order and the join links, spare the two forests, then the merge's
     // arcOf and state.
-    SortedSamples sorted = sortSamples(volume, threads);
+    SortedSamples sorted = sortSamples(volume, threads, progress);
     const std::size_t half = 4 * std::size_t(n);
     tree.order = sorted.order();
     const Slice<std::uint32_t> joinDown = sliceOf<std::uint32_t>(sorted.sorted, half, n);
@@ -277,13 +279,12 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
     const bool together = threads > 1;  // the two sweeps at once, each with a forest of its own
     if (!together) sorted.spare.shrink(half);
     progress.start(ContourTreeProgress::Phase::Sweeping, 2 * std::uint64_t(n));  // both sweeps count
-    Buffer<std::uint8_t> classes = classifySamples(volume, threads);
-    progress.check();
+    Buffer<std::uint8_t> classes = classifySamples(volume, threads, progress);
     visitSamples(volume, [&](const auto* values) {
         // Together, each thread counts its tree's arcs where its forest was: the
         // join tree's in the first n bytes of spare, the split tree's at half.
         auto count = [&](const Slice<std::uint32_t>& link, std::size_t at, std::uint8_t unit) {
-            if (!together || progress.cancelled()) return;
+            if (!together) return;
             const Slice<std::uint8_t> counts = sliceOf<std::uint8_t>(sorted.spare, at, n);
             std::fill(counts.begin(), counts.end(), std::uint8_t(0));
             countLinks(link, counts, unit);
@@ -298,10 +299,14 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
                          sliceOf<std::uint32_t>(sorted.spare, together ? half : 0, n), splitUp, progress);
             count(splitUp, half, kOneBelow);
         };
-        if (together) {
-            std::thread joiner(join);
-            split();
-            joiner.join();
+        if (together) {  // on kept threads; a sweep's Cancelled is rethrown here
+            parallelFor(2, 2, [&](int which) {
+                if (which == 0) {
+                    join();
+                } else {
+                    split();
+                }
+            });
         } else {
             join();
             split();
@@ -333,7 +338,7 @@ ContourTree computeContourTreeImpl(const Volume& volume, int threads, ContourTre
     const BuildProgress build(progress);
     AugmentedTree augmented = augmentedContourTree(volume, threads, build);
     build.start(ContourTreeProgress::Phase::Arcs, 0);
-    ContourTree tree = compressContourTree(volume, std::move(augmented), threads);
+    ContourTree tree = compressContourTree(volume, std::move(augmented), threads, build);
     build.start(ContourTreeProgress::Phase::Done, 0);
     return tree;
 }

@@ -21,6 +21,7 @@
 
 #include "isotrack/contour_tree.h"
 #include "isotrack/errors.h"
+#include "support/parallel.h"  // the passes' parts run on kept threads
 
 namespace isotrack::detail {
 
@@ -196,19 +197,35 @@ public:
         check();
     }
     // Called with each sample count k; counts a stride when k is a multiple of it,
-    // and then says whether to stop (a thread of its own returns, then check()
-    // throws on the calling one).
-    bool step(std::uint32_t k) const {
-        if (!progress_ || (k & (kStride - 1)) != 0 || k == 0) return false;
-        progress_->done.fetch_add(kStride, std::memory_order_relaxed);
-        return cancelled();
+    // and then throws Cancelled when asked to stop. On a thread of a parallel
+    // step (support/parallel.h) the step rethrows it on the calling thread.
+    void step(std::uint32_t k) const {
+        if (progress_ && (k & (kStride - 1)) == 0 && k != 0) countStride();
     }
     bool cancelled() const { return progress_ && progress_->cancel && progress_->cancel->load(); }
     void check() const {
         if (cancelled()) throw Cancelled{};
     }
+    // Runs fn(b, e) over [begin, end) a stride at a time, check() before each:
+    // the loops of a pass that reports no progress of its own, stopped within a stride.
+    template <class Fn>
+    void inStrides(std::uint32_t begin, std::uint32_t end, Fn&& fn) const {
+        while (begin < end) {
+            check();
+            const std::uint32_t next = end - begin > kStride ? begin + kStride : end;
+            fn(begin, next);
+            begin = next;
+        }
+    }
 
 private:
+    // step()'s rare part, a call of its own so that step() stays inlined in
+    // the sweeps' and the merge's loops (the throw would make it too large).
+    [[gnu::noinline]] void countStride() const {
+        progress_->done.fetch_add(kStride, std::memory_order_relaxed);
+        check();
+    }
+
     ContourTreeProgress* progress_;
 };
 
@@ -258,7 +275,7 @@ void sortByKey(Items& items, Key&& key) {
 constexpr std::uint8_t kJoinCandidate = 7, kSplitCandidate = 31;
 // The neighbour positions a class may name: the 6 faces, then the 12 edges.
 constexpr std::uint8_t kNeighbourPositions = 18;
-Buffer<std::uint8_t> classifySamples(const Volume& volume, int threads);
+Buffer<std::uint8_t> classifySamples(const Volume& volume, int threads, const BuildProgress& progress);
 // The index offset of neighbour position p (0-5 the faces -x +x -y +y -z +z, then the edges).
 std::int64_t neighbourOffset(const Dims& dims, std::uint8_t position);
 
@@ -270,12 +287,13 @@ struct SortedSamples {
     std::uint32_t count = 0;
     Slice<std::uint32_t> order() const { return sliceOf<std::uint32_t>(sorted, 0, count); }
 };
-SortedSamples sortSamples(const Volume& volume, int threads);
+SortedSamples sortSamples(const Volume& volume, int threads, const BuildProgress& progress);
 // Join tree, split tree and their merge (Carr et al.'s algorithm).
 AugmentedTree augmentedContourTree(const Volume& volume, int threads,
                                    const BuildProgress& progress = BuildProgress{nullptr});
 // Chains of regular samples into arcs between the critical ones (the passes
 // over the ranks on up to 4 of `threads`).
-ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented, int threads);
+ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented, int threads,
+                                const BuildProgress& progress);
 
 }  // namespace isotrack::detail

@@ -21,7 +21,6 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <type_traits>
 
 #include "extract/contour_tree/contour_tree_build.h"
@@ -138,7 +137,8 @@ bool anyNaN(const T* values, const Dims& dims, int z0, int z1) {
 }
 
 template <class T>
-void classifyRange(const T* values, const Dims& dims, int z0, int z1, Buffer<std::uint8_t>& out) {
+void classifyRange(const T* values, const Dims& dims, int z0, int z1, Buffer<std::uint8_t>& out,
+                   const BuildProgress& progress) {
     const ClassTables& tables = classTables();
     const SampleOrder<T> cmp{values};
     const std::int64_t row = dims[0], plane = std::int64_t(dims[0]) * dims[1];
@@ -176,6 +176,7 @@ void classifyRange(const T* values, const Dims& dims, int z0, int z1, Buffer<std
     std::vector<std::uint32_t> belowRow(static_cast<std::size_t>(dims[0]));
     const bool nan = anyNaN(values, dims, z0, z1);  // then one sample at a time, as SampleOrder orders NaN
     for (int z = z0; z < z1; ++z) {
+        progress.check();
         for (int y = 0; y < dims[1]; ++y) {
             const std::uint32_t edgeYZ =
                 (y == 0 ? 4u : 0u) | (y + 1 == dims[1] ? 8u : 0u) | (z == 0 ? 16u : 0u) | (z + 1 == dims[2] ? 32u : 0u);
@@ -206,20 +207,16 @@ std::int64_t neighbourOffset(const Dims& dims, std::uint8_t position) {
     return p[0] + std::int64_t(p[1]) * dims[0] + std::int64_t(p[2]) * dims[0] * dims[1];
 }
 
-Buffer<std::uint8_t> classifySamples(const Volume& volume, int threads) {
+Buffer<std::uint8_t> classifySamples(const Volume& volume, int threads, const BuildProgress& progress) {
     const Dims& dims = volume.dims();
     const std::size_t n = volume.sampleCount();
     Buffer<std::uint8_t> out(n);
     classTables();  // built once, before the threads share it
     visitSamples(volume, [&](const auto* values) {
-        const int parts = std::max(1, std::min(threads, dims[2]));
-        std::vector<std::thread> helpers;
-        for (int part = 1; part < parts; ++part) {
-            helpers.emplace_back(
-                [&, part] { classifyRange(values, dims, dims[2] * part / parts, dims[2] * (part + 1) / parts, out); });
-        }
-        classifyRange(values, dims, 0, dims[2] / parts, out);
-        for (std::thread& helper : helpers) helper.join();
+        const int parts = std::max(1, std::min(threads, dims[2]));  // slabs of planes, one a thread
+        parallelFor(parts, parts, [&](int part) {
+            classifyRange(values, dims, dims[2] * part / parts, dims[2] * (part + 1) / parts, out, progress);
+        });
     });
     return out;
 }

@@ -17,7 +17,6 @@
 #include <array>
 #include <cstring>
 #include <numeric>
-#include <thread>
 #include <type_traits>
 #include <utility>
 
@@ -44,7 +43,7 @@ auto sortKey(T v) {
 }
 
 template <class T>
-SortedSamples radixSort(const T* values, std::uint32_t n) {
+SortedSamples radixSort(const T* values, std::uint32_t n, const BuildProgress& progress) {
     constexpr int kKeyBits = 8 * sizeof(T), kDigitBits = kKeyBits < 16 ? kKeyBits : 16;
     constexpr std::size_t kBuckets = std::size_t(1) << kDigitBits;
     SortedSamples out{Pages(8 * std::size_t(n)), Pages(8 * std::size_t(n)), n};
@@ -55,6 +54,7 @@ SortedSamples radixSort(const T* values, std::uint32_t n) {
         const std::uint32_t* in = first ? nullptr : order.begin();
         std::uint32_t* to = first ? order.begin() : spare.begin();
         auto digit = [&](std::uint32_t s) { return std::size_t(sortKey(values[s]) >> shift) & (kBuckets - 1); };
+        progress.check();
         std::fill(count.begin(), count.end(), 0u);
         for (std::uint32_t i = 0; i < n; ++i) ++count[digit(first ? i : in[i])];
         if (count[digit(first ? 0 : in[0])] == n) {  // one digit for all: nothing moves
@@ -109,17 +109,19 @@ private:
     int shift_ = 0;
 };
 
-// Runs part(p, begin, end) for the parts, on a thread each.
+// Runs part(p, begin, end) for the parts, on a thread each (kept threads,
+// parallel.h), a stride of samples at a time: a cancel stops them between strides,
+// and Cancelled, as any part's exception, reaches the calling thread.
 template <class Part>
-void inParts(const Parts& parts, Part&& part) {
-    std::vector<std::thread> helpers;
-    for (int p = 1; p < parts.count(); ++p) helpers.emplace_back([&, p] { part(p, parts.begin(p), parts.end(p)); });
-    part(0, parts.begin(0), parts.end(0));
-    for (std::thread& helper : helpers) helper.join();
+void inParts(const Parts& parts, const BuildProgress& progress, Part&& part) {
+    parallelFor(parts.count(), parts.count(), [&](int p) {
+        progress.inStrides(parts.begin(p), parts.end(p),
+                           [&](std::uint32_t begin, std::uint32_t end) { part(p, begin, end); });
+    });
 }
 
 template <class T>
-SortedSamples radixSortPairs(const T* values, std::uint32_t n, int threads) {
+SortedSamples radixSortPairs(const T* values, std::uint32_t n, int threads, const BuildProgress& progress) {
     constexpr int kKeyBits = 8 * sizeof(T), kDigitBits = kKeyBits <= 16 ? 8 : 11;
     constexpr int kPasses = (kKeyBits + kDigitBits - 1) / kDigitBits;
     constexpr std::uint32_t kBuckets = 1u << kDigitBits;
@@ -134,7 +136,7 @@ SortedSamples radixSortPairs(const T* values, std::uint32_t n, int threads) {
     // parts of the index order, which is the input of the first pass to move).
     std::vector<std::uint32_t> count(kPasses * np * kBuckets);
     auto counts = [&](int pass, std::size_t part) { return &count[(std::size_t(pass) * np + part) * kBuckets]; };
-    inParts(parts, [&](int p, std::uint32_t begin, std::uint32_t end) {
+    inParts(parts, progress, [&](int p, std::uint32_t begin, std::uint32_t end) {
         std::uint32_t* c[kPasses];
         for (int pass = 0; pass < kPasses; ++pass) c[pass] = counts(pass, std::size_t(p));
         for (std::uint32_t i = begin; i < end; ++i) {
@@ -172,7 +174,7 @@ SortedSamples radixSortPairs(const T* values, std::uint32_t n, int threads) {
             for (std::size_t p = 0; p < np; ++p) sum += std::exchange(counts(pass, p)[b], sum);
         }
         std::fill(next.begin(), next.end(), 0u);
-        inParts(parts, [&](int p, std::uint32_t begin, std::uint32_t end) {
+        inParts(parts, progress, [&](int p, std::uint32_t begin, std::uint32_t end) {
             std::uint32_t* c = counts(pass, std::size_t(p));
             auto scatter = [&](auto&& put) {
                 if (in) {
@@ -214,14 +216,14 @@ SortedSamples radixSortPairs(const T* values, std::uint32_t n, int threads) {
 
 }  // namespace
 
-SortedSamples sortSamples(const Volume& volume, int threads) {
+SortedSamples sortSamples(const Volume& volume, int threads, const BuildProgress& progress) {
     const auto n = std::uint32_t(volume.sampleCount());
     return visitSamples(volume, [&](const auto* values) {
         using T = std::remove_const_t<std::remove_pointer_t<decltype(values)>>;
         if constexpr (sizeof(T) <= 4) {
-            return radixSortPairs(values, n, threads);
+            return radixSortPairs(values, n, threads, progress);
         } else {
-            return radixSort(values, n);
+            return radixSort(values, n, progress);
         }
     });
 }

@@ -67,3 +67,45 @@ TEST_CASE("a build asked to stop throws Cancelled", "[core][contour-tree]") {
     stopper.join();
     CHECK(later.phase.load() != ContourTreeProgress::Phase::Done);
 }
+
+TEST_CASE("a build stopped in any phase on several threads throws Cancelled, and the next is whole",
+          "[core][contour-tree][threads]") {
+    using Phase = ContourTreeProgress::Phase;
+    const Volume volume = field("gyroid:128");  // phases long enough for the stopper to come in time
+    const ContourTree plain = computeContourTree(volume, 1);
+    for (const int threads : {2, 4}) {
+        for (const Phase phase : {Phase::Sweeping, Phase::Merging, Phase::Arcs}) {
+            INFO(threads << " threads, stopped while " << contourTreePhaseName(phase));
+            std::atomic<bool> cancel{false}, over{false};
+            ContourTreeProgress progress;
+            progress.cancel = &cancel;
+            bool inTime = false;  // the stopper saw the phase itself, not a later one
+            std::thread stopper([&] {
+                Phase now = progress.phase.load();
+                for (; now < phase && !over.load(); now = progress.phase.load()) std::this_thread::yield();
+                inTime = now == phase;
+                cancel = true;
+            });
+            bool cancelled = false;
+            try {
+                computeContourTree(volume, threads, &progress);
+            } catch (const Cancelled&) {
+                cancelled = true;
+            }
+            over = true;
+            stopper.join();
+            if (inTime) {
+                CHECK(cancelled);
+                CHECK(progress.phase.load() >= phase);  // not before it was asked
+            } else {
+                WARN("the stopper came after " << contourTreePhaseName(phase) << " at " << threads
+                                               << " threads; not checked");
+            }
+        }
+        // The kept threads that ran the cancelled parts build the next tree whole.
+        const ContourTree again = computeContourTree(volume, threads);
+        CHECK(again.arcs.size() == plain.arcs.size());
+        CHECK(again.samples == plain.samples);
+        CHECK(again.nodeArcs == plain.nodeArcs);
+    }
+}
