@@ -119,7 +119,9 @@ RunCommand addTreeCommand(CLI::App& app) {
         ->add_option("--max-branches", options->maxBranches,
                      "The SVG draws the N most persistent branches (default 1000); the rest are counted")
         ->check(CLI::Range(std::size_t(1), std::size_t(1) << 30));
-    command->add_option("--threads", options->threads, "Threads (the tree uses at most two)")
+    command
+        ->add_option("--threads", options->threads,
+                     "Threads (the sort and the classes use them all, the arcs up to 4, the two sweeps one each)")
         ->check(CLI::Range(1, 256));
     return [options] { return runTree(*options); };
 }
