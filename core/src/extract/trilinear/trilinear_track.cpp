@@ -408,10 +408,10 @@ std::unique_ptr<TrilinearWalk> startTrilinear(const Volume& volume, double iso, 
     return std::make_unique<OneThreadWalk>(volume, iso, seed);
 }
 
-Surface finishedTrilinear(TrilinearWalk& walk, const Volume& volume) {
+Surface finishedTrilinear(TrilinearWalk& walk, const Volume& volume, int threads) {
     Surface surface;
     surface.mesh = std::move(walk.mesh());
-    surface.stats = measureSurface(surface.mesh, volume);
+    surface.stats = measureSurfaceOn(surface.mesh, volume, false, threads);
     surface.stats.cellsVisited = walk.piecesVisited();
     return surface;
 }
