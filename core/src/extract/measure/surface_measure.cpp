@@ -89,6 +89,33 @@ SurfaceStats measureSurfaceOn(const Mesh& mesh, const Volume& volume, bool close
     return surfaceStats(mesh, measure, closedUnlessOnBorder, threads);
 }
 
+SurfaceStats measureSurfaceInRuns(const Mesh& mesh, const Volume& volume, int threads) {
+    const int runs = std::max(threads, 1);
+    const std::size_t vertexCount = mesh.vertices.size(), triangleCount = mesh.triangleCount();
+    std::vector<SurfaceMeasure> measures(static_cast<std::size_t>(runs));
+    parallelFor(runs, threads, [&](int r) {
+        SurfaceMeasure& measure = measures[std::size_t(r)];
+        const std::size_t vBegin = vertexCount * std::size_t(r) / std::size_t(runs),
+                          vEnd = vertexCount * std::size_t(r + 1) / std::size_t(runs);
+        measure.addBounds(mesh.vertices.data() + vBegin, vEnd - vBegin);
+        for (std::size_t v = vBegin; v < vEnd && !measure.touchesBorder; ++v)
+            measure.touchesBorder = edgeOnVolumeBorder(mesh.vertexEdges[v], volume.dims());
+        const std::size_t tBegin = triangleCount * std::size_t(r) / std::size_t(runs),
+                          tEnd = triangleCount * std::size_t(r + 1) / std::size_t(runs);
+        TriangleLanes lanes;
+        std::size_t t = tBegin;
+        for (; t + 4 <= tEnd; t += 4) lanes.addFour(mesh.vertices.data(), mesh.indices.data() + 3 * t);
+        for (; t < tEnd; ++t) {
+            lanes.add(mesh.vertices[mesh.indices[3 * t]], mesh.vertices[mesh.indices[3 * t + 1]],
+                      mesh.vertices[mesh.indices[3 * t + 2]]);
+        }
+        measure.triangles = lanes.total();
+    });
+    SurfaceMeasure measure;
+    for (const SurfaceMeasure& part : measures) measure.merge(part);
+    return surfaceStats(mesh, measure, false, threads);
+}
+
 }  // namespace isotrack::detail
 
 namespace isotrack {

@@ -310,5 +310,11 @@ inline SurfaceStats surfaceStats(const Mesh& mesh, const SurfaceMeasure& measure
 
 // measureSurface (isotrack/surface.h), its closing check on `threads` threads.
 SurfaceStats measureSurfaceOn(const Mesh& mesh, const Volume& volume, bool closedUnlessOnBorder, int threads);
+// measureSurfaceOn's figures (no closedUnlessOnBorder) with the vertices and
+// triangles cut into one run per thread, measured at once (TriangleLanes) and
+// added up in run order: the bounds and closedness are measureSurface's, the
+// area's and volume's last bits depend on the number of threads. For a walk on
+// several threads, whose triangle order varies anyway.
+SurfaceStats measureSurfaceInRuns(const Mesh& mesh, const Volume& volume, int threads);
 
 }  // namespace isotrack::detail

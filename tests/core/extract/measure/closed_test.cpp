@@ -1,6 +1,6 @@
-// meshIsClosed on one thread and on several against a reference of its own:
-// every directed side counted in a map, closed when each appears once and so
-// does its reverse.
+// meshIsClosed on one thread and on several against a reference of its own
+// (every directed side counted in a map, closed when each appears once and so
+// does its reverse), and measureSurfaceInRuns against measureSurface.
 #include <catch2/catch.hpp>
 
 #include <cstdint>
@@ -88,4 +88,33 @@ TEST_CASE("closing check: tracked surfaces, closed, cut by the border and holed"
     const std::vector<Surface> open = extractAllSurfaces(gyroid, fieldDefaultIso("gyroid"), TableKind::Trilinear);
     REQUIRE_FALSE(open.empty());
     CHECK_FALSE(requireSameOnEveryThreadCount(open.front().mesh));
+}
+
+TEST_CASE("measure in runs: measureSurface's figures on 1 to 8 threads", "[core][measure][trilinear]") {
+    const Volume sphere = makeField({"sphere", 48});
+    const Vec3d c = sphereFieldCenter(48);
+    const GridEdge seed = nearestCrossedEdge(sphere, 0.0, {c[0] + sphereFieldRadius(48), c[1], c[2]});
+    const Volume gyroid = makeField({"gyroid", 40});
+    const Mesh ball = trackSurface(sphere, 0.0, seed, TableKind::Trilinear).mesh;
+    const Mesh open = extractAllSurfaces(gyroid, fieldDefaultIso("gyroid"), TableKind::Trilinear).front().mesh;
+    for (const auto& [mesh, volume] : {std::pair<const Mesh*, const Volume*>{&ball, &sphere}, {&open, &gyroid}}) {
+        const SurfaceStats one = measureSurface(*mesh, *volume);
+        for (int threads = 1; threads <= 8; ++threads) {
+            INFO(threads << " threads, " << mesh->triangleCount() << " triangles");
+            const SurfaceStats runs = detail::measureSurfaceInRuns(*mesh, *volume, threads);
+            CHECK(runs.closed == one.closed);
+            CHECK(runs.touchesBorder == one.touchesBorder);
+            CHECK(runs.triangles == one.triangles);
+            CHECK(runs.vertices == one.vertices);
+            for (int k = 0; k < 3; ++k) {
+                CHECK(runs.boundsMin[k] == one.boundsMin[k]);
+                CHECK(runs.boundsMax[k] == one.boundsMax[k]);
+            }
+            CHECK(runs.area == Approx(one.area).epsilon(1e-12));
+            REQUIRE(runs.enclosedVolume.has_value() == one.enclosedVolume.has_value());
+            if (one.enclosedVolume) CHECK(*runs.enclosedVolume == Approx(*one.enclosedVolume).epsilon(1e-12));
+        }
+    }
+    CHECK(measureSurface(ball, sphere).closed);
+    CHECK_FALSE(measureSurface(open, gyroid).closed);
 }
