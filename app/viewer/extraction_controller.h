@@ -67,6 +67,8 @@ public:
     const std::optional<double>& iso() const { return iso_; }  // nullopt: the source's default
     void setIso(double iso) { iso_ = iso; }
     TableKind table() const { return table_; }
+    // The extractions' threads, which a tracked surface's growth shares too (SurfaceTracker).
+    int threads() const { return worker_.threads(); }
     void setTable(TableKind table) { table_ = table; }
     Method method() const { return method_; }
     void setMethod(Method method) { method_ = method; }

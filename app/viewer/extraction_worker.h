@@ -124,6 +124,8 @@ public:
     bool busy() const;
     // How many passes were cancelled part-way since the worker started.
     std::size_t cancelledCount() const { return cancelled_.load(); }
+    // The threads an extraction runs on.
+    int threads() const { return threads_; }
 
 private:
     using Clock = std::chrono::steady_clock;

@@ -75,12 +75,13 @@ void SurfaceClicks::trackFrom(const Vec3d& point, std::optional<std::uint32_t> h
     const TableKind table = extraction_.table();
     const bool every = extraction_.method() == Method::All || extraction_.method() == Method::Tree;
     if (clicked != nullptr && !clicked->tracked() && every && clicked->containsEdge(seed)) {
-        clicked->startTracking(volume, iso, table, seed, point);
+        clicked->startTracking(volume, iso, table, seed, point, extraction_.threads());
         scene_.selected = clicked->id();
         picks_.back()["tracked_surface"] = clicked->id();
     } else {
-        auto surface = std::make_unique<SurfaceStructure>(renderer_.arena(), scene_.newId(), volume, iso, table, seed,
-                                                          point, render::surfaceColour(extraction_.takeColour()));
+        auto surface =
+            std::make_unique<SurfaceStructure>(renderer_.arena(), scene_.newId(), volume, iso, table, seed, point,
+                                               render::surfaceColour(extraction_.takeColour()), extraction_.threads());
         scene_.selected = surface->id();
         picks_.back()["tracked_surface"] = surface->id();
         scene_.add(std::move(surface));

@@ -75,8 +75,9 @@ void SurfaceStructure::setAbsent(Presence presence, double iso, std::uint32_t in
 }
 
 void SurfaceStructure::startTracking(std::shared_ptr<const LoadedVolume> volume, double iso, TableKind table,
-                                     const GridEdge& seed, const Vec3d& seedPoint) {
+                                     const GridEdge& seed, const Vec3d& seedPoint, int threads) {
     volume_ = std::move(volume);
+    threads_ = threads;
     iso_ = iso;
     table_ = table;
     seed_ = seed;
@@ -87,8 +88,15 @@ void SurfaceStructure::startTracking(std::shared_ptr<const LoadedVolume> volume,
 
 SurfaceStructure::SurfaceStructure(render::SurfaceArena& arena, std::uint32_t id,
                                    std::shared_ptr<const LoadedVolume> volume, double iso, TableKind table,
-                                   const GridEdge& seed, const Vec3d& seedPoint, const glm::vec3& colour)
-    : id_(id), gpu_(arena), seedPoint_(seedPoint), volume_(std::move(volume)), iso_(iso), table_(table), seed_(seed) {
+                                   const GridEdge& seed, const Vec3d& seedPoint, const glm::vec3& colour, int threads)
+    : id_(id),
+      gpu_(arena),
+      seedPoint_(seedPoint),
+      volume_(std::move(volume)),
+      iso_(iso),
+      table_(table),
+      seed_(seed),
+      threads_(threads) {
     style_.colour = colour;
     restartGrowth();
 }
@@ -97,7 +105,7 @@ SurfaceStructure::~SurfaceStructure() = default;
 
 void SurfaceStructure::restartGrowth() {
     if (!volume_ || presence_ != Presence::Shown) return;  // not a tracked surface, or nothing to grow
-    auto tracker = std::make_unique<SurfaceTracker>(volume_->volume, iso_, table_);
+    auto tracker = std::make_unique<SurfaceTracker>(volume_->volume, iso_, table_, threads_);
     tracker->start(seed_);  // may throw (the snap table's states may not fit): the surface stays as it was
     tracker_ = std::move(tracker);
     mesh_ = Mesh{};

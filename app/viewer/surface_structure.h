@@ -59,10 +59,11 @@ public:
     // which must outlive it (as every constructor's).
     SurfaceStructure(render::SurfaceArena& arena, std::uint32_t id, Surface surface, SurfaceFootprint footprint,
                      const glm::vec3& colour);
-    // A surface to grow from `seed`, tracked on `volume` (kept alive by this).
+    // A surface to grow from `seed`, tracked on `volume` (kept alive by this);
+    // its tracker's `threads` decide the snap table's states (SurfaceTracker).
     SurfaceStructure(render::SurfaceArena& arena, std::uint32_t id, std::shared_ptr<const LoadedVolume> volume,
-                     double iso, TableKind table, const GridEdge& seed, const Vec3d& seedPoint,
-                     const glm::vec3& colour);
+                     double iso, TableKind table, const GridEdge& seed, const Vec3d& seedPoint, const glm::vec3& colour,
+                     int threads);
     ~SurfaceStructure();
 
     // A new mesh for the same surface (another isovalue); style, offset and id stay.
@@ -79,7 +80,7 @@ public:
     void setAbsent(Presence presence, double iso, std::uint32_t into = 0);
     // Becomes a tracked surface growing from `seed` (a ctrl-click on an extracted surface).
     void startTracking(std::shared_ptr<const LoadedVolume> volume, double iso, TableKind table, const GridEdge& seed,
-                       const Vec3d& seedPoint);
+                       const Vec3d& seedPoint, int threads);
     Presence presence() const { return presence_; }
     std::uint32_t mergedInto() const { return mergedInto_; }
     double absentSince() const { return absentIso_; }
@@ -143,6 +144,7 @@ private:
     double iso_ = 0.0;
     TableKind table_ = TableKind::Consistent;
     GridEdge seed_{};
+    int threads_ = 1;  // the tracker's
 };
 
 }  // namespace isotrack::viewer

@@ -28,7 +28,7 @@ TEST_CASE("a surface grown cell budget by cell budget ends as the tracked surfac
     const Surface whole = trackSurface(volume->volume, iso, seed);
 
     render::SurfaceArena arena;
-    viewer::SurfaceStructure surface(arena, 7, volume, iso, TableKind::Consistent, seed, point, glm::vec3(1.0f));
+    viewer::SurfaceStructure surface(arena, 7, volume, iso, TableKind::Consistent, seed, point, glm::vec3(1.0f), 1);
     viewer::GrowthBudget budget;
     budget.cells = 300;
     int frames = 0;

@@ -55,10 +55,14 @@ std::vector<Surface> extractAllSurfaces(const Volume& volume, double iso, TableK
                                         int threads = 1);
 
 // Grows one surface a budget at a time, breadth-first from the seed, so that a
-// viewer can append each step's vertices and indices to GPU buffers.
+// viewer can append each step's vertices and indices to GPU buffers. The walk
+// is on the caller's thread; `threads` share what is done over the whole volume
+// or the whole surface at once: the snap table's sample states when a walk
+// starts, and the closing check of takeSurface (trilinear and snap tables).
+// The surface is the same on any number.
 class SurfaceTracker {
 public:
-    SurfaceTracker(const Volume& volume, double iso, TableKind table = TableKind::Consistent);
+    SurfaceTracker(const Volume& volume, double iso, TableKind table = TableKind::Consistent, int threads = 1);
     ~SurfaceTracker();
     SurfaceTracker(SurfaceTracker&&) noexcept;
     SurfaceTracker& operator=(SurfaceTracker&&) noexcept;

@@ -269,34 +269,9 @@ struct SurfaceMeasure {
 };
 
 // Every directed side appears once and so does its reverse: no holes, no
-// non-manifold edges, consistent winding. The sides are grouped by their first
-// vertex (a counting sort) and each is looked for among its reverse's group, a
-// handful of neighbours, rather than hashed: a large mesh's sides would fill a
-// table far bigger than the caches.
-inline bool meshIsClosed(const Mesh& mesh) {
-    if (mesh.indices.empty()) return false;
-    const std::uint32_t* indices = mesh.indices.data();
-    const std::size_t sideCount = mesh.indices.size(), vertexCount = mesh.vertices.size();
-    auto nextOf = [](std::size_t i) { return i % 3 == 2 ? i - 2 : i + 1; };
-    std::vector<std::size_t> first(vertexCount + 1, 0);  // vertex v's sides: to[first[v] .. first[v + 1])
-    for (std::size_t i = 0; i < sideCount; ++i) ++first[std::size_t(indices[i]) + 1];
-    for (std::size_t v = 0; v < vertexCount; ++v) first[v + 1] += first[v];
-    std::vector<std::size_t> end(first.begin(), first.end() - 1);
-    std::vector<std::uint32_t> to(sideCount);
-    for (std::size_t i = 0; i < sideCount; ++i) to[end[indices[i]]++] = indices[nextOf(i)];
-    for (std::size_t v = 0; v < vertexCount; ++v) {
-        for (std::size_t a = first[v]; a < first[v + 1]; ++a) {
-            const std::uint32_t w = to[a];
-            if (std::find(to.begin() + std::ptrdiff_t(a + 1), to.begin() + std::ptrdiff_t(first[v + 1]), w) !=
-                to.begin() + std::ptrdiff_t(first[v + 1]))
-                return false;  // the side v -> w twice
-            const auto reverse = to.begin() + std::ptrdiff_t(first[w]),
-                       reverseEnd = to.begin() + std::ptrdiff_t(first[w + 1]);
-            if (std::find(reverse, reverseEnd, std::uint32_t(v)) == reverseEnd) return false;  // no side w -> v
-        }
-    }
-    return true;
-}
+// non-manifold edges, consistent winding (surface_measure.cpp). On `threads`
+// threads each takes the sides from a range of vertices; the answer is the same.
+bool meshIsClosed(const Mesh& mesh, int threads = 1);
 
 // The figures of a surface from its measure, but for cells visited, time, and
 // whether it is closed (known once it is finished: settleClosed).
@@ -320,16 +295,26 @@ inline SurfaceStats measuredStats(const Mesh& mesh, const SurfaceMeasure& measur
 // `closedUnlessOnBorder` (the consistent table leaves no holes) a surface is
 // closed exactly when the border does not cut it; otherwise every edge is checked.
 inline void settleClosed(SurfaceStats& stats, const Mesh& mesh, const SurfaceMeasure& measure,
-                         bool closedUnlessOnBorder) {
-    stats.closed = closedUnlessOnBorder ? !stats.touchesBorder && !mesh.indices.empty() : meshIsClosed(mesh);
+                         bool closedUnlessOnBorder, int threads = 1) {
+    stats.closed = closedUnlessOnBorder ? !stats.touchesBorder && !mesh.indices.empty() : meshIsClosed(mesh, threads);
     if (stats.closed) stats.enclosedVolume = std::abs(measure.triangles.signedVolume());
 }
 
 // measuredStats and settleClosed of a finished surface.
-inline SurfaceStats surfaceStats(const Mesh& mesh, const SurfaceMeasure& measure, bool closedUnlessOnBorder) {
+inline SurfaceStats surfaceStats(const Mesh& mesh, const SurfaceMeasure& measure, bool closedUnlessOnBorder,
+                                 int threads = 1) {
     SurfaceStats stats = measuredStats(mesh, measure);
-    settleClosed(stats, mesh, measure, closedUnlessOnBorder);
+    settleClosed(stats, mesh, measure, closedUnlessOnBorder, threads);
     return stats;
 }
+
+// measureSurface (isotrack/surface.h), its closing check on `threads` threads.
+SurfaceStats measureSurfaceOn(const Mesh& mesh, const Volume& volume, bool closedUnlessOnBorder, int threads);
+// measureSurfaceOn's figures (no closedUnlessOnBorder) with the vertices and
+// triangles cut into one run per thread, measured at once (TriangleLanes) and
+// added up in run order: the bounds and closedness are measureSurface's, the
+// area's and volume's last bits depend on the number of threads. For a walk on
+// several threads, whose triangle order varies anyway.
+SurfaceStats measureSurfaceInRuns(const Mesh& mesh, const Volume& volume, int threads);
 
 }  // namespace isotrack::detail

@@ -456,11 +456,11 @@ std::unique_ptr<TrilinearWalk> startSnap(const Volume& volume, double iso, const
     });
 }
 
-Surface finishedSnap(TrilinearWalk& walk, const Volume& volume) {
+Surface finishedSnap(TrilinearWalk& walk, const Volume& volume, int threads) {
     Surface surface;
     surface.mesh = std::move(walk.mesh());
     removeReversedPairs(surface.mesh);
-    surface.stats = measureSurface(surface.mesh, volume);
+    surface.stats = measureSurfaceOn(surface.mesh, volume, false, threads);
     surface.stats.cellsVisited = walk.piecesVisited();
     return surface;
 }
@@ -469,7 +469,7 @@ Surface trackSnap(const Volume& volume, double iso, const GridEdge& seed, int th
     const auto start = std::chrono::steady_clock::now();
     const auto walk = startSnap(volume, iso, seed, threads);
     walk->advance(std::numeric_limits<std::size_t>::max());
-    Surface surface = finishedSnap(*walk, volume);
+    Surface surface = finishedSnap(*walk, volume, threads);
     surface.stats.seconds = secondsSince(start);
     return surface;
 }

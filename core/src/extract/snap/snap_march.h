@@ -40,10 +40,12 @@ Mesh marchSnap(const Volume& volume, double iso, int threads);
 // states (snapStates); the walk itself is on the caller's thread.
 std::unique_ptr<TrilinearWalk> startSnap(const Volume& volume, double iso, const GridEdge& seed, int threads = 1);
 
-// The walk's surface (its mesh taken), its reversed pairs removed, measured.
-Surface finishedSnap(TrilinearWalk& walk, const Volume& volume);
+// The walk's surface (its mesh taken), its reversed pairs removed, measured
+// (the closing check on `threads` threads).
+Surface finishedSnap(TrilinearWalk& walk, const Volume& volume, int threads = 1);
 
-// The states on `threads` threads, the walk on one: the same surface on any number.
+// The states and the closing check on `threads` threads, the walk on one: the
+// same surface on any number.
 Surface trackSnap(const Volume& volume, double iso, const GridEdge& seed, int threads);
 
 // Every surface by continuation from each (cell, piece) no walk has visited,

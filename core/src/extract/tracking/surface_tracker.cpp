@@ -3,6 +3,7 @@
 // trilinear_track.cpp's, a budget of (cell, piece) pairs at a time, and the
 // figures of the surface so far are measured as the steps add to it. With the
 // snap table the walk is snap_march.cpp's, behind the same interface.
+#include <algorithm>
 #include <limits>
 #include <memory>
 
@@ -33,6 +34,7 @@ struct SurfaceTracker::Impl {
     const Volume* volume;
     double iso;
     TableKind table;
+    int threads;                          // for the snap states and the closing check; the walk is on one
     std::unique_ptr<TrackWorker> worker;  // null with the trilinear and snap tables
     TrackState state;
     std::unique_ptr<detail::TrilinearWalk> trilinear;  // once started, with the trilinear or snap table
@@ -54,9 +56,9 @@ void SurfaceTracker::Impl::measureNew() {
     }
 }
 
-SurfaceTracker::SurfaceTracker(const Volume& volume, double iso, TableKind table)
+SurfaceTracker::SurfaceTracker(const Volume& volume, double iso, TableKind table, int threads)
     : impl_(std::make_unique<Impl>(
-          Impl{&volume, iso, table, usesOwnWalk(table) ? nullptr : makeWorker(volume, iso, table),
+          Impl{&volume, iso, table, std::max(threads, 1), usesOwnWalk(table) ? nullptr : makeWorker(volume, iso, table),
                TrackState(volume.dims(), WalkOrder::BreadthFirst), nullptr, detail::SurfaceMeasure{}, 0, 0})) {}
 SurfaceTracker::~SurfaceTracker() = default;
 SurfaceTracker::SurfaceTracker(SurfaceTracker&&) noexcept = default;
@@ -64,8 +66,9 @@ SurfaceTracker& SurfaceTracker::operator=(SurfaceTracker&&) noexcept = default;
 
 void SurfaceTracker::start(const GridEdge& seed) {
     if (usesOwnWalk(impl_->table)) {
-        impl_->trilinear = impl_->table == TableKind::Snap ? detail::startSnap(*impl_->volume, impl_->iso, seed)
-                                                           : detail::startTrilinear(*impl_->volume, impl_->iso, seed);
+        impl_->trilinear = impl_->table == TableKind::Snap
+                               ? detail::startSnap(*impl_->volume, impl_->iso, seed, impl_->threads)
+                               : detail::startTrilinear(*impl_->volume, impl_->iso, seed);
         impl_->measure = detail::SurfaceMeasure{};
         impl_->measuredVertices = impl_->measuredIndices = 0;
         return;
@@ -125,8 +128,8 @@ SurfaceStats SurfaceTracker::stats() const {
 }
 Surface SurfaceTracker::takeSurface() {
     if (impl_->trilinear && impl_->table == TableKind::Snap)
-        return detail::finishedSnap(*impl_->trilinear, *impl_->volume);
-    if (impl_->trilinear) return detail::finishedTrilinear(*impl_->trilinear, *impl_->volume);
+        return detail::finishedSnap(*impl_->trilinear, *impl_->volume, impl_->threads);
+    if (impl_->trilinear) return detail::finishedTrilinear(*impl_->trilinear, *impl_->volume, impl_->threads);
     return finishedSurface(impl_->state.walker, impl_->table);
 }
 

@@ -41,8 +41,9 @@ public:
 // The walk from `seed`, nothing walked yet; InputError when the seed is outside or not crossed.
 std::unique_ptr<TrilinearWalk> startTrilinear(const Volume& volume, double iso, const GridEdge& seed);
 
-// The walk's surface (its mesh taken) with measureSurface's figures and its pieces visited.
-Surface finishedTrilinear(TrilinearWalk& walk, const Volume& volume);
+// The walk's surface (its mesh taken) with measureSurface's figures and its
+// pieces visited (the closing check on `threads` threads).
+Surface finishedTrilinear(TrilinearWalk& walk, const Volume& volume, int threads = 1);
 
 // The surface through `seed` by piecewise continuation over the trilinear
 // subcases, on up to `threads` threads (no more than the consistent table's

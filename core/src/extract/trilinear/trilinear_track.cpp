@@ -17,7 +17,8 @@
 // (track_together.cpp): each thread walks the cells of its own tiles, sends a
 // cell in another thread's tile to that thread's mailbox (Exchange), and claims
 // the vertices on edges between tiles with a compare-and-swap
-// (trilinear_together.cpp joins the threads' parts).
+// (trilinear_together.cpp joins the threads' parts), and the finished surface
+// is measured on them too (measureSurfaceInRuns, meshIsClosed).
 //
 // Every surface is the exhaustive pass's mesh split into its connected parts
 // (a union-find over the vertices of each triangle), largest first.
@@ -34,6 +35,7 @@
 
 #include "extract/common/edge_vertex.h"
 #include "extract/common/sparse_blocks.h"
+#include "extract/measure/surface_measure.h"
 #include "extract/trilinear/trilinear_march.h"
 #include "extract/trilinear/trilinear_walker.h"
 #include "isotrack/cube.h"
@@ -406,10 +408,10 @@ std::unique_ptr<TrilinearWalk> startTrilinear(const Volume& volume, double iso, 
     return std::make_unique<OneThreadWalk>(volume, iso, seed);
 }
 
-Surface finishedTrilinear(TrilinearWalk& walk, const Volume& volume) {
+Surface finishedTrilinear(TrilinearWalk& walk, const Volume& volume, int threads) {
     Surface surface;
     surface.mesh = std::move(walk.mesh());
-    surface.stats = measureSurface(surface.mesh, volume);
+    surface.stats = measureSurfaceOn(surface.mesh, volume, false, threads);
     surface.stats.cellsVisited = walk.piecesVisited();
     return surface;
 }
@@ -424,7 +426,7 @@ Surface trackTrilinear(const Volume& volume, double iso, const GridEdge& seed, i
         const auto walker = makeTrilinearWalker(volume, iso);
         std::vector<std::size_t> pieces;
         surface.mesh = walkTrilinearTogether(volume, *walker, seed, threads, pieces);
-        surface.stats = measureSurface(surface.mesh, volume);
+        surface.stats = measureSurfaceInRuns(surface.mesh, volume, threads);
         surface.stats.cellsVisited = std::accumulate(pieces.begin(), pieces.end(), std::size_t(0));
     } else {
         const auto walk = startTrilinear(volume, iso, seed);

@@ -212,3 +212,60 @@ TEST_CASE("snap: entries with every sample on one side have no triangles", "[cor
         }
     }
 }
+
+namespace {
+
+// A snap tracker's surface, grown `budget` pieces a step.
+Surface grownSnap(const Volume& v, double iso, const GridEdge& seed, int threads, std::size_t budget) {
+    SurfaceTracker tracker(v, iso, TableKind::Snap, threads);
+    tracker.start(seed);
+    while (!tracker.done()) tracker.step(budget);
+    return tracker.takeSurface();
+}
+
+bool sameBytes(const Mesh& a, const Mesh& b) {
+    return a.vertices.size() == b.vertices.size() && a.indices == b.indices &&
+           std::equal(a.vertexEdges.begin(), a.vertexEdges.end(), b.vertexEdges.begin(), b.vertexEdges.end(),
+                      [](GridEdge p, GridEdge q) { return p == q; }) &&
+           std::equal(a.vertices.begin(), a.vertices.end(), b.vertices.begin(), [](const Vertex& p, const Vertex& q) {
+               return std::equal(std::begin(p.position), std::end(p.position), std::begin(q.position)) &&
+                      std::equal(std::begin(p.normal), std::end(p.normal), std::begin(q.normal));
+           });
+}
+
+}  // namespace
+
+TEST_CASE("snap: the tracker's states on several threads grow the same mesh", "[core][snap][tracking]") {
+    std::mt19937 rng(11);
+    struct Case {
+        std::string name;
+        Volume volume;
+        double iso;
+    };
+    std::vector<Case> cases;
+    for (const char* spec : {"sphere:40", "gyroid:32"}) {
+        const FieldSpec field = parseFieldSpec(spec);
+        cases.push_back({spec, makeField(field), fieldDefaultIso(field.name)});
+    }
+    cases.push_back({"integers at the isovalue", randomIntegers({30, 28, 26}, rng, 4), 0.0});
+    for (const Case& c : cases) {
+        INFO(c.name);
+        const Surface largest = extractAllSurfaces(c.volume, c.iso, TableKind::Snap).front();
+        // A crossed edge (a sample at the isovalue has a vertex on an edge from it, not crossed).
+        const auto& edges = largest.mesh.vertexEdges;
+        const auto crossed = std::find_if(edges.begin() + std::ptrdiff_t(edges.size() / 2), edges.end(),
+                                          [&](const GridEdge& e) { return edgeIsCrossed(c.volume, c.iso, e); });
+        REQUIRE(crossed != edges.end());
+        const GridEdge seed = *crossed;
+        const Surface one = grownSnap(c.volume, c.iso, seed, 1, 97);
+        REQUIRE(one.mesh.triangleCount() == largest.mesh.triangleCount());
+        for (int threads : {2, 3, 8}) {
+            INFO(threads << " threads");
+            const Surface several = grownSnap(c.volume, c.iso, seed, threads, 97);
+            CHECK(sameBytes(several.mesh, one.mesh));
+            CHECK(several.stats.closed == one.stats.closed);
+            CHECK(several.stats.area == one.stats.area);
+            CHECK(several.stats.cellsVisited == one.stats.cellsVisited);
+        }
+    }
+}
