@@ -207,15 +207,24 @@ public:
         if (cancelled()) throw Cancelled{};
     }
     // Runs fn(b, e) over [begin, end) a stride at a time, check() before each:
-    // the loops of a pass that reports no progress of its own, stopped within a stride.
+    // the loops of a pass that reports no progress of its own, stopped within a
+    // stride; with `counted`, each stride's samples count as done.
     template <class Fn>
-    void inStrides(std::uint32_t begin, std::uint32_t end, Fn&& fn) const {
+    void inStrides(std::uint32_t begin, std::uint32_t end, Fn&& fn, bool counted = false) const {
         while (begin < end) {
             check();
             const std::uint32_t next = end - begin > kStride ? begin + kStride : end;
             fn(begin, next);
+            if (counted) count(next - begin);
             begin = next;
         }
+    }
+    // A phase whose total is known only once it has started (the sort's passes).
+    void setTotal(std::uint64_t total) const {
+        if (progress_) progress_->total.store(total, std::memory_order_relaxed);
+    }
+    void count(std::uint64_t samples) const {
+        if (progress_) progress_->done.fetch_add(samples, std::memory_order_relaxed);
     }
 
 private:

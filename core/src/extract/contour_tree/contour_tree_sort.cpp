@@ -49,7 +49,9 @@ SortedSamples radixSort(const T* values, std::uint32_t n, const BuildProgress& p
     SortedSamples out{Pages(8 * std::size_t(n)), Pages(8 * std::size_t(n)), n};
     Slice<std::uint32_t> order = out.order(), spare = sliceOf<std::uint32_t>(out.sorted, 4 * std::size_t(n), n);
     std::vector<std::uint32_t> count(kBuckets);
+    progress.setTotal(std::uint64_t(n) * (kKeyBits / kDigitBits));  // a pass a digit, one sample each
     for (int shift = 0; shift < kKeyBits; shift += kDigitBits) {
+        if (shift > 0) progress.count(n);
         const bool first = shift == 0;
         const std::uint32_t* in = first ? nullptr : order.begin();
         std::uint32_t* to = first ? order.begin() : spare.begin();
@@ -69,6 +71,7 @@ SortedSamples radixSort(const T* values, std::uint32_t n, const BuildProgress& p
         }
         if (!first) std::swap(order, spare);
     }
+    progress.count(n);
     if (order.begin() != out.order().begin()) std::copy(order.begin(), order.end(), out.order().begin());
     return out;
 }
@@ -110,13 +113,14 @@ private:
 };
 
 // Runs part(p, begin, end) for the parts, on a thread each (kept threads,
-// parallel.h), a stride of samples at a time: a cancel stops them between strides,
-// and Cancelled, as any part's exception, reaches the calling thread.
+// parallel.h), a stride of samples at a time, each counted as done: a cancel
+// stops them between strides, and Cancelled, as any part's exception, reaches
+// the calling thread.
 template <class Part>
 void inParts(const Parts& parts, const BuildProgress& progress, Part&& part) {
     parallelFor(parts.count(), parts.count(), [&](int p) {
-        progress.inStrides(parts.begin(p), parts.end(p),
-                           [&](std::uint32_t begin, std::uint32_t end) { part(p, begin, end); });
+        progress.inStrides(
+            parts.begin(p), parts.end(p), [&](std::uint32_t begin, std::uint32_t end) { part(p, begin, end); }, true);
     });
 }
 
@@ -136,6 +140,7 @@ SortedSamples radixSortPairs(const T* values, std::uint32_t n, int threads, cons
     // parts of the index order, which is the input of the first pass to move).
     std::vector<std::uint32_t> count(kPasses * np * kBuckets);
     auto counts = [&](int pass, std::size_t part) { return &count[(std::size_t(pass) * np + part) * kBuckets]; };
+    progress.setTotal(std::uint64_t(n) * (1 + kPasses));  // the counting read and at most kPasses moves
     inParts(parts, progress, [&](int p, std::uint32_t begin, std::uint32_t end) {
         std::uint32_t* c[kPasses];
         for (int pass = 0; pass < kPasses; ++pass) c[pass] = counts(pass, std::size_t(p));
@@ -154,6 +159,7 @@ SortedSamples radixSortPairs(const T* values, std::uint32_t n, int threads, cons
         }
         if (!one) moving.push_back(pass);
     }
+    progress.setTotal(std::uint64_t(n) * (1 + moving.size()));
     const Slice<std::uint32_t> order = out.order();
     if (moving.empty()) {
         std::iota(order.begin(), order.end(), 0u);

@@ -76,3 +76,24 @@ TEST_CASE("contour tree passes rethrow a part's Cancelled on the calling thread"
         }
     }
 }
+
+TEST_CASE("the sort counts its passes as the Sorting phase's progress", "[core][contour-tree][threads]") {
+    // gyroid:64 as float32 (the pairs' sort: 3 passes of 11 bits, the counting
+    // read and the moves) and as float64 (one-thread sort, 4 passes of 16 bits).
+    const Volume floats = makeField({"gyroid", 64});
+    const Volume doubles = asDoubles(floats);
+    for (const Volume* input : {&floats, &doubles}) {
+        for (const int threads : {1, 2, 4}) {
+            INFO((input == &doubles ? "float64, " : "float32, ") << threads << " threads");
+            ContourTreeProgress progress;
+            const detail::BuildProgress build(&progress);
+            build.start(ContourTreeProgress::Phase::Sorting, 0);
+            detail::sortSamples(*input, threads, build);
+            const std::uint64_t n = input->sampleCount();
+            CHECK(progress.total.load() >= 2 * n);  // a read and at least one move
+            CHECK(progress.total.load() % n == 0);
+            CHECK(progress.done.load() == progress.total.load());
+            CHECK(progress.fraction() == Approx(0.15));  // the end of the sort's share
+        }
+    }
+}
