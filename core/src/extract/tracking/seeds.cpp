@@ -1,5 +1,5 @@
 // Seeds for tracking: whether a grid edge is crossed, the crossed edge nearest a
-// world point (searched in growing shells around the point's voxel), and the
+// world point (searched in growing cubes around the point's voxel), and the
 // grid edge behind a picked vertex or triangle.
 #include <algorithm>
 #include <cmath>
@@ -21,6 +21,14 @@ bool edgeIsCrossed(const Volume& volume, double iso, const GridEdge& edge) {
     return makeWorker(volume, iso, TableKind::Consistent)->crossed(edge);
 }
 
+// The search scans cubes of samples around the point's voxel, row by row (in
+// the order of memory, so a far surface in a mapped volume costs one read of
+// each page per cube, not one per shell), doubling the cube's half-width until
+// the nearest edge found lies within it. An edge whose sample is r samples
+// from the centre (Chebyshev) lies at least (r - 1) x the smallest spacing from
+// the point, so once the best distance is at most half-width x that spacing no
+// edge outside the cube is nearer. Ties go to the edge of the smaller r, then
+// the lower z, y, x and axis: the order in which growing shells would meet them.
 GridEdge nearestCrossedEdge(const Volume& volume, double iso, const Vec3d& worldPoint) {
     const Dims& n = volume.dims();
     const Vec3d& s = volume.spacing();
@@ -34,40 +42,50 @@ GridEdge nearestCrossedEdge(const Volume& volume, double iso, const Vec3d& world
         centre[k] = static_cast<int>(std::lround(clamped));
     }
     const double minSpacing = std::min({s[0], s[1], s[2]});
-    double best = std::numeric_limits<double>::infinity();
-    GridEdge bestEdge;
+    struct Found {
+        double distance = std::numeric_limits<double>::infinity();
+        int ring = 0;
+        GridEdge edge;
+        bool before(const Found& other) const {  // nearer, or as near and met first
+            if (distance != other.distance) return distance < other.distance;
+            if (ring != other.ring) return ring < other.ring;
+            const int a[4] = {edge.z, edge.y, edge.x, edge.axis};
+            const int b[4] = {other.edge.z, other.edge.y, other.edge.x, other.edge.axis};
+            return std::lexicographical_compare(a, a + 4, b, b + 4);
+        }
+    };
+    Found best;
     const int maxRadius = std::max({n[0], n[1], n[2]});
-    for (int r = 0; r <= maxRadius; ++r) {
-        if (std::isfinite(best) && (r - 1) * minSpacing > best) break;
-        const int lo[3] = {centre[0] - r, centre[1] - r, centre[2] - r};
-        const int hi[3] = {centre[0] + r, centre[1] + r, centre[2] + r};
-        for (int z = std::max(lo[2], 0); z <= std::min(hi[2], n[2] - 1); ++z) {
-            for (int y = std::max(lo[1], 0); y <= std::min(hi[1], n[1] - 1); ++y) {
-                const bool shellYZ = z == lo[2] || z == hi[2] || y == lo[1] || y == hi[1];
-                for (int x = std::max(lo[0], 0); x <= std::min(hi[0], n[0] - 1);
-                     x += (shellYZ || x == hi[0]) ? 1 : std::max(1, hi[0] - x)) {
+    for (int half = 1;; half = half > maxRadius / 2 ? maxRadius : 2 * half) {
+        int lo[3], hi[3];
+        for (int k = 0; k < 3; ++k) lo[k] = std::max(centre[k] - half, 0), hi[k] = std::min(centre[k] + half, n[k] - 1);
+        for (int z = lo[2]; z <= hi[2]; ++z) {
+            for (int y = lo[1]; y <= hi[1]; ++y) {
+                for (int x = lo[0]; x <= hi[0]; ++x) {
                     for (int axis = 0; axis < 3; ++axis) {
                         const GridEdge e{x, y, z, axis};
                         if (!edgeInside(volume, e) || !worker->crossed(e)) continue;
-                        double d2 = 0.0;
+                        Found here;
+                        here.edge = e;
                         const int q[3] = {x, y, z};
+                        double d2 = 0.0;
                         for (int k = 0; k < 3; ++k) {
                             const double mid = q[k] + (k == axis ? 0.5 : 0.0);
                             d2 += (mid - p[k]) * (mid - p[k]) * s[k] * s[k];
+                            here.ring = std::max(here.ring, std::abs(q[k] - centre[k]));
                         }
-                        if (std::sqrt(d2) < best) {
-                            best = std::sqrt(d2);
-                            bestEdge = e;
-                        }
+                        here.distance = std::sqrt(d2);
+                        if (here.before(best)) best = here;
                     }
                 }
             }
         }
+        if (best.distance <= half * minSpacing || half >= maxRadius) break;
     }
-    if (!std::isfinite(best)) {
+    if (!std::isfinite(best.distance)) {
         throw InputError("no surface at iso " + isoText(iso) + ": no grid edge crosses it");
     }
-    return bestEdge;
+    return best.edge;
 }
 
 GridEdge edgeOfVertex(const Mesh& mesh, std::uint32_t vertex) {
