@@ -260,7 +260,7 @@ void ExtractionController::askConfirmation(const ExtractionResult& result) {
 }
 
 bool ExtractionController::askBeforeTracking(const LoadedVolume& volume, const PendingTrack& track) {
-    if (table_ != TableKind::Snap || !volume.overBudget || confirmed_.count(Method::Track)) return false;
+    if (!readsWholeVolume(Method::Track, table_) || !volume.overBudget || confirmed_.count(Method::Track)) return false;
     pendingTrack_ = track;
     confirmation_ = Confirmation{Method::Track, volume.mappedBytes};
     return true;

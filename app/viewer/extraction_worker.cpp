@@ -204,10 +204,7 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
         result.extractMs = msSince(start);
         return;
     }
-    // Every method but track reads the whole volume, and so does the snap
-    // table (its sample states are decided over the whole volume).
-    const bool readsAll = request.method != Method::Track || request.table == TableKind::Snap;
-    if (readsAll && loaded.overBudget && !request.confirmed) {
+    if (readsWholeVolume(request.method, request.table) && loaded.overBudget && !request.confirmed) {
         result.confirmBytes = loaded.mappedBytes;  // the viewer asks first; seeds wait too
         return;
     }

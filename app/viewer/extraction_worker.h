@@ -105,6 +105,14 @@ struct WorkerProgress {
 // of the series still shows while the next one is made).
 bool supersedes(const ExtractionRequest& newer, const ExtractionRequest& older);
 
+// Whether the method with the table reads every sample of the volume: every
+// method but track, and track with the snap table (its sample states cover the
+// whole volume). On a volume over the memory budget such work waits for the
+// user's word.
+inline bool readsWholeVolume(Method method, TableKind table) {
+    return method != Method::Track || table == TableKind::Snap;
+}
+
 class ExtractionWorker {
 public:
     // A contour tree is laid out for a plot of its `plotBranches` most persistent branches.
