@@ -158,6 +158,8 @@ ExtractionResult ExtractionWorker::work(const ExtractionRequest& request) {
         result.error = "out of memory";
     } catch (const Cancelled&) {
         throw;
+    } catch (const WorkingMemoryError& e) {  // core names no file: name the one open
+        result.error = displayName(request.source) + ": " + e.what();
     } catch (const std::exception& e) {
         result.error = e.what();
     }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "isotrack/errors.h"
 #include "viewer/extraction_worker.h"
 
 namespace isotrack::viewer {
@@ -105,8 +106,13 @@ SurfaceStructure::~SurfaceStructure() = default;
 
 void SurfaceStructure::restartGrowth() {
     if (!volume_ || presence_ != Presence::Shown) return;  // not a tracked surface, or nothing to grow
-    auto tracker = std::make_unique<SurfaceTracker>(volume_->volume, iso_, table_, threads_);
-    tracker->start(seed_);  // may throw (the snap table's states may not fit): the surface stays as it was
+    std::unique_ptr<SurfaceTracker> tracker;
+    try {  // may throw (the snap table's states may not fit): the surface stays as it was
+        tracker = std::make_unique<SurfaceTracker>(volume_->volume, iso_, table_, threads_);
+        tracker->start(seed_);
+    } catch (const WorkingMemoryError& e) {  // core names no file: name the one open
+        throw WorkingMemoryError(displayName(volume_->source) + ": " + e.what());
+    }
     tracker_ = std::move(tracker);
     mesh_ = Mesh{};
     stats_ = SurfaceStats{};

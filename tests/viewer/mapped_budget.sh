@@ -7,7 +7,8 @@
 # triangles) of `isotrack extract --method all`; the summary says mapped.
 # With the snap table track asks too. Without --iso the file is refused with
 # a one-line message; under the budget
-# `all` does not ask, so a `confirm` there is a script error.
+# `all` does not ask, so a `confirm` there is a script error. Snap states that
+# do not fit the memory left are refused, naming the file.
 #   mapped_budget.sh ISOTRACK VIEWER_CHECK OUT_DIR
 set -euo pipefail
 isotrack=$1 out=$3
@@ -97,3 +98,25 @@ if "$isotrack" "${layout[@]}" --script under.isotrack --size 960x600 2> under.er
 fi
 grep -q "under.isotrack:3: confirm: no extraction waits for confirmation" under.err
 echo "refused without --iso: $(cat noiso.err)"
+
+# Confirmed, snap work that still does not fit the memory left (here an
+# address-space limit beside a 1 GiB sparse file) is refused in one line that
+# names the file, and the script stops there: a click's track (the viewer's own
+# tracker) and `all` (the extraction worker).
+balls=$("$python" "$here/../../bench/make_sparse_volume.py" big.raw 640 1)
+read -r centre radius <<< "$balls"
+IFS=, read -r cx cy cz <<< "$centre"
+printf 'wait\ntrack %s %s %s\nwait\nconfirm\nwait\nquit\n' "$((cx + radius))" "$cy" "$cz" > tight.isotrack
+printf 'wait\nmethod all\nwait\nconfirm\nwait\nquit\n' > tight_all.isotrack
+for script in tight.isotrack:5 tight_all.isotrack:4; do
+    if (ulimit -v 2000000 && exec "$isotrack" --volume big.raw --dims 640,640,640 --type float32 --iso 0.5 \
+        --table snap --memory-budget 0.01 --script "${script%:*}" --size 960x600) > /dev/null 2> tight.err; then
+        echo "mapped_budget: ${script%:*}: snap states over the memory left were accepted" >&2
+        exit 1
+    fi
+    grep -q "^isotrack: $script: big.raw: the snap table's sample states, 3 bytes a sample: 640 x 640 x 640 \
+samples need 750.0 MiB, more than the .* of memory available$" tight.err || { cat tight.err >&2; exit 1; }
+    [[ $(wc -l < tight.err) -eq 1 ]]
+    echo "refused under ulimit -v: $(cat tight.err)"
+done
+rm -f big.raw
