@@ -27,8 +27,12 @@
 // in scan order, so the states are the same on any number of threads.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <cstring>
+#include <limits>
 #include <optional>
+#include <type_traits>
 #include <vector>
 
 #include "extract/snap/snap_march.h"
@@ -250,6 +254,98 @@ void keepSheetsApart(std::vector<SampleState>& states, const std::vector<SampleS
     }
 }
 
+// Pass 1's sides: each sample's state before snapping (at when it equals
+// `iso`, else its side), slice by slice, in loops without branches.
+template <class T>
+void sampleSides(const T* samples, double iso, const Dims& n, int threads, std::vector<SampleState>& sides) {
+    const std::size_t slice = std::size_t(n[0]) * std::size_t(n[1]);
+    auto* out = reinterpret_cast<std::uint8_t*>(sides.data());
+    if constexpr (std::is_integral_v<T>) {
+        // Integers (every one a double exactly): compared as T, which vectorises
+        // where the comparison as doubles does not. At or above `iso` is at or
+        // above its ceiling; equal only where `iso` is an integer in T's range.
+        const double ceiling = std::ceil(iso);
+        if (!(ceiling <= double(std::numeric_limits<T>::max()))) return;  // every sample below (NaN too)
+        const T threshold =
+            ceiling <= double(std::numeric_limits<T>::min()) ? std::numeric_limits<T>::min() : T(ceiling);
+        const bool integer = ceiling == iso && iso >= double(std::numeric_limits<T>::min());
+        const std::uint8_t atFlag = integer ? 1 : 0;
+        const T equal = integer ? T(iso) : T(0);
+        parallelFor(n[2], threads, [&](int z) {
+            // Locals, which the byte stores cannot alias: the loop then vectorises.
+            const T* in = samples + std::size_t(z) * slice;
+            std::uint8_t* side = out + std::size_t(z) * slice;
+            const std::size_t count = slice;
+            const T above = threshold, at = equal;
+            const std::uint8_t flag = atFlag;
+            for (std::size_t i = 0; i < count; ++i)
+                side[i] = std::uint8_t(std::uint8_t(in[i] >= above) | (std::uint8_t(in[i] == at) & flag) << 1);
+        });
+    } else {
+        parallelFor(n[2], threads, [&](int z) {
+            const T* in = samples + std::size_t(z) * slice;
+            std::uint8_t* side = out + std::size_t(z) * slice;
+            const std::size_t count = slice;
+            const double level = iso;
+            for (std::size_t i = 0; i < count; ++i) {
+                const double value = static_cast<double>(in[i]);
+                side[i] = std::uint8_t(std::uint8_t(value >= level) | std::uint8_t(value == level) << 1);
+            }
+        });
+    }
+}
+
+// Pass 1 for a sample with a crossed grid edge: at when it equals `iso` or
+// snaps towards one of its six neighbours; a sample that snapped is listed in
+// its slice's `snapped`.
+template <class T>
+void snapSample(const T* samples, double iso, const Dims& n, int x, int y, int z, std::vector<SampleState>& states,
+                const std::vector<SampleState>& unsnapped, std::vector<std::vector<std::size_t>>& snapped) {
+    const std::size_t strides[3] = {1, std::size_t(n[0]), std::size_t(n[0]) * std::size_t(n[1])};
+    const std::size_t i = std::size_t(x) + strides[1] * std::size_t(y) + strides[2] * std::size_t(z);
+    const double value = static_cast<double>(samples[i]);
+    bool at = value == iso;
+    const int p[3] = {x, y, z};
+    for (int k = 0; k < 3 && !at; ++k) {
+        if (p[k] > 0) at = snapsTowards(value, static_cast<double>(samples[i - strides[k]]), iso);
+        if (!at && p[k] + 1 < n[k]) at = snapsTowards(value, static_cast<double>(samples[i + strides[k]]), iso);
+    }
+    if (!at) return;
+    states[i] = static_cast<SampleState>(std::uint8_t(unsnapped[i]) | 2u);
+    if (!isAt(unsnapped[i])) snapped[std::size_t(z)].push_back(i);
+}
+
+// Marks in `crossed` (one byte per sample of row (y, z)) the samples with a
+// grid neighbour on the other side, the only ones that can snap; returns
+// whether there is one. Rows of side bits combined, the loop vectorised.
+bool markCrossed(const std::vector<SampleState>& sides, const Dims& n, int y, int z,
+                 std::vector<std::uint8_t>& crossed) {
+    const std::size_t nx = std::size_t(n[0]), slice = nx * std::size_t(n[1]);
+    const std::size_t row = std::size_t(z) * slice + std::size_t(y) * nx;
+    const auto* side = reinterpret_cast<const std::uint8_t*>(sides.data());
+    // Neighbouring rows, the row itself where there is none (no crossing there).
+    const std::uint8_t* s = side + row;
+    const std::uint8_t* down = y > 0 ? s - nx : s;
+    const std::uint8_t* up = y + 1 < n[1] ? s + nx : s;
+    const std::uint8_t* back = z > 0 ? s - slice : s;
+    const std::uint8_t* front = z + 1 < n[2] ? s + slice : s;
+    std::uint8_t* out = crossed.data();
+    auto across = [&](std::size_t x, std::uint8_t left, std::uint8_t right) {
+        const std::uint8_t here = s[x];
+        return std::uint8_t(((left ^ here) | (right ^ here) | (down[x] ^ here) | (up[x] ^ here) | (back[x] ^ here) |
+                             (front[x] ^ here)) &
+                            1u);
+    };
+    std::uint8_t any = out[0] = across(0, s[0], s[nx > 1 ? 1 : 0]);
+    if (nx < 2) return any;
+    for (std::size_t x = 1; x + 1 < nx; ++x) {
+        out[x] = across(x, s[x - 1], s[x + 1]);
+        any = std::uint8_t(any | out[x]);
+    }
+    out[nx - 1] = across(nx - 1, s[nx - 2], s[nx - 1]);
+    return (any | out[nx - 1]) != 0;
+}
+
 }  // namespace
 
 std::vector<SampleState> snapStates(const Volume& volume, double iso, int threads) {
@@ -261,44 +357,28 @@ std::vector<SampleState> snapStates(const Volume& volume, double iso, int thread
         std::vector<SampleState> states(volume.sampleCount(), SampleState::Below);
         std::vector<SampleState> unsnapped(volume.sampleCount(), SampleState::Below);
         std::vector<std::vector<std::size_t>> snapped(static_cast<std::size_t>(n[2]));  // by pass 1, per slice
-        // Sides first; then only a sample with a neighbour on the other side
-        // (a crossed edge) can snap, and only those read their neighbours' values.
-        parallelFor(n[2], threads, [&](int z) {
-            for (std::size_t i = std::size_t(z) * strides[2], end = i + strides[2]; i < end; ++i) {
-                const double value = static_cast<double>(samples[i]);
-                unsnapped[i] = value == iso ? SampleState::At : value >= iso ? SampleState::Above : SampleState::Below;
-            }
-        });
-        parallelFor(n[2], threads, [&](int z) {
-            const auto* side = reinterpret_cast<const std::uint8_t*>(unsnapped.data());
-            for (int y = 0; y < n[1]; ++y) {
-                const std::size_t row = std::size_t(z) * strides[2] + std::size_t(y) * strides[1];
-                // Neighbouring rows, the row itself where there is none (no crossing there).
-                const std::size_t across[4] = {y > 0 ? row - strides[1] : row, y + 1 < n[1] ? row + strides[1] : row,
-                                               z > 0 ? row - strides[2] : row, z + 1 < n[2] ? row + strides[2] : row};
-                for (int x = 0; x < n[0]; ++x) {
-                    const std::size_t i = row + std::size_t(x);
-                    const unsigned above = side[i] & 1u;
-                    unsigned crossed = (side[x > 0 ? i - 1 : i] & 1u) ^ above;
-                    crossed |= (side[x + 1 < n[0] ? i + 1 : i] & 1u) ^ above;
-                    for (const std::size_t r : across) crossed |= (side[r + std::size_t(x)] & 1u) ^ above;
-                    if (!crossed) {
-                        states[i] = unsnapped[i];
-                        continue;
+        sampleSides(samples, iso, n, threads, unsnapped);
+        // Each row's crossed samples, whole words of none skipped (the marks
+        // padded with zeros to a multiple of eight).
+        const std::size_t words = (std::size_t(n[0]) + 7) / 8;
+        parallelForWithState(
+            n[2], threads, [&] { return std::vector<std::uint8_t>(words * 8, 0); },
+            [&](std::vector<std::uint8_t>& crossed, int z) {
+                for (int y = 0; y < n[1]; ++y) {
+                    const std::size_t row = std::size_t(z) * strides[2] + std::size_t(y) * strides[1];
+                    std::copy_n(unsnapped.begin() + std::ptrdiff_t(row), n[0], states.begin() + std::ptrdiff_t(row));
+                    if (!markCrossed(unsnapped, n, y, z, crossed)) continue;
+                    for (std::size_t word = 0; word < words; ++word) {
+                        std::uint64_t marks;
+                        std::memcpy(&marks, crossed.data() + 8 * word, sizeof marks);
+                        if (!marks) continue;
+                        for (int x = int(8 * word), end = std::min(x + 8, n[0]); x < end; ++x) {
+                            if (crossed[std::size_t(x)])
+                                snapSample(samples, iso, n, x, y, z, states, unsnapped, snapped);
+                        }
                     }
-                    const double value = static_cast<double>(samples[i]);
-                    bool at = value == iso;
-                    const int p[3] = {x, y, z};
-                    for (int k = 0; k < 3 && !at; ++k) {
-                        if (p[k] > 0) at = snapsTowards(value, static_cast<double>(samples[i - strides[k]]), iso);
-                        if (!at && p[k] + 1 < n[k])
-                            at = snapsTowards(value, static_cast<double>(samples[i + strides[k]]), iso);
-                    }
-                    states[i] = at ? static_cast<SampleState>(std::uint8_t(unsnapped[i]) | 2u) : unsnapped[i];
-                    if (at && !isAt(unsnapped[i])) snapped[std::size_t(z)].push_back(i);
                 }
-            }
-        });
+            });
         keepSheetsApart(states, unsnapped, n, threads, keepSurfaces(states, unsnapped, n, threads, snapped));
         return states;
     });
