@@ -150,6 +150,27 @@ private:
     std::array<std::uint32_t, 4> centres_{};
 };
 
+// The cube faces (a bit per face) each table corner lies on: an edge's
+// crossing on the two faces that hold the edge, a sample on its three, a
+// centre on none. Computed once.
+const std::array<std::uint8_t, kSnapCornerCentre + kMaxSnapCentres>& cornerFaces() {
+    static const auto faces = [] {
+        std::array<std::uint8_t, kSnapCornerCentre + kMaxSnapCentres> out{};
+        for (int corner = 0; corner < kSnapCornerCentre; ++corner) {
+            const bool edge = corner < kSnapCornerVertex;
+            const auto& o =
+                edge ? cube::edgeOrigin(corner) : cube::kVertexOffset[std::size_t(corner - kSnapCornerVertex)];
+            for (int f = 0; f < cube::kFaceCount; ++f) {
+                const int axis = cube::faceAxis(f);
+                if ((!edge || cube::edgeAxis(corner) != axis) && o[std::size_t(axis)] == cube::faceSide(f))
+                    out[std::size_t(corner)] = std::uint8_t(out[std::size_t(corner)] | 1u << f);
+            }
+        }
+        return out;
+    }();
+    return faces;
+}
+
 template <class T>
 class SnapCells {
 public:
@@ -185,13 +206,20 @@ public:
         return std::uint8_t(above);
     }
 
-    // Appends the triangles of `piece` (all pieces when negative) of cell (x, y, z).
+    // Appends the triangles of `piece` (all pieces when negative) of cell (x,
+    // y, z); lists in `onFaces` those with their three corners on one face of
+    // the cell, the only ones a neighbouring cell can draw too (a fin's).
     template <class Slots>
-    void emit(int index, int piece, int x, int y, int z, Mesh& mesh, Slots& slots) const {
+    void emit(int index, int piece, int x, int y, int z, Mesh& mesh, Slots& slots,
+              std::vector<std::uint32_t>& onFaces) const {
         const SnapCase& cased = snapTable()[std::size_t(index)];
+        const auto& faces = cornerFaces();
         for (int t = 0; t < cased.count; ++t) {
             if (piece >= 0 && cased.piece[std::size_t(t)] != piece) continue;
-            for (const std::int8_t corner : cased.triangles[std::size_t(t)]) {
+            const auto& triangle = cased.triangles[std::size_t(t)];
+            if (faces[std::size_t(triangle[0])] & faces[std::size_t(triangle[1])] & faces[std::size_t(triangle[2])])
+                onFaces.push_back(std::uint32_t(mesh.indices.size() / 3));
+            for (const std::int8_t corner : triangle) {
                 mesh.indices.push_back(corner >= kSnapCornerCentre
                                            ? centre(cased, corner - kSnapCornerCentre, x, y, z, mesh, slots)
                                            : vertex(corner, x, y, z, mesh, slots));
@@ -269,11 +297,10 @@ private:
     std::vector<SampleState> states_;
 };
 
-// Pairs of triangles over the same three vertices go, then the vertices they alone used.
-void removeReversedPairs(Mesh& mesh) {
-    std::vector<std::uint32_t> indices(mesh.indices.begin(), mesh.indices.end());
-    removeFins(indices);
-    mesh.indices.assign(indices.begin(), indices.end());
+// Pairs of triangles over the same three vertices go (removeFinsAmong, over
+// the triangles the cells drew on their faces), then the vertices they alone used.
+void removeReversedPairs(Mesh& mesh, const std::vector<std::uint32_t>& onFaces) {
+    mesh.indices.resize(removeFinsAmong(mesh.indices.data(), mesh.indices.size(), onFaces));
     dropUnusedVertices(mesh);
 }
 
@@ -289,8 +316,18 @@ const std::array<std::array<std::int8_t, cube::kFaceCount>, cube::kEdgeCount>& e
     return table;
 }
 
+// What finishedSnap needs of a walk beyond TrilinearWalk: the triangles its
+// cells drew on their faces (SnapCells::emit), taken with its mesh.
+class SnapWalkBase : public TrilinearWalk {
+public:
+    std::vector<std::uint32_t> takeTrianglesOnFaces() { return std::move(onFaces_); }
+
+protected:
+    std::vector<std::uint32_t> onFaces_;
+};
+
 template <class T>
-class SnapWalk final : public TrilinearWalk {
+class SnapWalk final : public SnapWalkBase {
 public:
     // `visited` (one bit per piece, per cell's first sample) may be shared by walks.
     SnapWalk(std::shared_ptr<const SnapCells<T>> cells, std::vector<std::uint8_t>* visited)
@@ -315,7 +352,7 @@ public:
         for (; emitted < pieceBudget && head_ < queue_.size(); ++emitted) {
             const auto [x, y, z, piece] = queue_[head_++];
             const int index = cells_->config(x, y, z);
-            cells_->emit(index, piece, x, y, z, mesh_, slots_);
+            cells_->emit(index, piece, x, y, z, mesh_, slots_, onFaces_);
             const Piece& exits = continuation[index & 0xff].pieces[std::size_t(piece)];
             for (int f = 0; f < cube::kFaceCount; ++f) {
                 if (exits.exits[std::size_t(f)][0] < 0) continue;
@@ -420,6 +457,41 @@ std::vector<Surface> allSnapTyped(const Volume& volume, const T* samples, double
 
 }  // namespace
 
+std::size_t removeFinsAmong(std::uint32_t* indices, std::size_t indexCount,
+                            const std::vector<std::uint32_t>& suspects) {
+    // Keys of the suspects: their sorted vertices and their place, sorted.
+    std::vector<std::pair<std::array<std::uint32_t, 3>, std::uint32_t>> sets(suspects.size());
+    for (std::size_t s = 0; s < suspects.size(); ++s) {
+        const std::uint32_t* t = indices + 3 * std::size_t(suspects[s]);
+        std::array<std::uint32_t, 3> key{t[0], t[1], t[2]};
+        std::sort(key.begin(), key.end());
+        sets[s] = {key, suspects[s]};
+    }
+    std::sort(sets.begin(), sets.end());
+    // removeFins' rule: equal keys go in pairs, the first two, then the next two.
+    std::vector<std::uint32_t> dropped;
+    for (std::size_t i = 0; i + 1 < sets.size();) {
+        if (sets[i].first == sets[i + 1].first) {
+            dropped.push_back(sets[i].second);
+            dropped.push_back(sets[i + 1].second);
+            i += 2;
+        } else {
+            ++i;
+        }
+    }
+    if (dropped.empty()) return indexCount;
+    std::sort(dropped.begin(), dropped.end());
+    std::size_t kept = 3 * std::size_t(dropped.front()), next = 0;
+    for (std::size_t t = dropped.front(); t < indexCount / 3; ++t) {
+        if (next < dropped.size() && dropped[next] == t) {
+            ++next;
+            continue;
+        }
+        for (int k = 0; k < 3; ++k) indices[kept++] = indices[3 * t + std::size_t(k)];
+    }
+    return kept;
+}
+
 Mesh marchSnap(const Volume& volume, double iso, int threads) {
     return visitSamples(volume, [&](const auto* samples) {
         using T = std::remove_cv_t<std::remove_pointer_t<decltype(samples)>>;
@@ -428,6 +500,7 @@ Mesh marchSnap(const Volume& volume, double iso, int threads) {
         if (n[0] < 2 || n[1] < 2 || n[2] < 2) return mesh;
         const SnapCells<T> cells(volume, samples, iso, threads);
         SliceSlots slots(n);
+        std::vector<std::uint32_t> onFaces;
         for (int z = 0; z + 1 < n[2]; ++z) {
             slots.startSlab(z);
             for (int y = 0; y + 1 < n[1]; ++y) {
@@ -436,11 +509,11 @@ Mesh marchSnap(const Volume& volume, double iso, int threads) {
                     // the table refines the 2-state one (tested in snap_test).
                     const std::uint8_t above = cells.aboveMask(x, y, z);
                     if (above == 0 || above == 0xff) continue;
-                    cells.emit(cells.config(x, y, z), -1, x, y, z, mesh, slots);
+                    cells.emit(cells.config(x, y, z), -1, x, y, z, mesh, slots, onFaces);
                 }
             }
         }
-        removeReversedPairs(mesh);
+        removeReversedPairs(mesh, onFaces);
         return mesh;
     });
 }
@@ -459,7 +532,9 @@ std::unique_ptr<TrilinearWalk> startSnap(const Volume& volume, double iso, const
 Surface finishedSnap(TrilinearWalk& walk, const Volume& volume, int threads) {
     Surface surface;
     surface.mesh = std::move(walk.mesh());
-    removeReversedPairs(surface.mesh);
+    // Every walk startSnap and allSnap make is a SnapWalk.
+    auto& snapWalk = dynamic_cast<SnapWalkBase&>(walk);
+    removeReversedPairs(surface.mesh, snapWalk.takeTrianglesOnFaces());
     surface.stats = measureSurfaceOn(surface.mesh, volume, false, threads);
     surface.stats.cellsVisited = walk.piecesVisited();
     return surface;
