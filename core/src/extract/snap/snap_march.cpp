@@ -175,7 +175,12 @@ template <class T>
 class SnapCells {
 public:
     SnapCells(const Volume& volume, const T* samples, double iso, int threads)
-        : volume_(volume), grid_(volume, samples, iso), states_(snapStates(volume, iso, threads)) {}
+        : volume_(volume), grid_(volume, samples, iso), states_(snapStates(volume, iso, threads)), table_(snapTable()) {
+        for (int v = 0; v < cube::kVertexCount; ++v) {
+            const auto& o = cube::kVertexOffset[std::size_t(v)];
+            vertexOffset_[std::size_t(v)] = grid_.index(o[0], o[1], o[2]);
+        }
+    }
 
     const Volume& volume() const { return volume_; }
     SampleState state(int x, int y, int z) const { return states_[grid_.index(x, y, z)]; }
@@ -185,15 +190,16 @@ public:
 
     // The snap table's entry for cell (x, y, z) (snapCaseIndex).
     int config(int x, int y, int z) const {
+        const SampleState* first = states_.data() + grid_.index(x, y, z);
         unsigned above = 0, at = 0;
         for (int v = 0; v < cube::kVertexCount; ++v) {
-            const auto& o = cube::kVertexOffset[std::size_t(v)];
-            const SampleState s = state(x + o[0], y + o[1], z + o[2]);
+            const SampleState s = first[vertexOffset_[std::size_t(v)]];
             above |= unsigned(isAbove(s)) << v;
             at |= unsigned(isAt(s)) << v;
         }
         return snapCaseIndex(std::uint8_t(above), std::uint8_t(at));
     }
+    const SnapCase& entry(int index) const { return table_[std::size_t(index)]; }
 
     // The 2-state configuration of cell (x, y, z): its snap table entry's
     // aboveMask, without reading the table (snapCaseIndex keeps it in the low byte).
@@ -212,7 +218,7 @@ public:
     template <class Slots>
     void emit(int index, int piece, int x, int y, int z, Mesh& mesh, Slots& slots,
               std::vector<std::uint32_t>& onFaces) const {
-        const SnapCase& cased = snapTable()[std::size_t(index)];
+        const SnapCase& cased = table_[std::size_t(index)];
         const auto& faces = cornerFaces();
         for (int t = 0; t < cased.count; ++t) {
             if (piece >= 0 && cased.piece[std::size_t(t)] != piece) continue;
@@ -295,6 +301,8 @@ private:
     const Volume& volume_;
     SampleGrid<T> grid_;
     std::vector<SampleState> states_;
+    const std::vector<SnapCase>& table_;
+    std::array<std::size_t, cube::kVertexCount> vertexOffset_{};  // of each cube vertex's sample from the cell's first
 };
 
 // Pairs of triangles over the same three vertices go (removeFinsAmong, over
@@ -338,11 +346,15 @@ public:
         }
     }
 
-    void enqueue(int x, int y, int z, int piece) {
+    void enqueue(int x, int y, int z, int piece) { enqueue(x, y, z, piece, cells_->config(x, y, z)); }
+
+    // With the cell's entry index (SnapCells::config), read with the states its
+    // 2-state configuration came from.
+    void enqueue(int x, int y, int z, int piece, int config) {
         std::uint8_t& bits = (*visited_)[cells_->volume().index(x, y, z)];
         if (bits >> piece & 1u) return;
         bits = static_cast<std::uint8_t>(bits | 1u << piece);
-        queue_.push_back({x, y, z, piece});
+        queue_.push_back({x, y, z, piece, config});
     }
 
     std::size_t advance(std::size_t pieceBudget) override {
@@ -350,8 +362,13 @@ public:
         const auto& across = edgesAcrossFaces();
         std::size_t emitted = 0;
         for (; emitted < pieceBudget && head_ < queue_.size(); ++emitted) {
-            const auto [x, y, z, piece] = queue_[head_++];
-            const int index = cells_->config(x, y, z);
+            // The entries a few pieces ahead, fetched early: the table is far bigger than the caches.
+            if (head_ + kFetchAhead < queue_.size()) {
+                const char* ahead = reinterpret_cast<const char*>(&cells_->entry(queue_[head_ + kFetchAhead][4]));
+                __builtin_prefetch(ahead);
+                __builtin_prefetch(ahead + 64);
+            }
+            const auto [x, y, z, piece, index] = queue_[head_++];
             cells_->emit(index, piece, x, y, z, mesh_, slots_, onFaces_);
             const Piece& exits = continuation[index & 0xff].pieces[std::size_t(piece)];
             for (int f = 0; f < cube::kFaceCount; ++f) {
@@ -359,13 +376,14 @@ public:
                 int n[3] = {x, y, z};
                 n[cube::faceAxis(f)] += cube::faceSide(f) ? 1 : -1;
                 if (!cells_->cellInside(n[0], n[1], n[2])) continue;
-                const std::uint8_t above = cells_->aboveMask(n[0], n[1], n[2]);
+                const int config = cells_->config(n[0], n[1], n[2]);
+                const std::uint8_t above = std::uint8_t(config & 0xff);
                 for (const std::int8_t edge : exits.exits[std::size_t(f)]) {
                     if (edge < 0) break;
                     const int entry = across[std::size_t(edge)][std::size_t(f)];
                     const int next = continuation[above].pieceOfEdge[std::size_t(entry)];
                     if (next < 0) throw std::logic_error("snap walk: an exit edge is not crossed across the face");
-                    enqueue(n[0], n[1], n[2], next);
+                    enqueue(n[0], n[1], n[2], next, config);
                 }
             }
         }
@@ -389,7 +407,8 @@ private:
     std::shared_ptr<const SnapCells<T>> cells_;
     std::vector<std::uint8_t> own_;
     std::vector<std::uint8_t>* visited_;
-    std::vector<std::array<int, 4>> queue_;
+    static constexpr std::size_t kFetchAhead = 8;
+    std::vector<std::array<int, 5>> queue_;  // cell, piece, entry index
     std::size_t head_ = 0, visitedPieces_ = 0;
     Mesh mesh_;
     BlockSlots slots_;
