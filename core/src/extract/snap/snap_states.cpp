@@ -138,13 +138,23 @@ public:
     SamplesAround(const StateGrid& grid, const std::array<int, 3>& p) : grid_(grid), p_(p) {
         const Dims& n = grid.n;
         const bool interior = p[0] > 0 && p[1] > 0 && p[2] > 0 && p[0] + 1 < n[0] && p[1] + 1 < n[1] && p[2] + 1 < n[2];
-        for (int j = 0; j < 27; ++j) {
-            const int q[3] = {p[0] + j % 3 - 1, p[1] + j / 3 % 3 - 1, p[2] + j / 9 - 1};
-            const bool inside =
-                interior || (q[0] >= 0 && q[1] >= 0 && q[2] >= 0 && q[0] < n[0] && q[1] < n[1] && q[2] < n[2]);
-            state_[std::size_t(j)] = inside ? std::uint8_t(grid.states[grid.index(q[0], q[1], q[2])]) : 0;
-            atMask_ |= std::uint32_t(state_[std::size_t(j)] >> 1 & 1u) << j;
+        if (interior) {
+            // Nine rows of three.
+            const auto* first =
+                reinterpret_cast<const std::uint8_t*>(grid.states.data()) + grid.index(p[0] - 1, p[1] - 1, p[2] - 1);
+            const std::size_t rowStride = std::size_t(n[0]), sliceStride = rowStride * std::size_t(n[1]);
+            for (int row = 0; row < 9; ++row) {
+                std::memcpy(state_.data() + 3 * row,
+                            first + std::size_t(row % 3) * rowStride + std::size_t(row / 3) * sliceStride, 3);
+            }
+        } else {
+            for (int j = 0; j < 27; ++j) {
+                const int q[3] = {p[0] + j % 3 - 1, p[1] + j / 3 % 3 - 1, p[2] + j / 9 - 1};
+                const bool inside = q[0] >= 0 && q[1] >= 0 && q[2] >= 0 && q[0] < n[0] && q[1] < n[1] && q[2] < n[2];
+                state_[std::size_t(j)] = inside ? std::uint8_t(grid.states[grid.index(q[0], q[1], q[2])]) : 0;
+            }
         }
+        for (int j = 0; j < 27; ++j) atMask_ |= std::uint32_t(state_[std::size_t(j)] >> 1 & 1u) << j;
     }
 
     // Bit j: sample j is at the isovalue.
@@ -301,6 +311,16 @@ std::vector<std::size_t> keepSurfaces(std::vector<SampleState>& states, const st
     return joined(snapped);
 }
 
+// Asks the processor for the nine rows of states around sample i (SamplesAround).
+constexpr std::size_t kFetchAhead = 4;
+void fetchRows(const std::vector<SampleState>& states, std::size_t i, const std::size_t strides[3]) {
+    const auto* base = reinterpret_cast<const char*>(states.data());
+    const std::size_t below = strides[1] + strides[2] + 1;  // to sample (x - 1, y - 1, z - 1)
+    if (i < below || i + below >= states.size()) return;
+    for (int row = 0; row < 9; ++row)
+        __builtin_prefetch(base + i - below + std::size_t(row % 3) * strides[1] + std::size_t(row / 3) * strides[2]);
+}
+
 // Pass 3 (see the top of the file), from the samples still snapped after pass 2
 // (`candidates`, in sample order).
 void keepSheetsApart(std::vector<SampleState>& states, const std::vector<SampleState>& unsnapped, const Dims& n,
@@ -318,6 +338,8 @@ void keepSheetsApart(std::vector<SampleState>& states, const std::vector<SampleS
             std::vector<std::size_t>& release = released[std::size_t(run)];
             const std::size_t first = std::size_t(run) * kRun, last = std::min(first + kRun, candidates.size());
             for (std::size_t c = first; c < last; ++c) {
+                // The rows of a candidate a few ahead, fetched early: candidates lie far apart.
+                if (c + kFetchAhead < last) fetchRows(states, candidates[c + kFetchAhead], strides);
                 const std::size_t i = candidates[c];
                 if (!isAt(states[i])) continue;
                 const std::array<int, 3> p{int(i % strides[1]), int(i / strides[1] % std::size_t(n[1])),
