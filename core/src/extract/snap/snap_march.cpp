@@ -150,25 +150,33 @@ private:
     std::array<std::uint32_t, 4> centres_{};
 };
 
-// The cube faces (a bit per face) each table corner lies on: an edge's
-// crossing on the two faces that hold the edge, a sample on its three, a
-// centre on none. Computed once.
-const std::array<std::uint8_t, kSnapCornerCentre + kMaxSnapCentres>& cornerFaces() {
-    static const auto faces = [] {
-        std::array<std::uint8_t, kSnapCornerCentre + kMaxSnapCentres> out{};
+// For each table corner: the sample its vertex is keyed at (an edge's origin,
+// or the sample itself, as an offset in the cell) and its slot there (the
+// edge's axis; 3 for the sample); and the cube faces (a bit per face) it lies
+// on: an edge's crossing on the two faces that hold the edge, a sample on its
+// three, a centre on none. Computed once.
+struct CornerTable {
+    std::array<std::array<int, 4>, kSnapCornerCentre> place{};
+    std::array<std::uint8_t, kSnapCornerCentre + kMaxSnapCentres> faces{};
+};
+
+const CornerTable& corners() {
+    static const auto table = [] {
+        CornerTable out;
         for (int corner = 0; corner < kSnapCornerCentre; ++corner) {
             const bool edge = corner < kSnapCornerVertex;
             const auto& o =
                 edge ? cube::edgeOrigin(corner) : cube::kVertexOffset[std::size_t(corner - kSnapCornerVertex)];
+            out.place[std::size_t(corner)] = {o[0], o[1], o[2], edge ? cube::edgeAxis(corner) : 3};
             for (int f = 0; f < cube::kFaceCount; ++f) {
                 const int axis = cube::faceAxis(f);
                 if ((!edge || cube::edgeAxis(corner) != axis) && o[std::size_t(axis)] == cube::faceSide(f))
-                    out[std::size_t(corner)] = std::uint8_t(out[std::size_t(corner)] | 1u << f);
+                    out.faces[std::size_t(corner)] = std::uint8_t(out.faces[std::size_t(corner)] | 1u << f);
             }
         }
         return out;
     }();
-    return faces;
+    return table;
 }
 
 template <class T>
@@ -219,16 +227,24 @@ public:
     void emit(int index, int piece, int x, int y, int z, Mesh& mesh, Slots& slots,
               std::vector<std::uint32_t>& onFaces) const {
         const SnapCase& cased = table_[std::size_t(index)];
-        const auto& faces = cornerFaces();
+        const auto& faces = corners().faces;
+        // The cell's corners' vertices as its triangles first use them: each is
+        // looked up in `slots` once, however many triangles share it.
+        std::array<std::uint32_t, kSnapCornerCentre> ids;
+        ids.fill(kNoVertex);
         for (int t = 0; t < cased.count; ++t) {
             if (piece >= 0 && cased.piece[std::size_t(t)] != piece) continue;
             const auto& triangle = cased.triangles[std::size_t(t)];
             if (faces[std::size_t(triangle[0])] & faces[std::size_t(triangle[1])] & faces[std::size_t(triangle[2])])
                 onFaces.push_back(std::uint32_t(mesh.indices.size() / 3));
             for (const std::int8_t corner : triangle) {
-                mesh.indices.push_back(corner >= kSnapCornerCentre
-                                           ? centre(cased, corner - kSnapCornerCentre, x, y, z, mesh, slots)
-                                           : vertex(corner, x, y, z, mesh, slots));
+                if (corner >= kSnapCornerCentre) {
+                    mesh.indices.push_back(centre(cased, corner - kSnapCornerCentre, x, y, z, mesh, slots));
+                    continue;
+                }
+                std::uint32_t& id = ids[std::size_t(corner)];
+                if (id == kNoVertex) id = vertex(corner, x, y, z, mesh, slots);
+                mesh.indices.push_back(id);
             }
         }
     }
@@ -236,16 +252,9 @@ public:
 private:
     template <class Slots>
     std::uint32_t vertex(int corner, int x, int y, int z, Mesh& mesh, Slots& slots) const {
-        int p[3] = {x, y, z};
-        int axis = 3;  // the slot of a sample, after its three edges
-        if (corner < kSnapCornerVertex) {
-            const auto& o = cube::edgeOrigin(corner);
-            for (int k = 0; k < 3; ++k) p[k] += o[std::size_t(k)];
-            axis = cube::edgeAxis(corner);
-        } else {
-            const auto& o = cube::kVertexOffset[std::size_t(corner - kSnapCornerVertex)];
-            for (int k = 0; k < 3; ++k) p[k] += o[std::size_t(k)];
-        }
+        const auto& place = corners().place[std::size_t(corner)];
+        const int p[3] = {x + place[0], y + place[1], z + place[2]};
+        const int axis = place[3];  // a sample's slot, 3, follows its three edges'
         std::uint32_t& slot = slots.slot(p[0], p[1], p[2], axis);
         if (slot != kNoVertex) return slot;
         slot = std::uint32_t(mesh.vertices.size());
