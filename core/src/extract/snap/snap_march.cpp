@@ -188,7 +188,19 @@ public:
             const auto& o = cube::kVertexOffset[std::size_t(v)];
             vertexOffset_[std::size_t(v)] = grid_.index(o[0], o[1], o[2]);
         }
+        for (int k = 0; k < 3; ++k) visitBlocks_[std::size_t(k)] = (std::size_t(volume.dims()[std::size_t(k)]) + 3) / 4;
     }
+
+    // Where the walks mark cell (x, y, z) visited: cells in blocks of 4x4x4,
+    // a cache line of marks each, so that a walk's front, which moves along
+    // every axis, reads few lines (in sample order, a step along z is a
+    // slice of samples away).
+    std::size_t visitIndex(int x, int y, int z) const {
+        const std::size_t block =
+            std::size_t(x >> 2) + visitBlocks_[0] * (std::size_t(y >> 2) + visitBlocks_[1] * std::size_t(z >> 2));
+        return block * 64 + std::size_t((z & 3) << 4 | (y & 3) << 2 | (x & 3));
+    }
+    std::size_t visitMarks() const { return visitBlocks_[0] * visitBlocks_[1] * visitBlocks_[2] * 64; }
 
     const Volume& volume() const { return volume_; }
     SampleState state(int x, int y, int z) const { return states_[grid_.index(x, y, z)]; }
@@ -311,7 +323,8 @@ private:
     SampleGrid<T> grid_;
     std::vector<SampleState> states_;
     const std::vector<SnapCase>& table_;
-    std::array<std::size_t, cube::kVertexCount> vertexOffset_{};  // of each cube vertex's sample from the cell's first
+    std::array<std::size_t, cube::kVertexCount> vertexOffset_{};
+    std::array<std::size_t, 3> visitBlocks_{};  // of each cube vertex's sample from the cell's first
 };
 
 // Pairs of triangles over the same three vertices go (removeFinsAmong, over
@@ -346,11 +359,11 @@ protected:
 template <class T>
 class SnapWalk final : public SnapWalkBase {
 public:
-    // `visited` (one bit per piece, per cell's first sample) may be shared by walks.
+    // `visited` (one bit per piece, per cell, at SnapCells::visitIndex) may be shared by walks.
     SnapWalk(std::shared_ptr<const SnapCells<T>> cells, std::vector<std::uint8_t>* visited)
         : cells_(std::move(cells)), visited_(visited), slots_(cells_->volume().dims()) {
         if (!visited_) {
-            own_.assign(cells_->volume().sampleCount(), 0);
+            own_.assign(cells_->visitMarks(), 0);
             visited_ = &own_;
         }
     }
@@ -360,7 +373,7 @@ public:
     // With the cell's entry index (SnapCells::config), read with the states its
     // 2-state configuration came from.
     void enqueue(int x, int y, int z, int piece, int config) {
-        std::uint8_t& bits = (*visited_)[cells_->volume().index(x, y, z)];
+        std::uint8_t& bits = (*visited_)[cells_->visitIndex(x, y, z)];
         if (bits >> piece & 1u) return;
         bits = static_cast<std::uint8_t>(bits | 1u << piece);
         queue_.push_back({x, y, z, piece, config});
@@ -460,13 +473,13 @@ std::vector<Surface> allSnapTyped(const Volume& volume, const T* samples, double
     if (n[0] < 2 || n[1] < 2 || n[2] < 2) return surfaces;
     const auto cells = std::make_shared<const SnapCells<T>>(volume, samples, iso, threads);
     const auto& continuation = continuationTable(TableKind::Consistent);
-    std::vector<std::uint8_t> visited(volume.sampleCount(), 0);
+    std::vector<std::uint8_t> visited(cells->visitMarks(), 0);
     for (int z = 0; z + 1 < n[2]; ++z) {
         for (int y = 0; y + 1 < n[1]; ++y) {
             for (int x = 0; x + 1 < n[0]; ++x) {
                 const std::uint8_t above = cells->aboveMask(x, y, z);
                 for (int p = 0; p < continuation[above].pieceCount; ++p) {
-                    if (visited[volume.index(x, y, z)] >> p & 1u) continue;
+                    if (visited[cells->visitIndex(x, y, z)] >> p & 1u) continue;
                     SnapWalk<T> walk(cells, &visited);
                     walk.enqueue(x, y, z, p);
                     walk.advance(std::numeric_limits<std::size_t>::max());
