@@ -183,7 +183,11 @@ template <class T>
 class SnapCells {
 public:
     SnapCells(const Volume& volume, const T* samples, double iso, int threads)
-        : volume_(volume), grid_(volume, samples, iso), states_(snapStates(volume, iso, threads)), table_(snapTable()) {
+        : volume_(volume),
+          grid_(volume, samples, iso),
+          states_(snapStates(volume, iso, threads)),
+          table_(snapTable()),
+          corners_(corners()) {
         for (int v = 0; v < cube::kVertexCount; ++v) {
             const auto& o = cube::kVertexOffset[std::size_t(v)];
             vertexOffset_[std::size_t(v)] = grid_.index(o[0], o[1], o[2]);
@@ -239,7 +243,7 @@ public:
     void emit(int index, int piece, int x, int y, int z, Mesh& mesh, Slots& slots,
               std::vector<std::uint32_t>& onFaces) const {
         const SnapCase& cased = table_[std::size_t(index)];
-        const auto& faces = corners().faces;
+        const auto& faces = corners_.faces;
         // The cell's corners' vertices as its triangles first use them: each is
         // looked up in `slots` once, however many triangles share it.
         std::array<std::uint32_t, kSnapCornerCentre> ids;
@@ -264,7 +268,7 @@ public:
 private:
     template <class Slots>
     std::uint32_t vertex(int corner, int x, int y, int z, Mesh& mesh, Slots& slots) const {
-        const auto& place = corners().place[std::size_t(corner)];
+        const auto& place = corners_.place[std::size_t(corner)];
         const int p[3] = {x + place[0], y + place[1], z + place[2]};
         const int axis = place[3];  // a sample's slot, 3, follows its three edges'
         std::uint32_t& slot = slots.slot(p[0], p[1], p[2], axis);
@@ -323,6 +327,7 @@ private:
     SampleGrid<T> grid_;
     std::vector<SampleState> states_;
     const std::vector<SnapCase>& table_;
+    const CornerTable& corners_;
     std::array<std::size_t, cube::kVertexCount> vertexOffset_{};
     std::array<std::size_t, 3> visitBlocks_{};  // of each cube vertex's sample from the cell's first
 };

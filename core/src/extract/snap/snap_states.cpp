@@ -201,19 +201,46 @@ private:
     std::array<int, 8> config_{kUnread, kUnread, kUnread, kUnread, kUnread, kUnread, kUnread, kUnread};
 };
 
-// For each cell around p that holds p and its neighbour `j` (SamplesAround's
-// local index), fn(d, a, b): the cell (SamplesAround::entry) and the table
-// corners of p and of the neighbour in it.
+// For each neighbour j of p (SamplesAround's local index), the cells around p
+// that hold both (SamplesAround's d) and the cube vertices p and j are in
+// each: at most four cells (a grid edge's), computed at compile time.
+struct SegmentCells {
+    int count = 0;
+    std::array<std::array<int, 3>, 4> cell{};  // d, p's vertex, the neighbour's vertex
+};
+
+constexpr std::array<SegmentCells, 27> segmentCells() {
+    std::array<int, 8> vertexAt{};  // the cube vertex at offset x + 2y + 4z
+    for (int v = 0; v < cube::kVertexCount; ++v) {
+        const auto& o = cube::kVertexOffset[std::size_t(v)];
+        vertexAt[std::size_t(o[0] + 2 * o[1] + 4 * o[2])] = v;
+    }
+    std::array<SegmentCells, 27> out{};
+    for (int j = 0; j < 27; ++j) {
+        if (j == SamplesAround::kCentre) continue;   // p itself
+        const int q[3] = {j % 3, j / 3 % 3, j / 9};  // p is (1, 1, 1)
+        for (int d = 0; d < 8; ++d) {
+            const int o[3] = {q[0] - (d & 1), q[1] - (d >> 1 & 1), q[2] - (d >> 2)};  // q's offset in the cell
+            if (o[0] < 0 || o[0] > 1 || o[1] < 0 || o[1] > 1 || o[2] < 0 || o[2] > 1) continue;
+            SegmentCells& cells = out[std::size_t(j)];
+            // p is at offset 1 - d in the cell.
+            cells.cell[std::size_t(cells.count++)] = {d, vertexAt[std::size_t(7 - d)],
+                                                      vertexAt[std::size_t(o[0] + 2 * o[1] + 4 * o[2])]};
+        }
+    }
+    return out;
+}
+
+constexpr std::array<SegmentCells, 27> kSegmentCells = segmentCells();
+
+// fn(d, a, b) for each cell d around p that holds p and its neighbour j, a
+// and b the table corners of p and of the neighbour in it.
 template <class Fn>
 void forCellsOnSegment(int j, Fn&& fn) {
-    const CornerPlaces& places = cornerPlaces();
-    const int q[3] = {j % 3, j / 3 % 3, j / 9};  // p is (1, 1, 1)
-    for (int d = 0; d < 8; ++d) {
-        const int o[3] = {q[0] - (d & 1), q[1] - (d >> 1 & 1), q[2] - (d >> 2)};  // q's offset in the cell
-        if (o[0] < 0 || o[0] > 1 || o[1] < 0 || o[1] > 1 || o[2] < 0 || o[2] > 1) continue;
-        // p is at offset 1 - d in the cell.
-        fn(d, kSnapCornerVertex + places.vertexAt[std::size_t(7 - d)],
-           kSnapCornerVertex + places.vertexAt[std::size_t(o[0] + 2 * o[1] + 4 * o[2])]);
+    const SegmentCells& cells = kSegmentCells[std::size_t(j)];
+    for (int c = 0; c < cells.count; ++c) {
+        const auto& [d, a, b] = cells.cell[std::size_t(c)];
+        fn(d, kSnapCornerVertex + a, kSnapCornerVertex + b);
     }
 }
 
