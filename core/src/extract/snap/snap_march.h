@@ -34,7 +34,7 @@ std::size_t removeFinsAmong(std::uint32_t* indices, std::size_t indexCount, cons
 // off the isovalue, one per sample at the isovalue that a triangle uses (its
 // vertexEdges entry is a grid edge from or to the sample, on the volume's
 // border when the sample is). Pairs of triangles over the same three vertices
-// are removed (detail::removeFins).
+// are removed (removeFinsAmong).
 // The states are decided on `threads` threads; the cells are emitted on one,
 // so the mesh is the same, byte for byte, on any number.
 Mesh marchSnap(const Volume& volume, double iso, int threads);
