@@ -220,6 +220,9 @@ TEST_CASE("snap states: the reference's, on 1, 2 and 3 threads", "[core][snap][t
     cases.push_back({"float noise", noise({23, 19, 17}, rng), {0.0, 0.1, -0.35}});
     cases.push_back({"integers in [-3, 3]", test::randomIntegers({24, 21, 19}, rng, 3), {0.0, 0.5, 1.0}});
     cases.push_back({"integers in [-1, 1]", test::randomIntegers({20, 18, 16}, rng, 1), {0.0, -1.0}});
+    // Thin volumes: rows of one and two samples, a single slice, no cell at all.
+    for (const Dims& thin : {Dims{1, 6, 5}, Dims{2, 2, 2}, Dims{3, 1, 7}, Dims{9, 5, 1}, Dims{2, 7, 3}})
+        cases.push_back({"a thin volume", test::randomIntegers(thin, rng, 2), {0.0, 0.5}});
     for (const ScalarType type : {ScalarType::Int16, ScalarType::UInt16, ScalarType::Int32, ScalarType::UInt32})
         cases.push_back({"CT-like integers", ctLike({26, 22, 20}, type, rng), {400.0, 400.5, 399.5, 120.0}});
     // uint8: isovalues at and past the ends of the type's range.
