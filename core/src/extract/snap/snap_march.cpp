@@ -17,8 +17,9 @@
 // gets a vertex inside its cell (vertexEdges: the cell, kCellInterior).
 // (4) Pairs of triangles over the same three vertices, drawn by two cells on
 // their shared face where a sheet of samples at the isovalue has samples
-// below on both sides, are removed (removeFins), with the vertices only they
-// used.
+// below on both sides, are removed (removeFins' rule, applied by
+// removeFinsAmong to the triangles with their three corners on one face of
+// their cell: no other can have a twin), with the vertices only they used.
 #include "extract/snap/snap_march.h"
 
 #include <algorithm>
@@ -27,15 +28,14 @@
 #include <limits>
 #include <memory>
 #include <stdexcept>
-#include <unordered_map>
 #include <utility>
 
 #include "extract/common/edge_vertex.h"
+#include "extract/snap/snap_slots.h"
 #include "extract/tracking/track_walker.h"
 #include "isotrack/continuation.h"
 #include "isotrack/cube.h"
 #include "isotrack/errors.h"
-#include "mesh/manifold.h"
 #include "mesh/weld.h"
 
 namespace isotrack::detail {
@@ -59,102 +59,61 @@ GridEdge edgeThroughSample(int x, int y, int z, const Dims& n) {
     return GridEdge{q[0], q[1], q[2], axis};
 }
 
-constexpr std::uint32_t kNoVertex = std::numeric_limits<std::uint32_t>::max();
-
-// Vertex ids of a walk, which goes anywhere: four slots per sample (its edges
-// along x, y and z, then the sample itself) in blocks of 4x4x4 samples made
-// when a walk first reaches them, so lookups neither hash nor allocate per
-// vertex; the rare centres of fanned loops (slot 4..7 of a cell) in a map.
-class BlockSlots {
-public:
-    explicit BlockSlots(const Dims& n)
-        : blocks_{(n[0] + kSide - 1) / kSide, (n[1] + kSide - 1) / kSide, (n[2] + kSide - 1) / kSide},
-          table_(std::size_t(blocks_[0]) * std::size_t(blocks_[1]) * std::size_t(blocks_[2]), nullptr) {}
-
-    std::uint32_t& slot(int x, int y, int z, int kind) {
-        if (kind >= 4) {
-            const std::uint64_t cell =
-                std::uint64_t(x) +
-                std::uint64_t(kMaxSide) * (std::uint64_t(y) + std::uint64_t(kMaxSide) * std::uint64_t(z));
-            return centres_.try_emplace(cell * 4 + std::uint64_t(kind - 4), kNoVertex).first->second;
-        }
-        const std::size_t block =
-            std::size_t(x / kSide) +
-            std::size_t(blocks_[0]) * (std::size_t(y / kSide) + std::size_t(blocks_[1]) * std::size_t(z / kSide));
-        std::uint32_t*& slots = table_[block];
-        if (!slots) slots = newBlock();
-        return slots[std::size_t(((z % kSide * kSide + y % kSide) * kSide + x % kSide) * 4 + kind)];
-    }
-
-    std::size_t bytes() const {
-        return table_.size() * sizeof(table_[0]) + chunks_.size() * kChunkSlots * sizeof(std::uint32_t) +
-               centres_.size() * (sizeof(std::uint64_t) + sizeof(std::uint32_t) + 2 * sizeof(void*));
-    }
-
-private:
-    static constexpr int kSide = 4;
-    static constexpr std::size_t kBlockSlots = 4 * kSide * kSide * kSide;
-    static constexpr std::size_t kChunkSlots = 64 * kBlockSlots;
-    static constexpr std::uint64_t kMaxSide = std::uint64_t(1) << 21;
-
-    std::uint32_t* newBlock() {
-        if (chunks_.empty() || used_ == kChunkSlots) {
-            chunks_.push_back(std::make_unique<std::uint32_t[]>(kChunkSlots));
-            used_ = 0;
-        }
-        std::uint32_t* block = chunks_.back().get() + used_;
-        std::fill(block, block + kBlockSlots, kNoVertex);
-        used_ += kBlockSlots;
-        return block;
-    }
-
-    std::array<int, 3> blocks_;
-    std::vector<std::uint32_t*> table_;
-    std::vector<std::unique_ptr<std::uint32_t[]>> chunks_;
-    std::size_t used_ = 0;
-    std::unordered_map<std::uint64_t, std::uint32_t> centres_;
+// For each table corner: the sample its vertex is keyed at (an edge's origin,
+// or the sample itself, as an offset in the cell) and its slot there (the
+// edge's axis; 3 for the sample); and the cube faces (a bit per face) it lies
+// on: an edge's crossing on the two faces that hold the edge, a sample on its
+// three, a centre on none. Computed once.
+struct CornerTable {
+    std::array<std::array<int, 4>, kSnapCornerCentre> place{};
+    std::array<std::uint8_t, kSnapCornerCentre + kMaxSnapCentres> faces{};
 };
 
-// The same for marchSnap, which goes slab by slab: the slots of two slices of
-// samples, the slice of the slab's top reused from the slab two below, and of
-// the cell being emitted's centres.
-class SliceSlots {
-public:
-    SliceSlots(const Dims& n)
-        : nx_(std::size_t(n[0])), slice_(std::size_t(n[0]) * std::size_t(n[1])), slots_(8 * slice_, kNoVertex) {}
-
-    // Before emitting the cells between slices z and z + 1.
-    void startSlab(int z) {
-        const std::size_t top = std::size_t((z + 1) & 1) * 4 * slice_;
-        std::fill(slots_.begin() + std::ptrdiff_t(top), slots_.begin() + std::ptrdiff_t(top + 4 * slice_), kNoVertex);
-    }
-
-    std::uint32_t& slot(int x, int y, int z, int kind) {
-        if (kind >= 4) {
-            const std::array<int, 3> cell{x, y, z};
-            if (cell != centreCell_) {
-                centreCell_ = cell;
-                centres_.fill(kNoVertex);
+const CornerTable& corners() {
+    static const auto table = [] {
+        CornerTable out;
+        for (int corner = 0; corner < kSnapCornerCentre; ++corner) {
+            const bool edge = corner < kSnapCornerVertex;
+            const auto& o =
+                edge ? cube::edgeOrigin(corner) : cube::kVertexOffset[std::size_t(corner - kSnapCornerVertex)];
+            out.place[std::size_t(corner)] = {o[0], o[1], o[2], edge ? cube::edgeAxis(corner) : 3};
+            for (int f = 0; f < cube::kFaceCount; ++f) {
+                const int axis = cube::faceAxis(f);
+                if ((!edge || cube::edgeAxis(corner) != axis) && o[std::size_t(axis)] == cube::faceSide(f))
+                    out.faces[std::size_t(corner)] = std::uint8_t(out.faces[std::size_t(corner)] | 1u << f);
             }
-            return centres_[std::size_t(kind - 4)];
         }
-        const std::size_t parity = std::size_t(z) & 1;
-        return slots_[(parity * 4 + std::size_t(kind)) * slice_ + std::size_t(x) + nx_ * std::size_t(y)];
-    }
-
-private:
-    std::size_t nx_;
-    std::size_t slice_;
-    std::vector<std::uint32_t> slots_;
-    std::array<int, 3> centreCell_{-1, -1, -1};
-    std::array<std::uint32_t, 4> centres_{};
-};
+        return out;
+    }();
+    return table;
+}
 
 template <class T>
 class SnapCells {
 public:
     SnapCells(const Volume& volume, const T* samples, double iso, int threads)
-        : volume_(volume), grid_(volume, samples, iso), states_(snapStates(volume, iso, threads)) {}
+        : volume_(volume),
+          grid_(volume, samples, iso),
+          states_(snapStates(volume, iso, threads)),
+          table_(snapTable()),
+          corners_(corners()) {
+        for (int v = 0; v < cube::kVertexCount; ++v) {
+            const auto& o = cube::kVertexOffset[std::size_t(v)];
+            vertexOffset_[std::size_t(v)] = grid_.index(o[0], o[1], o[2]);
+        }
+        for (int k = 0; k < 3; ++k) visitBlocks_[std::size_t(k)] = (std::size_t(volume.dims()[std::size_t(k)]) + 3) / 4;
+    }
+
+    // Where the walks mark cell (x, y, z) visited: cells in blocks of 4x4x4,
+    // a cache line of marks each, so that a walk's front, which moves along
+    // every axis, reads few lines (in sample order, a step along z is a
+    // slice of samples away).
+    std::size_t visitIndex(int x, int y, int z) const {
+        const std::size_t block =
+            std::size_t(x >> 2) + visitBlocks_[0] * (std::size_t(y >> 2) + visitBlocks_[1] * std::size_t(z >> 2));
+        return block * 64 + std::size_t((z & 3) << 4 | (y & 3) << 2 | (x & 3));
+    }
+    std::size_t visitMarks() const { return visitBlocks_[0] * visitBlocks_[1] * visitBlocks_[2] * 64; }
 
     const Volume& volume() const { return volume_; }
     SampleState state(int x, int y, int z) const { return states_[grid_.index(x, y, z)]; }
@@ -164,15 +123,16 @@ public:
 
     // The snap table's entry for cell (x, y, z) (snapCaseIndex).
     int config(int x, int y, int z) const {
+        const SampleState* first = states_.data() + grid_.index(x, y, z);
         unsigned above = 0, at = 0;
         for (int v = 0; v < cube::kVertexCount; ++v) {
-            const auto& o = cube::kVertexOffset[std::size_t(v)];
-            const SampleState s = state(x + o[0], y + o[1], z + o[2]);
+            const SampleState s = first[vertexOffset_[std::size_t(v)]];
             above |= unsigned(isAbove(s)) << v;
             at |= unsigned(isAt(s)) << v;
         }
         return snapCaseIndex(std::uint8_t(above), std::uint8_t(at));
     }
+    const SnapCase& entry(int index) const { return table_[std::size_t(index)]; }
 
     // The 2-state configuration of cell (x, y, z): its snap table entry's
     // aboveMask, without reading the table (snapCaseIndex keeps it in the low byte).
@@ -185,16 +145,31 @@ public:
         return std::uint8_t(above);
     }
 
-    // Appends the triangles of `piece` (all pieces when negative) of cell (x, y, z).
+    // Appends the triangles of `piece` (all pieces when negative) of cell (x,
+    // y, z); lists in `onFaces` those with their three corners on one face of
+    // the cell, the only ones a neighbouring cell can draw too (a fin's).
     template <class Slots>
-    void emit(int index, int piece, int x, int y, int z, Mesh& mesh, Slots& slots) const {
-        const SnapCase& cased = snapTable()[std::size_t(index)];
+    void emit(int index, int piece, int x, int y, int z, Mesh& mesh, Slots& slots,
+              std::vector<std::uint32_t>& onFaces) const {
+        const SnapCase& cased = table_[std::size_t(index)];
+        const auto& faces = corners_.faces;
+        // The cell's corners' vertices as its triangles first use them: each is
+        // looked up in `slots` once, however many triangles share it.
+        std::array<std::uint32_t, kSnapCornerCentre> ids;
+        ids.fill(kNoVertex);
         for (int t = 0; t < cased.count; ++t) {
             if (piece >= 0 && cased.piece[std::size_t(t)] != piece) continue;
-            for (const std::int8_t corner : cased.triangles[std::size_t(t)]) {
-                mesh.indices.push_back(corner >= kSnapCornerCentre
-                                           ? centre(cased, corner - kSnapCornerCentre, x, y, z, mesh, slots)
-                                           : vertex(corner, x, y, z, mesh, slots));
+            const auto& triangle = cased.triangles[std::size_t(t)];
+            if (faces[std::size_t(triangle[0])] & faces[std::size_t(triangle[1])] & faces[std::size_t(triangle[2])])
+                onFaces.push_back(std::uint32_t(mesh.indices.size() / 3));
+            for (const std::int8_t corner : triangle) {
+                if (corner >= kSnapCornerCentre) {
+                    mesh.indices.push_back(centre(cased, corner - kSnapCornerCentre, x, y, z, mesh, slots));
+                    continue;
+                }
+                std::uint32_t& id = ids[std::size_t(corner)];
+                if (id == kNoVertex) id = vertex(corner, x, y, z, mesh, slots);
+                mesh.indices.push_back(id);
             }
         }
     }
@@ -202,16 +177,9 @@ public:
 private:
     template <class Slots>
     std::uint32_t vertex(int corner, int x, int y, int z, Mesh& mesh, Slots& slots) const {
-        int p[3] = {x, y, z};
-        int axis = 3;  // the slot of a sample, after its three edges
-        if (corner < kSnapCornerVertex) {
-            const auto& o = cube::edgeOrigin(corner);
-            for (int k = 0; k < 3; ++k) p[k] += o[std::size_t(k)];
-            axis = cube::edgeAxis(corner);
-        } else {
-            const auto& o = cube::kVertexOffset[std::size_t(corner - kSnapCornerVertex)];
-            for (int k = 0; k < 3; ++k) p[k] += o[std::size_t(k)];
-        }
+        const auto& place = corners_.place[std::size_t(corner)];
+        const int p[3] = {x + place[0], y + place[1], z + place[2]};
+        const int axis = place[3];  // a sample's slot, 3, follows its three edges'
         std::uint32_t& slot = slots.slot(p[0], p[1], p[2], axis);
         if (slot != kNoVertex) return slot;
         slot = std::uint32_t(mesh.vertices.size());
@@ -267,13 +235,16 @@ private:
     const Volume& volume_;
     SampleGrid<T> grid_;
     std::vector<SampleState> states_;
+    const std::vector<SnapCase>& table_;
+    const CornerTable& corners_;
+    std::array<std::size_t, cube::kVertexCount> vertexOffset_{};
+    std::array<std::size_t, 3> visitBlocks_{};  // of each cube vertex's sample from the cell's first
 };
 
-// Pairs of triangles over the same three vertices go, then the vertices they alone used.
-void removeReversedPairs(Mesh& mesh) {
-    std::vector<std::uint32_t> indices(mesh.indices.begin(), mesh.indices.end());
-    removeFins(indices);
-    mesh.indices.assign(indices.begin(), indices.end());
+// Pairs of triangles over the same three vertices go (removeFinsAmong, over
+// the triangles the cells drew on their faces), then the vertices they alone used.
+void removeReversedPairs(Mesh& mesh, const std::vector<std::uint32_t>& onFaces) {
+    mesh.indices.resize(removeFinsAmong(mesh.indices.data(), mesh.indices.size(), onFaces));
     dropUnusedVertices(mesh);
 }
 
@@ -289,23 +260,37 @@ const std::array<std::array<std::int8_t, cube::kFaceCount>, cube::kEdgeCount>& e
     return table;
 }
 
-template <class T>
-class SnapWalk final : public TrilinearWalk {
+// What finishedSnap needs of a walk beyond TrilinearWalk: the triangles its
+// cells drew on their faces (SnapCells::emit), taken with its mesh.
+class SnapWalkBase : public TrilinearWalk {
 public:
-    // `visited` (one bit per piece, per cell's first sample) may be shared by walks.
+    std::vector<std::uint32_t> takeTrianglesOnFaces() { return std::move(onFaces_); }
+
+protected:
+    std::vector<std::uint32_t> onFaces_;
+};
+
+template <class T>
+class SnapWalk final : public SnapWalkBase {
+public:
+    // `visited` (one bit per piece, per cell, at SnapCells::visitIndex) may be shared by walks.
     SnapWalk(std::shared_ptr<const SnapCells<T>> cells, std::vector<std::uint8_t>* visited)
         : cells_(std::move(cells)), visited_(visited), slots_(cells_->volume().dims()) {
         if (!visited_) {
-            own_.assign(cells_->volume().sampleCount(), 0);
+            own_.assign(cells_->visitMarks(), 0);
             visited_ = &own_;
         }
     }
 
-    void enqueue(int x, int y, int z, int piece) {
-        std::uint8_t& bits = (*visited_)[cells_->volume().index(x, y, z)];
+    void enqueue(int x, int y, int z, int piece) { enqueue(x, y, z, piece, cells_->config(x, y, z)); }
+
+    // With the cell's entry index (SnapCells::config), read with the states its
+    // 2-state configuration came from.
+    void enqueue(int x, int y, int z, int piece, int config) {
+        std::uint8_t& bits = (*visited_)[cells_->visitIndex(x, y, z)];
         if (bits >> piece & 1u) return;
         bits = static_cast<std::uint8_t>(bits | 1u << piece);
-        queue_.push_back({x, y, z, piece});
+        queue_.push_back({x, y, z, piece, config});
     }
 
     std::size_t advance(std::size_t pieceBudget) override {
@@ -313,22 +298,28 @@ public:
         const auto& across = edgesAcrossFaces();
         std::size_t emitted = 0;
         for (; emitted < pieceBudget && head_ < queue_.size(); ++emitted) {
-            const auto [x, y, z, piece] = queue_[head_++];
-            const int index = cells_->config(x, y, z);
-            cells_->emit(index, piece, x, y, z, mesh_, slots_);
+            // The entries a few pieces ahead, fetched early: the table is far bigger than the caches.
+            if (head_ + kFetchAhead < queue_.size()) {
+                const char* ahead = reinterpret_cast<const char*>(&cells_->entry(queue_[head_ + kFetchAhead][4]));
+                __builtin_prefetch(ahead);
+                __builtin_prefetch(ahead + 64);
+            }
+            const auto [x, y, z, piece, index] = queue_[head_++];
+            cells_->emit(index, piece, x, y, z, mesh_, slots_, onFaces_);
             const Piece& exits = continuation[index & 0xff].pieces[std::size_t(piece)];
             for (int f = 0; f < cube::kFaceCount; ++f) {
                 if (exits.exits[std::size_t(f)][0] < 0) continue;
                 int n[3] = {x, y, z};
                 n[cube::faceAxis(f)] += cube::faceSide(f) ? 1 : -1;
                 if (!cells_->cellInside(n[0], n[1], n[2])) continue;
-                const std::uint8_t above = cells_->aboveMask(n[0], n[1], n[2]);
+                const int config = cells_->config(n[0], n[1], n[2]);
+                const std::uint8_t above = std::uint8_t(config & 0xff);
                 for (const std::int8_t edge : exits.exits[std::size_t(f)]) {
                     if (edge < 0) break;
                     const int entry = across[std::size_t(edge)][std::size_t(f)];
                     const int next = continuation[above].pieceOfEdge[std::size_t(entry)];
                     if (next < 0) throw std::logic_error("snap walk: an exit edge is not crossed across the face");
-                    enqueue(n[0], n[1], n[2], next);
+                    enqueue(n[0], n[1], n[2], next, config);
                 }
             }
         }
@@ -352,7 +343,8 @@ private:
     std::shared_ptr<const SnapCells<T>> cells_;
     std::vector<std::uint8_t> own_;
     std::vector<std::uint8_t>* visited_;
-    std::vector<std::array<int, 4>> queue_;
+    static constexpr std::size_t kFetchAhead = 8;
+    std::vector<std::array<int, 5>> queue_;  // cell, piece, entry index
     std::size_t head_ = 0, visitedPieces_ = 0;
     Mesh mesh_;
     BlockSlots slots_;
@@ -395,13 +387,13 @@ std::vector<Surface> allSnapTyped(const Volume& volume, const T* samples, double
     if (n[0] < 2 || n[1] < 2 || n[2] < 2) return surfaces;
     const auto cells = std::make_shared<const SnapCells<T>>(volume, samples, iso, threads);
     const auto& continuation = continuationTable(TableKind::Consistent);
-    std::vector<std::uint8_t> visited(volume.sampleCount(), 0);
+    std::vector<std::uint8_t> visited(cells->visitMarks(), 0);
     for (int z = 0; z + 1 < n[2]; ++z) {
         for (int y = 0; y + 1 < n[1]; ++y) {
             for (int x = 0; x + 1 < n[0]; ++x) {
                 const std::uint8_t above = cells->aboveMask(x, y, z);
                 for (int p = 0; p < continuation[above].pieceCount; ++p) {
-                    if (visited[volume.index(x, y, z)] >> p & 1u) continue;
+                    if (visited[cells->visitIndex(x, y, z)] >> p & 1u) continue;
                     SnapWalk<T> walk(cells, &visited);
                     walk.enqueue(x, y, z, p);
                     walk.advance(std::numeric_limits<std::size_t>::max());
@@ -420,6 +412,41 @@ std::vector<Surface> allSnapTyped(const Volume& volume, const T* samples, double
 
 }  // namespace
 
+std::size_t removeFinsAmong(std::uint32_t* indices, std::size_t indexCount,
+                            const std::vector<std::uint32_t>& suspects) {
+    // Keys of the suspects: their sorted vertices and their place, sorted.
+    std::vector<std::pair<std::array<std::uint32_t, 3>, std::uint32_t>> sets(suspects.size());
+    for (std::size_t s = 0; s < suspects.size(); ++s) {
+        const std::uint32_t* t = indices + 3 * std::size_t(suspects[s]);
+        std::array<std::uint32_t, 3> key{t[0], t[1], t[2]};
+        std::sort(key.begin(), key.end());
+        sets[s] = {key, suspects[s]};
+    }
+    std::sort(sets.begin(), sets.end());
+    // removeFins' rule: equal keys go in pairs, the first two, then the next two.
+    std::vector<std::uint32_t> dropped;
+    for (std::size_t i = 0; i + 1 < sets.size();) {
+        if (sets[i].first == sets[i + 1].first) {
+            dropped.push_back(sets[i].second);
+            dropped.push_back(sets[i + 1].second);
+            i += 2;
+        } else {
+            ++i;
+        }
+    }
+    if (dropped.empty()) return indexCount;
+    std::sort(dropped.begin(), dropped.end());
+    std::size_t kept = 3 * std::size_t(dropped.front()), next = 0;
+    for (std::size_t t = dropped.front(); t < indexCount / 3; ++t) {
+        if (next < dropped.size() && dropped[next] == t) {
+            ++next;
+            continue;
+        }
+        for (int k = 0; k < 3; ++k) indices[kept++] = indices[3 * t + std::size_t(k)];
+    }
+    return kept;
+}
+
 Mesh marchSnap(const Volume& volume, double iso, int threads) {
     return visitSamples(volume, [&](const auto* samples) {
         using T = std::remove_cv_t<std::remove_pointer_t<decltype(samples)>>;
@@ -428,6 +455,7 @@ Mesh marchSnap(const Volume& volume, double iso, int threads) {
         if (n[0] < 2 || n[1] < 2 || n[2] < 2) return mesh;
         const SnapCells<T> cells(volume, samples, iso, threads);
         SliceSlots slots(n);
+        std::vector<std::uint32_t> onFaces;
         for (int z = 0; z + 1 < n[2]; ++z) {
             slots.startSlab(z);
             for (int y = 0; y + 1 < n[1]; ++y) {
@@ -436,11 +464,11 @@ Mesh marchSnap(const Volume& volume, double iso, int threads) {
                     // the table refines the 2-state one (tested in snap_test).
                     const std::uint8_t above = cells.aboveMask(x, y, z);
                     if (above == 0 || above == 0xff) continue;
-                    cells.emit(cells.config(x, y, z), -1, x, y, z, mesh, slots);
+                    cells.emit(cells.config(x, y, z), -1, x, y, z, mesh, slots, onFaces);
                 }
             }
         }
-        removeReversedPairs(mesh);
+        removeReversedPairs(mesh, onFaces);
         return mesh;
     });
 }
@@ -459,7 +487,9 @@ std::unique_ptr<TrilinearWalk> startSnap(const Volume& volume, double iso, const
 Surface finishedSnap(TrilinearWalk& walk, const Volume& volume, int threads) {
     Surface surface;
     surface.mesh = std::move(walk.mesh());
-    removeReversedPairs(surface.mesh);
+    // Every walk startSnap and allSnap make is a SnapWalk.
+    auto& snapWalk = dynamic_cast<SnapWalkBase&>(walk);
+    removeReversedPairs(surface.mesh, snapWalk.takeTrianglesOnFaces());
     surface.stats = measureSurfaceOn(surface.mesh, volume, false, threads);
     surface.stats.cellsVisited = walk.piecesVisited();
     return surface;

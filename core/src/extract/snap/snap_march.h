@@ -24,11 +24,17 @@ namespace isotrack::detail {
 // (snap_states.cpp). The same states on any number of `threads`.
 std::vector<SampleState> snapStates(const Volume& volume, double iso, int threads);
 
+// removeFins (mesh/manifold.h) where only the triangles `suspects` (their
+// places, in increasing order) can have a twin over the same three vertices:
+// the same triangles go, the others keep their order. Returns the indices kept
+// (at the front of `indices`, which held `indexCount`).
+std::size_t removeFinsAmong(std::uint32_t* indices, std::size_t indexCount, const std::vector<std::uint32_t>& suspects);
+
 // Every cell, one mesh: one vertex per crossed grid edge whose ends are both
 // off the isovalue, one per sample at the isovalue that a triangle uses (its
 // vertexEdges entry is a grid edge from or to the sample, on the volume's
 // border when the sample is). Pairs of triangles over the same three vertices
-// are removed (detail::removeFins).
+// are removed (removeFinsAmong).
 // The states are decided on `threads` threads; the cells are emitted on one,
 // so the mesh is the same, byte for byte, on any number.
 Mesh marchSnap(const Volume& volume, double iso, int threads);
