@@ -190,15 +190,6 @@ Volume ctLike(const Dims& dims, ScalarType type, std::mt19937& rng) {
     return v;
 }
 
-Volume noise(const Dims& dims, std::mt19937& rng) {
-    Volume v(dims, ScalarType::Float32);
-    std::uniform_real_distribution<double> pick(-1.0, 1.0);
-    for (int z = 0; z < dims[2]; ++z)
-        for (int y = 0; y < dims[1]; ++y)
-            for (int x = 0; x < dims[0]; ++x) v.setValue(x, y, z, pick(rng));
-    return v;
-}
-
 std::size_t snappedCount(const std::vector<SampleState>& states, const Volume& v, double iso) {
     std::size_t snapped = 0, i = 0;
     for (int z = 0; z < v.dims()[2]; ++z)
@@ -217,7 +208,7 @@ TEST_CASE("snap states: the reference's, on 1, 2 and 3 threads", "[core][snap][t
         std::vector<double> isos;
     };
     std::vector<Case> cases;
-    cases.push_back({"float noise", noise({23, 19, 17}, rng), {0.0, 0.1, -0.35}});
+    cases.push_back({"float noise", test::randomFloats({23, 19, 17}, rng), {0.0, 0.1, -0.35}});
     cases.push_back({"integers in [-3, 3]", test::randomIntegers({24, 21, 19}, rng, 3), {0.0, 0.5, 1.0}});
     cases.push_back({"integers in [-1, 1]", test::randomIntegers({20, 18, 16}, rng, 1), {0.0, -1.0}});
     // Thin volumes: rows of one and two samples, a single slice, no cell at all.

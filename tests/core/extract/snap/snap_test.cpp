@@ -42,15 +42,6 @@ std::multiset<std::array<Point, 3>> trianglesByPosition(const Mesh& mesh) {
 
 using test::randomIntegers;
 
-Volume noise(const Dims& dims, std::mt19937& rng) {
-    Volume v(dims, ScalarType::Float32);
-    std::uniform_real_distribution<double> pick(-1.0, 1.0);
-    for (int z = 0; z < dims[2]; ++z)
-        for (int y = 0; y < dims[1]; ++y)
-            for (int x = 0; x < dims[0]; ++x) v.setValue(x, y, z, pick(rng));
-    return v;
-}
-
 // Edges of more than two triangles, by vertex position, whose two ends are not
 // both samples equal to the isovalue (where the surface touches itself).
 std::size_t crowdedEdgesOffTheIsovalue(const Mesh& mesh, const Volume& volume, double iso) {
@@ -82,7 +73,7 @@ std::size_t crowdedEdgesOffTheIsovalue(const Mesh& mesh, const Volume& volume, d
 TEST_CASE("snap: on noise, closed and edge-manifold after welding, no zero-area triangles", "[core][snap][mc]") {
     std::mt19937 rng(11);
     for (int trial = 0; trial < 40; ++trial) {
-        const Volume v = noise({7, 6, 5}, rng);
+        const Volume v = test::randomFloats({7, 6, 5}, rng);
         const Mesh mesh = marchingCubes(v, 0.1, TableKind::Snap);
         const auto t = topology(mesh, v.dims());
         CHECK(t.interiorBoundaryEdges == 0);
@@ -113,7 +104,7 @@ TEST_CASE("snap: many samples at the isovalue, closed; edges of four only where 
 TEST_CASE("snap: track and all give mc's triangles, one surface per consistent surface", "[core][snap][tracking]") {
     std::mt19937 rng(3);
     for (int trial = 0; trial < 30; ++trial) {
-        const Volume v = trial % 2 ? noise({9, 8, 7}, rng) : randomIntegers({9, 8, 7}, rng, 4);
+        const Volume v = trial % 2 ? test::randomFloats({9, 8, 7}, rng) : randomIntegers({9, 8, 7}, rng, 4);
         const double iso = trial % 2 ? 0.2 : 0.5;
         INFO("trial " << trial);
         const Mesh mesh = marchingCubes(v, iso, TableKind::Snap);
