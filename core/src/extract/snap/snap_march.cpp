@@ -30,11 +30,13 @@
 #include <stdexcept>
 #include <utility>
 
+#include "extract/common/sparse_blocks.h"
 #include "extract/snap/snap_cells.h"
 #include "extract/tracking/track_walker.h"
 #include "isotrack/continuation.h"
 #include "isotrack/cube.h"
 #include "isotrack/errors.h"
+#include "isotrack/tracking.h"
 #include "mesh/weld.h"
 
 namespace isotrack::detail {
@@ -259,9 +261,16 @@ Surface finishedSnap(TrilinearWalk& walk, const Volume& volume, int threads) {
 
 Surface trackSnap(const Volume& volume, double iso, const GridEdge& seed, int threads) {
     const auto start = std::chrono::steady_clock::now();
-    const auto walk = startSnap(volume, iso, seed, threads);
-    walk->advance(std::numeric_limits<std::size_t>::max());
-    Surface surface = finishedSnap(*walk, volume, threads);
+    // As the other tables' tracks: more threads than the volume's tiles can share out would only wait.
+    const int walkers = std::min({threads, kMaxTrackThreads, SparseBlocks::usefulThreads(volume.dims())});
+    Surface surface;
+    if (walkers > 1) {
+        surface = trackSnapTogether(volume, iso, seed, walkers);
+    } else {
+        const auto walk = startSnap(volume, iso, seed, threads);
+        walk->advance(std::numeric_limits<std::size_t>::max());
+        surface = finishedSnap(*walk, volume, threads);
+    }
     surface.stats.seconds = secondsSince(start);
     return surface;
 }
