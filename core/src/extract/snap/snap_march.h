@@ -1,10 +1,12 @@
 #pragma once
 // The snap room: extraction with the 3-state table (isotrack/snap_table.h):
 // marching cubes, the surface through a seed, and every surface, over sample
-// states decided once for the volume (snap_states.cpp). It uses the tables,
-// common/, tracking/ (the walker and the continuation it follows), trilinear/
-// (its per-walk vertex map) and mesh/ (welding, fins); marching_cubes/,
-// surfaces/ and tracking/ call it for TableKind::Snap.
+// states decided once for the volume (snap_states.cpp); the cells all share
+// are in snap_cells.h, the surface through a seed on several threads in
+// snap_together.cpp. It uses the tables, common/ (and its tiles), tracking/
+// (the walker, the continuation it follows, the mailboxes), trilinear/ (its
+// walk's interface and its parts' join) and mesh/ (welding, fins);
+// marching_cubes/, surfaces/ and tracking/ call it for TableKind::Snap.
 #include <cstdint>
 #include <memory>
 #include <vector>
