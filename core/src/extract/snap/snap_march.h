@@ -1,10 +1,12 @@
 #pragma once
 // The snap room: extraction with the 3-state table (isotrack/snap_table.h):
 // marching cubes, the surface through a seed, and every surface, over sample
-// states decided once for the volume (snap_states.cpp). It uses the tables,
-// common/, tracking/ (the walker and the continuation it follows), trilinear/
-// (its per-walk vertex map) and mesh/ (welding, fins); marching_cubes/,
-// surfaces/ and tracking/ call it for TableKind::Snap.
+// states decided once for the volume (snap_states.cpp); the cells all share
+// are in snap_cells.h, the surface through a seed on several threads in
+// snap_together.cpp. It uses the tables, common/ (and its tiles), tracking/
+// (the walker, the continuation it follows, the mailboxes), trilinear/ (its
+// walk's interface and its parts' join) and mesh/ (welding, fins);
+// marching_cubes/, surfaces/ and tracking/ call it for TableKind::Snap.
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -50,9 +52,16 @@ std::unique_ptr<TrilinearWalk> startSnap(const Volume& volume, double iso, const
 // (the closing check on `threads` threads).
 Surface finishedSnap(TrilinearWalk& walk, const Volume& volume, int threads = 1);
 
-// The states and the closing check on `threads` threads, the walk on one: the
-// same surface on any number.
+// The states, the walk and the closing check on up to `threads` threads (as
+// many as the volume's tiles share out, kMaxTrackThreads at most): on one,
+// startSnap's walk; on several, trackSnapTogether's. The same triangles over
+// the same vertices on any number of threads (in an order that depends on
+// them, unless the surface is done within the first pieces, walked alone).
 Surface trackSnap(const Volume& volume, double iso, const GridEdge& seed, int threads);
+
+// The surface through `seed` walked on `threads` (> 1) threads, each walking
+// its own tiles, the parts joined and measured on them (snap_together.cpp).
+Surface trackSnapTogether(const Volume& volume, double iso, const GridEdge& seed, int threads);
 
 // Every surface by continuation from each (cell, piece) no walk has visited,
 // most triangles first; surfaces that snapping collapses to nothing are dropped.

@@ -2,7 +2,9 @@
 // Vertex slots of the snap room's extractors (snap_march.cpp): where a grid
 // edge's or a sample's vertex id is kept once made, so that every cell that
 // uses it finds it.
+#include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -67,6 +69,65 @@ private:
     std::vector<std::unique_ptr<std::uint32_t[]>> chunks_;
     std::size_t used_ = 0;
     std::unordered_map<std::uint64_t, std::uint32_t> centres_;
+};
+
+// BlockSlots' edge and sample slots for a walk on several threads
+// (snap_together.cpp): a block is made by the first thread to reach it, from
+// that thread's chunks, and published with a compare-and-swap (a thread that
+// loses keeps its block for its next). The slots in a block are the walk's to
+// read and write: those cells of several threads share are claimed with a
+// compare-and-swap there. The centres, rare, are kept elsewhere.
+class SharedBlockSlots {
+public:
+    SharedBlockSlots(const Dims& n, int threads)
+        : blocks_{(n[0] + kSide - 1) / kSide, (n[1] + kSide - 1) / kSide, (n[2] + kSide - 1) / kSide},
+          // Value-initialised: every pointer null.
+          table_(std::size_t(blocks_[0]) * std::size_t(blocks_[1]) * std::size_t(blocks_[2])),
+          arenas_(std::size_t(threads)) {}
+
+    // Slot `kind` (an axis, or 3 for the sample) of sample (x, y, z), reached from thread `thread`.
+    std::uint32_t* slot(int x, int y, int z, int kind, int thread) {
+        const std::size_t block =
+            std::size_t(x / kSide) +
+            std::size_t(blocks_[0]) * (std::size_t(y / kSide) + std::size_t(blocks_[1]) * std::size_t(z / kSide));
+        std::uint32_t* slots = table_[block].load(std::memory_order_acquire);
+        if (slots == nullptr) slots = publish(table_[block], arenas_[std::size_t(thread)]);
+        return slots + std::size_t(((z % kSide * kSide + y % kSide) * kSide + x % kSide) * 4 + kind);
+    }
+
+private:
+    static constexpr int kSide = 4;
+    static constexpr std::size_t kBlockSlots = 4 * kSide * kSide * kSide;
+    static constexpr std::size_t kChunkSlots = 64 * kBlockSlots;
+
+    struct alignas(64) Arena {
+        std::vector<std::unique_ptr<std::uint32_t[]>> chunks;
+        std::size_t used = kChunkSlots;
+        std::uint32_t* spare = nullptr;  // made, but another thread published its block first
+    };
+
+    [[gnu::noinline]] static std::uint32_t* publish(std::atomic<std::uint32_t*>& entry, Arena& arena) {
+        std::uint32_t* made = arena.spare;
+        arena.spare = nullptr;
+        if (made == nullptr) {
+            if (arena.used == kChunkSlots) {
+                arena.chunks.push_back(std::make_unique<std::uint32_t[]>(kChunkSlots));
+                arena.used = 0;
+            }
+            made = arena.chunks.back().get() + arena.used;
+            arena.used += kBlockSlots;
+            std::fill(made, made + kBlockSlots, kNoVertex);
+        }
+        std::uint32_t* expected = nullptr;
+        if (entry.compare_exchange_strong(expected, made, std::memory_order_acq_rel, std::memory_order_acquire))
+            return made;
+        arena.spare = made;
+        return expected;
+    }
+
+    std::array<int, 3> blocks_;
+    std::vector<std::atomic<std::uint32_t*>> table_;
+    std::vector<Arena> arenas_;
 };
 
 // The same for marchSnap, which goes slab by slab: the slots of two slices of

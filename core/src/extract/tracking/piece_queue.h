@@ -43,6 +43,9 @@ public:
         data_[tail_++ & (size_ - 1)] = item;
     }
     T pop() { return data_[head_++ & (size_ - 1)]; }
+    std::size_t size() const { return tail_ - head_; }
+    // The item `k` places after the next one popped (k < size()).
+    const T& ahead(std::size_t k) const { return data_[(head_ + k) & (size_ - 1)]; }
     std::size_t capacity() const { return size_; }
 
 private:

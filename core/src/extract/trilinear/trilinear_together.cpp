@@ -20,41 +20,6 @@ namespace {
 // table's: a small surface is done before more threads would pay for starting.
 constexpr std::size_t kPiecesAlone = 8192;
 
-// The parts' meshes in one, in thread order, vertex ids made indices; in parallel.
-Mesh joinParts(std::vector<TrilinearPart>& parts, int idShift, int threads) {
-    std::vector<std::size_t> firstVertex(parts.size() + 1, 0), firstIndex(parts.size() + 1, 0);
-    for (std::size_t t = 0; t < parts.size(); ++t) {
-        firstVertex[t + 1] = firstVertex[t] + parts[t].mesh.vertices.size();
-        firstIndex[t + 1] = firstIndex[t] + parts[t].mesh.indices.size();
-    }
-    Mesh mesh;
-    mesh.vertices.resize(firstVertex.back());
-    mesh.vertexEdges.resize(firstVertex.back());
-    mesh.indices.resize(firstIndex.back());
-    const std::uint32_t indexMask = parts[0].indexMask;
-    // Each part in `threads` slices, so that every thread has a share of the copying.
-    const int slices = threads;
-    parallelFor(int(parts.size()) * slices, threads, [&](int task) {
-        const std::size_t t = std::size_t(task / slices), slice = std::size_t(task % slices);
-        const Mesh& part = parts[t].mesh;
-        const std::size_t vertexCount = part.vertices.size(), indexCount = part.indices.size();
-        const std::size_t vBegin = vertexCount * slice / std::size_t(slices),
-                          vEnd = vertexCount * (slice + 1) / std::size_t(slices);
-        // Whole triangles to a slice.
-        const std::size_t iBegin = indexCount / 3 * slice / std::size_t(slices) * 3,
-                          iEnd = indexCount / 3 * (slice + 1) / std::size_t(slices) * 3;
-        std::copy(part.vertices.begin() + std::ptrdiff_t(vBegin), part.vertices.begin() + std::ptrdiff_t(vEnd),
-                  mesh.vertices.begin() + std::ptrdiff_t(firstVertex[t] + vBegin));
-        std::copy(part.vertexEdges.begin() + std::ptrdiff_t(vBegin), part.vertexEdges.begin() + std::ptrdiff_t(vEnd),
-                  mesh.vertexEdges.begin() + std::ptrdiff_t(firstVertex[t] + vBegin));
-        for (std::size_t i = iBegin; i < iEnd; ++i) {
-            const std::uint32_t id = part.indices[i];
-            mesh.indices[firstIndex[t] + i] = static_cast<std::uint32_t>(firstVertex[id >> idShift] + (id & indexMask));
-        }
-    });
-    return mesh;
-}
-
 }  // namespace
 
 Mesh walkTrilinearTogether(const Volume& volume, const TrilinearWalker& walker, const GridEdge& seed, int threads,
@@ -87,7 +52,7 @@ Mesh walkTrilinearTogether(const Volume& volume, const TrilinearWalker& walker, 
     }
     piecesByThread.clear();
     for (const TrilinearPart& part : parts) piecesByThread.push_back(part.piecesVisited);
-    return joinParts(parts, idShift, threads);
+    return joinWalkParts(parts, idShift, threads);
 }
 
 }  // namespace isotrack::detail

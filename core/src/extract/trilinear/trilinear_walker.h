@@ -4,6 +4,7 @@
 // trilinear_together.cpp runs on several threads. The tiles, the mailboxes
 // and the ring are the consistent tracker's (extract/common/sparse_blocks.h,
 // extract/tracking/walk_exchange.h and piece_queue.h).
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -14,6 +15,7 @@
 #include "extract/tracking/walk_exchange.h"
 #include "isotrack/mesh.h"
 #include "isotrack/volume.h"
+#include "support/parallel.h"
 
 namespace isotrack::detail {
 
@@ -52,6 +54,44 @@ public:
     // Walks the part's tiles as one of several threads sharing `blocks`, until no piece is left.
     virtual void walkShared(SparseBlocks& blocks, TrilinearPart& part, Exchange& exchange) const = 0;
 };
+
+// The parts' meshes in one, in thread order, vertex ids made indices; in
+// parallel. A part is a TrilinearPart or the like: a mesh whose vertex ids
+// hold the part's number above `idShift`, and the index bits' mask.
+template <class Part>
+Mesh joinWalkParts(const std::vector<Part>& parts, int idShift, int threads) {
+    std::vector<std::size_t> firstVertex(parts.size() + 1, 0), firstIndex(parts.size() + 1, 0);
+    for (std::size_t t = 0; t < parts.size(); ++t) {
+        firstVertex[t + 1] = firstVertex[t] + parts[t].mesh.vertices.size();
+        firstIndex[t + 1] = firstIndex[t] + parts[t].mesh.indices.size();
+    }
+    Mesh mesh;
+    mesh.vertices.resize(firstVertex.back());
+    mesh.vertexEdges.resize(firstVertex.back());
+    mesh.indices.resize(firstIndex.back());
+    const std::uint32_t indexMask = parts[0].indexMask;
+    // Each part in `threads` slices, so that every thread has a share of the copying.
+    const int slices = threads;
+    parallelFor(int(parts.size()) * slices, threads, [&](int task) {
+        const std::size_t t = std::size_t(task / slices), slice = std::size_t(task % slices);
+        const Mesh& part = parts[t].mesh;
+        const std::size_t vertexCount = part.vertices.size(), indexCount = part.indices.size();
+        const std::size_t vBegin = vertexCount * slice / std::size_t(slices),
+                          vEnd = vertexCount * (slice + 1) / std::size_t(slices);
+        // Whole triangles to a slice.
+        const std::size_t iBegin = indexCount / 3 * slice / std::size_t(slices) * 3,
+                          iEnd = indexCount / 3 * (slice + 1) / std::size_t(slices) * 3;
+        std::copy(part.vertices.begin() + std::ptrdiff_t(vBegin), part.vertices.begin() + std::ptrdiff_t(vEnd),
+                  mesh.vertices.begin() + std::ptrdiff_t(firstVertex[t] + vBegin));
+        std::copy(part.vertexEdges.begin() + std::ptrdiff_t(vBegin), part.vertexEdges.begin() + std::ptrdiff_t(vEnd),
+                  mesh.vertexEdges.begin() + std::ptrdiff_t(firstVertex[t] + vBegin));
+        for (std::size_t i = iBegin; i < iEnd; ++i) {
+            const std::uint32_t id = part.indices[i];
+            mesh.indices[firstIndex[t] + i] = static_cast<std::uint32_t>(firstVertex[id >> idShift] + (id & indexMask));
+        }
+    });
+    return mesh;
+}
 
 // InputError when the seed edge is outside the volume or not crossed at `iso`.
 void checkTrilinearSeed(const Volume& volume, double iso, const GridEdge& seed);
