@@ -66,6 +66,27 @@ inline const CornerTable& corners() {
     return table;
 }
 
+// A fanned loop's centre: the mean of its corners' positions, with their mean
+// normal, the corners added in the table's order.
+struct LoopCentre {
+    double position[3] = {0, 0, 0}, normal[3] = {0, 0, 0};
+    int count = 0;
+
+    void add(const Vertex& v) {
+        for (int k = 0; k < 3; ++k) position[k] += v.position[k], normal[k] += v.normal[k];
+        ++count;
+    }
+    Vertex vertex() const {
+        Vertex v{};
+        const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+        for (int k = 0; k < 3; ++k) {
+            v.position[k] = static_cast<float>(position[k] / count);
+            v.normal[k] = length > 0.0 ? static_cast<float>(normal[k] / length) : 0.0f;
+        }
+        return v;
+    }
+};
+
 template <class T>
 class SnapCells {
 public:
@@ -191,22 +212,13 @@ private:
     template <class Slots>
     std::uint32_t centre(const SnapCase& cased, int loop, int x, int y, int z, Mesh& mesh, Slots& slots) const {
         if (const std::uint32_t id = slots.slot(x, y, z, 4 + loop); id != kNoVertex) return id;
-        double position[3] = {0, 0, 0}, normal[3] = {0, 0, 0};
-        int count = 0;
+        LoopCentre sum;
         for (const std::int8_t corner : cased.centres[std::size_t(loop)]) {
             if (corner < 0) break;
-            const Vertex& v = mesh.vertices[vertex(corner, x, y, z, mesh, slots)];
-            for (int k = 0; k < 3; ++k) position[k] += v.position[k], normal[k] += v.normal[k];
-            ++count;
-        }
-        Vertex v{};
-        const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
-        for (int k = 0; k < 3; ++k) {
-            v.position[k] = static_cast<float>(position[k] / count);
-            v.normal[k] = length > 0.0 ? static_cast<float>(normal[k] / length) : 0.0f;
+            sum.add(mesh.vertices[vertex(corner, x, y, z, mesh, slots)]);
         }
         const auto id = std::uint32_t(mesh.vertices.size());
-        mesh.vertices.push_back(v);
+        mesh.vertices.push_back(sum.vertex());
         mesh.vertexEdges.push_back(GridEdge{x, y, z, kCellInterior});
         slots.slot(x, y, z, 4 + loop) = id;
         return id;

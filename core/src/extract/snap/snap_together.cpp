@@ -24,6 +24,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "extract/common/part_ids.h"
 #include "extract/common/sparse_blocks.h"
 #include "extract/measure/surface_measure.h"
 #include "extract/snap/snap_cells.h"
@@ -35,10 +36,6 @@
 
 namespace isotrack::detail {
 namespace {
-
-// Pieces walked on one thread before the others start, as the trilinear
-// table's: a small surface is done before more threads would pay for starting.
-constexpr std::size_t kPiecesAlone = 8192;
 
 // A (cell, piece) to walk, marked visited when queued; `config` is the cell's
 // snap table entry (snapCaseIndex, below 2^16).
@@ -226,24 +223,16 @@ private:
             (std::uint64_t(x) | std::uint64_t(y) << 21 | std::uint64_t(z) << 42) * 4 + std::uint64_t(loop);
         const std::lock_guard<std::mutex> lock(centresLock_);
         if (const auto it = centres_.find(key); it != centres_.end()) return it->second;
-        double position[3] = {0, 0, 0}, normal[3] = {0, 0, 0};
-        int count = 0;
+        LoopCentre sum;
         for (const std::int8_t corner : cased.centres[std::size_t(loop)]) {
             if (corner < 0) break;
             vertex(part, corner, x, y, z);
             Vertex v{};
             cells_.cornerVertex(corner, x, y, z, v);
-            for (int k = 0; k < 3; ++k) position[k] += v.position[k], normal[k] += v.normal[k];
-            ++count;
-        }
-        Vertex v{};
-        const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
-        for (int k = 0; k < 3; ++k) {
-            v.position[k] = static_cast<float>(position[k] / count);
-            v.normal[k] = length > 0.0 ? static_cast<float>(normal[k] / length) : 0.0f;
+            sum.add(v);
         }
         const std::uint32_t id = newId(part);
-        part.mesh.vertices.push_back(v);
+        part.mesh.vertices.push_back(sum.vertex());
         part.mesh.vertexEdges.push_back(GridEdge{x, y, z, kCellInterior});
         centres_.emplace(key, id);
         return id;
@@ -251,10 +240,7 @@ private:
 
     // The id the part's next vertex will have.
     static std::uint32_t newId(const SnapPart& part) {
-        const std::size_t index = part.mesh.vertices.size();
-        if (index >= part.indexMask)
-            throw InputError("surface too large: more than " + std::to_string(part.indexMask) + " vertices per thread");
-        return static_cast<std::uint32_t>(part.idBase | index);
+        return partVertexId(part.idBase, part.indexMask, part.mesh.vertices.size());
     }
 
     const SnapCells<T>& cells_;
@@ -288,14 +274,13 @@ Surface trackTogetherTyped(const Volume& volume, const T* samples, double iso, c
     const auto [x, y, z, piece] = seedPiece(cells, iso, seed);
     SnapTogether<T> walk(cells, threads);
     std::vector<SnapPart> parts(static_cast<std::size_t>(threads));
-    int tagBits = 0;
-    while ((1 << tagBits) < threads) ++tagBits;
-    const int idShift = 32 - tagBits;
+    const PartIds ids(threads);
+    const int idShift = ids.shift;
     for (int t = 0; t < threads; ++t) {
         SnapPart& part = parts[std::size_t(t)];
         part.thread = t;
-        part.idBase = static_cast<std::uint32_t>(std::uint64_t(t) << idShift);
-        part.indexMask = static_cast<std::uint32_t>((std::uint64_t(1) << idShift) - 1);
+        part.idBase = ids.base(t);
+        part.indexMask = ids.indexMask();
         part.tileMask = walk.tileMask();
     }
     // The first pieces are walked on this thread alone; what is left is handed

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "extract/common/part_ids.h"
 #include "extract/tracking/track_walker.h"
 #include "extract/tracking/walk_exchange.h"
 #include "support/huge_pages.h"
@@ -31,29 +32,25 @@ Buffer<T>* sizeWhole(Buffer<T>& buffer, std::size_t size, Buffer<T>& fresh) {
     return &fresh;
 }
 
-// Cell pieces a walk on several threads first walks on one (about a millisecond).
-constexpr std::size_t kCellsAlone = 8192;
-
 }  // namespace
 
 Surface walkTogether(const Volume& volume, const TrackWorker& worker, const GridEdge& seed, TableKind table,
                      int threads, Clock::time_point start) {
     SparseBlocks blocks(volume.dims(), threads, SparseBlocks::VertexSlots::Lazy);
     std::vector<Walker> walkers(static_cast<std::size_t>(threads));
-    int tagBits = 0;
-    while ((1 << tagBits) < threads) ++tagBits;
-    const int idShift = 32 - tagBits;
+    const PartIds ids(threads);
+    const int idShift = ids.shift;
     for (int t = 0; t < threads; ++t) {
         walkers[std::size_t(t)].thread = t;
-        walkers[std::size_t(t)].idBase = static_cast<std::uint32_t>(std::uint64_t(t) << idShift);
-        walkers[std::size_t(t)].indexMask = static_cast<std::uint32_t>((std::uint64_t(1) << idShift) - 1);
+        walkers[std::size_t(t)].idBase = ids.base(t);
+        walkers[std::size_t(t)].indexMask = ids.indexMask();
         walkers[std::size_t(t)].tileMask = blocks.tileMask();
     }
     // The first cells are walked on this thread alone: a small surface is done
     // before more threads would pay for starting. What is left is handed to the
     // walkers of the queued pieces' tiles.
     queueSeed(volume, seed, worker, blocks, walkers[0]);
-    worker.advance(blocks, nullptr, walkers[0], kCellsAlone);
+    worker.advance(blocks, nullptr, walkers[0], kPiecesAlone);
     if (walkers[0].queue.empty()) {
         Surface surface = finishedSurface(walkers[0], table);
         surface.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();

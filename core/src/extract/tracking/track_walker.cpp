@@ -22,6 +22,7 @@
 // compare-and-swap (track_together.cpp). The threads' parts are joined into one
 // mesh at the end.
 #include "extract/tracking/track_walker.h"
+#include "extract/common/part_ids.h"
 
 #include <algorithm>
 #include <array>
@@ -393,10 +394,7 @@ private:
     // another thread recorded one first, the vertex is given back and its id used.
     template <bool Shared>
     std::uint32_t newVertex(Walker& w, MeshAppender& out, std::uint32_t& slot, const int at[3], int edge) const {
-        const std::size_t index = out.vertices.size();
-        if (index >= w.indexMask)
-            throw InputError("surface too large: more than " + std::to_string(w.indexMask) + " vertices per thread");
-        const auto id = static_cast<std::uint32_t>(w.idBase | index);
+        const std::uint32_t id = partVertexId(w.idBase, w.indexMask, out.vertices.size());
         const auto& o = walk_.edgeOrigin[edge];
         const GridEdge e{at[0] + o[0], at[1] + o[1], at[2] + o[2], walk_.edgeAxis[edge]};
         Vertex& v = *out.vertices.extend(1);

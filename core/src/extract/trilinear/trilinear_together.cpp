@@ -10,30 +10,23 @@
 #include <cstdint>
 #include <vector>
 
+#include "extract/common/part_ids.h"
 #include "extract/trilinear/trilinear_walker.h"
 #include "support/parallel.h"
 
 namespace isotrack::detail {
-namespace {
-
-// Pieces a walk on several threads first walks on one, as the consistent
-// table's: a small surface is done before more threads would pay for starting.
-constexpr std::size_t kPiecesAlone = 8192;
-
-}  // namespace
 
 Mesh walkTrilinearTogether(const Volume& volume, const TrilinearWalker& walker, const GridEdge& seed, int threads,
                            std::vector<std::size_t>& piecesByThread) {
     SparseBlocks blocks(volume.dims(), threads);
     std::vector<TrilinearPart> parts(static_cast<std::size_t>(threads));
-    int tagBits = 0;
-    while ((1 << tagBits) < threads) ++tagBits;
-    const int idShift = 32 - tagBits;
+    const PartIds ids(threads);
+    const int idShift = ids.shift;
     for (int t = 0; t < threads; ++t) {
         TrilinearPart& part = parts[std::size_t(t)];
         part.thread = t;
-        part.idBase = static_cast<std::uint32_t>(std::uint64_t(t) << idShift);
-        part.indexMask = static_cast<std::uint32_t>((std::uint64_t(1) << idShift) - 1);
+        part.idBase = ids.base(t);
+        part.indexMask = ids.indexMask();
         part.shared = true;
         part.tileMask = blocks.tileMask();
     }

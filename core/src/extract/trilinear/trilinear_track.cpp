@@ -34,6 +34,7 @@
 #include <cmath>
 
 #include "extract/common/edge_vertex.h"
+#include "extract/common/part_ids.h"
 #include "extract/common/sparse_blocks.h"
 #include "extract/measure/surface_measure.h"
 #include "extract/trilinear/trilinear_march.h"
@@ -302,10 +303,7 @@ private:
 
     // The id the part's next vertex will have.
     static std::uint32_t newId(const TrilinearPart& part) {
-        const std::size_t index = part.mesh.vertices.size();
-        if (index >= part.indexMask)
-            throw InputError("surface too large: more than " + std::to_string(part.indexMask) + " vertices per thread");
-        return static_cast<std::uint32_t>(part.idBase | index);
+        return partVertexId(part.idBase, part.indexMask, part.mesh.vertices.size());
     }
 
     // A vertex inside the cell: the mean of the vertices on the cube edges
