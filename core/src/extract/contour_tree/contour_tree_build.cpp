@@ -79,9 +79,16 @@ constexpr std::uint32_t kPrefetchDistance = 16;
 // component of the one neighbour its class names, or none; only candidates
 // read their whole neighbourhood. The forest (by sample) needs no start: each
 // sample's entry is written when the sweep reaches it, before it is read.
+//
+// The trunk (Gueunet et al.'s FTM): once the sweep has met its last extremum
+// (lastExtremum, the last sample of class 0 in its order) and all it has swept
+// is one component, every later sample joins that component and nothing else,
+// so each rank links to the next one swept, and the rest of the sweep is a
+// write in sequence, without the forest or the samples' neighbours.
 template <bool Up, class T>
 void sweep(const T* values, const Dims& dims, const Slice<std::uint32_t>& order, const Buffer<std::uint8_t>& classes,
-           const Slice<std::uint32_t>& forest, const Slice<std::uint32_t>& link, const BuildProgress& progress) {
+           std::uint32_t lastExtremum, const Slice<std::uint32_t>& forest, const Slice<std::uint32_t>& link,
+           const BuildProgress& progress) {
     const auto n = std::uint32_t(order.size());
     const SampleOrder<T> cmp{values};
     const Neighbours neighbours{dims};
@@ -95,7 +102,10 @@ void sweep(const T* values, const Dims& dims, const Slice<std::uint32_t>& order,
     auto classOf = [&](std::uint32_t s) { return std::uint8_t(Up ? classes[s] & 7u : classes[s] >> 3); };
     auto rankAt = [&](std::uint32_t step) { return Up ? n - 1 - step : step; };
     std::fill(link.begin(), link.end(), kNoSample);
+    std::uint32_t components = 0;  // roots of the forest so far
+    bool extremaMet = lastExtremum == kNoSample;
     auto meet = [&](std::uint32_t k, std::uint32_t& root, std::uint32_t r) {
+        --components;
         link[forest[r] & ~kRootBit] = k;
         const bool keep = linkPriority(root) > linkPriority(r);
         const std::uint32_t winner = keep ? root : r;
@@ -115,19 +125,55 @@ void sweep(const T* values, const Dims& dims, const Slice<std::uint32_t>& order,
         const std::uint32_t k = rankAt(step), s = order[k];
         const std::uint8_t c = classOf(s);
         forest[s] = k | kRootBit;
+        ++components;
+        extremaMet = extremaMet || s == lastExtremum;
         std::uint32_t root = s;
-        if (c == 0) continue;
-        if (c != kCandidate) {
+        if (c == kCandidate) {
+            neighbours.forEach<Up ? 6 : 18>(s, [&](std::uint32_t m) {
+                if (Up ? !cmp.below(s, m) : !cmp.below(m, s)) return;  // not swept yet
+                const std::uint32_t r = findRoot(forest, m);
+                if (r == root) return;
+                meet(k, root, r);
+            });
+        } else if (c != 0) {
             meet(k, root, findRoot(forest, std::uint32_t(std::int64_t(s) + offset[c])));
-            continue;
         }
-        neighbours.forEach<Up ? 6 : 18>(s, [&](std::uint32_t m) {
-            if (Up ? !cmp.below(s, m) : !cmp.below(m, s)) return;  // not swept yet
-            const std::uint32_t r = findRoot(forest, m);
-            if (r == root) return;
-            meet(k, root, r);
-        });
+        if (extremaMet && components == 1) {  // the trunk: rank k is the one component's newest
+            for (++step; step < n; ++step) {
+                progress.step(step);
+                link[rankAt(step - 1)] = rankAt(step);
+            }
+            return;
+        }
     }
+}
+
+// The sample each sweep meets last among its extrema (class 0): the lowest in
+// the order with no face neighbour above (join), the highest with none of its
+// 18 below (split); kNoSample for a sweep with none. A scan of the classes in
+// parts on `threads` threads, the extrema's values compared in the order.
+template <class T>
+std::pair<std::uint32_t, std::uint32_t> lastExtrema(const T* values, const Buffer<std::uint8_t>& classes, int threads) {
+    const auto n = std::uint32_t(classes.size());
+    const SampleOrder<T> cmp{values};
+    const int parts = int(std::clamp<std::uint32_t>(n >> 20, 1, std::uint32_t(std::max(threads, 1))));
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> found(std::size_t(parts), {kNoSample, kNoSample});
+    parallelFor(parts, parts, [&](int part) {
+        auto& [join, split] = found[std::size_t(part)];
+        const std::uint32_t begin = std::uint32_t(std::uint64_t(n) * part / parts);
+        const std::uint32_t end = std::uint32_t(std::uint64_t(n) * (part + 1) / parts);
+        for (std::uint32_t s = begin; s < end; ++s) {
+            const std::uint8_t c = classes[s];
+            if ((c & 7u) == 0 && (join == kNoSample || cmp.below(s, join))) join = s;
+            if ((c >> 3) == 0 && (split == kNoSample || cmp.below(split, s))) split = s;
+        }
+    });
+    std::pair<std::uint32_t, std::uint32_t> last{kNoSample, kNoSample};
+    for (const auto& [join, split] : found) {
+        if (join != kNoSample && (last.first == kNoSample || cmp.below(join, last.first))) last.first = join;
+        if (split != kNoSample && (last.second == kNoSample || cmp.below(last.second, split))) last.second = split;
+    }
+    return last;
 }
 
 // The merge's state of a sample, a byte: the join tree's arcs above it (at
@@ -281,6 +327,7 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
     progress.start(ContourTreeProgress::Phase::Sweeping, 2 * std::uint64_t(n));  // both sweeps count
     Buffer<std::uint8_t> classes = classifySamples(volume, threads, progress);
     visitSamples(volume, [&](const auto* values) {
+        const std::pair<std::uint32_t, std::uint32_t> last = lastExtrema(values, classes, threads);
         // Together, each thread counts its tree's arcs where its forest was: the
         // join tree's in the first n bytes of spare, the split tree's at half.
         auto count = [&](const Slice<std::uint32_t>& link, std::size_t at, std::uint8_t unit) {
@@ -290,12 +337,12 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
             countLinks(link, counts, unit);
         };
         auto join = [&] {
-            sweep<true>(values, dims, tree.order, classes, sliceOf<std::uint32_t>(sorted.spare, 0, n), joinDown,
-                        progress);
+            sweep<true>(values, dims, tree.order, classes, last.first, sliceOf<std::uint32_t>(sorted.spare, 0, n),
+                        joinDown, progress);
             count(joinDown, 0, 1);
         };
         auto split = [&] {  // on one thread, in the join forest's place after it
-            sweep<false>(values, dims, tree.order, classes,
+            sweep<false>(values, dims, tree.order, classes, last.second,
                          sliceOf<std::uint32_t>(sorted.spare, together ? half : 0, n), splitUp, progress);
             count(splitUp, half, kOneBelow);
         };

@@ -312,3 +312,54 @@ TEST_CASE("flexible isosurfaces: a surface followed along its arc to its own iso
     // Above the volume's maximum every surface vanishes.
     for (const std::size_t arc : arcs) CHECK(followArc(tree, arc, volume.range()[1] + 1) == tree.arcs.size());
 }
+
+namespace {
+
+// Gaussian bumps of the given heights at the given centres, sigma 3 samples;
+// negated, pits.
+Volume bumps(const Dims& dims, const std::vector<std::array<double, 4>>& centresAndHeights, bool pits) {
+    Volume volume(dims, ScalarType::Float32);
+    for (int z = 0; z < dims[2]; ++z)
+        for (int y = 0; y < dims[1]; ++y)
+            for (int x = 0; x < dims[0]; ++x) {
+                double v = 0;
+                for (const auto& [cx, cy, cz, height] : centresAndHeights) {
+                    const double d2 = (x - cx) * (x - cx) + (y - cy) * (y - cy) + (z - cz) * (z - cz);
+                    v += height * std::exp(-d2 / 9.0);
+                }
+                volume.setValue(x, y, z, pits ? -v : v);
+            }
+    return volume;
+}
+
+}  // namespace
+
+TEST_CASE("contour tree: an extremum swept after its sweep's components have become one", "[core][contour-tree]") {
+    // Two bumps 6 samples apart meet at about 0.74, above the third's peak of 0.5:
+    // the join sweep has one component from there until it meets that peak, and
+    // only after it does every later sample join the one component (the sweep's
+    // trunk). As pits, the same for the split sweep.
+    const std::vector<std::array<double, 4>> three = {{8, 12, 12, 1.0}, {14, 12, 12, 1.0}, {31, 12, 12, 0.5}};
+    for (const bool pits : {false, true}) {
+        INFO((pits ? "pits" : "bumps"));
+        const Volume volume = bumps({40, 24, 24}, three, pits);
+        for (const int threads : {1, 2}) {
+            const ContourTree tree = computeContourTree(volume, threads);
+            CHECK(tree.arcsAt(pits ? -0.25 : 0.25).size() == 2);
+        }
+        requireArcsCountSurfaces(volume, isovalues(volume, 50));
+        const ContourTree tree = computeContourTree(volume, 2);
+        for (const double v : isovalues(volume, 8)) requireTreeSurfacesEqualAll(volume, tree, v);
+    }
+    // Random bumps: the sweeps' components become one at many different ranks.
+    for (unsigned seed = 1; seed <= 6; ++seed) {
+        std::mt19937 random(seed);
+        std::uniform_real_distribution<double> at(2.0, 26.0), height(0.2, 1.0);
+        std::vector<std::array<double, 4>> some(2 + seed % 4);
+        for (auto& bump : some) bump = {at(random), at(random), at(random) * 0.8, height(random)};
+        for (const bool pits : {false, true}) {
+            INFO("seed " << seed << (pits ? ", pits" : ", bumps"));
+            requireArcsCountSurfaces(bumps({28, 28, 22}, some, pits), isovalues(bumps({28, 28, 22}, some, pits), 50));
+        }
+    }
+}
