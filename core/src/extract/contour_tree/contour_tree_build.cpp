@@ -101,7 +101,9 @@ void sweep(const T* values, const Dims& dims, const Slice<std::uint32_t>& order,
     }
     auto classOf = [&](std::uint32_t s) { return std::uint8_t(Up ? classes[s] & 7u : classes[s] >> 3); };
     auto rankAt = [&](std::uint32_t step) { return Up ? n - 1 - step : step; };
-    std::fill(link.begin(), link.end(), kNoSample);
+    // Each rank but the last gets its link from the next sample that meets its
+    // component (all of them are one component in the end), so link needs no start.
+    link[rankAt(n - 1)] = kNoSample;
     std::uint32_t components = 0;  // roots of the forest so far
     bool extremaMet = lastExtremum == kNoSample;
     auto meet = [&](std::uint32_t k, std::uint32_t& root, std::uint32_t r) {
@@ -322,6 +324,16 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
     const Slice<std::uint32_t> joinDown = sliceOf<std::uint32_t>(sorted.sorted, half, n);
     const Pages splitPages(half);
     const Slice<std::uint32_t> splitUp = sliceOf<std::uint32_t>(splitPages, 0, n);
+    // The split tree's pages are the sweeps' only fresh ones: the kernel zeroes
+    // each page when it is first written, which takes as long here as the
+    // split sweep's own work on a smooth field, so they are written now, on all
+    // the build's threads, rather than on the split sweep's alone.
+    const int touchParts = std::max(1, std::min(threads, int(n >> 20) + 1));
+    parallelFor(touchParts, touchParts, [&](int part) {
+        const std::size_t begin = std::size_t(n) * std::size_t(part) / std::size_t(touchParts);
+        const std::size_t end = std::size_t(n) * std::size_t(part + 1) / std::size_t(touchParts);
+        std::fill(splitUp.begin() + begin, splitUp.begin() + end, kNoSample);
+    });
     const bool together = threads > 1;  // the two sweeps at once, each with a forest of its own
     if (!together) sorted.spare.shrink(half);
     progress.start(ContourTreeProgress::Phase::Sweeping, 2 * std::uint64_t(n));  // both sweeps count
