@@ -237,10 +237,45 @@ void mergeTrees(const Slice<std::uint32_t>& joinDown, const Slice<std::uint32_t>
         }
     };
     std::uint32_t remaining = n;
+    // A regular sample peeled leaves the next one on its chain a leaf, which
+    // the stack would give back at once: the walk goes on along the chain
+    // here, sample after sample, until it reaches a node or a sample that is
+    // no leaf, as the stack would have, without it.
+    auto walkChain = [&](std::uint32_t s, const Slice<std::uint32_t>& link, std::uint8_t unit, std::uint8_t leafState) {
+        AugmentedTree::Piece& chain = tree.pieces[tree.arcOf[s]];
+        const std::uint32_t piece = tree.arcOf[s];
+        std::uint32_t key = chain.key;
+        for (;;) {
+            const std::uint32_t t = liveLink(link, state, s);
+            __builtin_prefetch(&link[t]);
+            state[t] = std::uint8_t(state[t] - unit);
+            state[s] = kGone;
+            --remaining;
+            progress.step(n - remaining);
+            if (tree.arcOf[t] == kNoSample) {  // a node: the chain ends there
+                (t < s ? chain.lower : chain.upper) = t;
+                chain.key = key;
+                return t;
+            }
+            tree.arcOf[t] = piece;
+            key = std::min(key, tree.order[t]);
+            if (state[t] != leafState || remaining <= 1) {
+                chain.key = key;
+                return t;
+            }
+            s = t;
+        }
+    };
     while (!leaves.empty() && remaining > 1) {
         const std::uint32_t s = leaves.back();
         leaves.pop_back();
         const std::uint8_t here = state[s];
+        if (tree.arcOf[s] != kNoSample && (here == kOneBelow || here == 1)) {  // on a chain
+            const std::uint32_t t =
+                here == kOneBelow ? walkChain(s, joinDown, 1, kOneBelow) : walkChain(s, splitUp, kOneBelow, 1);
+            if (isLeaf(state[t])) leaves.push_back(t);
+            continue;
+        }
         std::uint32_t t;
         if (here == kOneBelow) {  // a maximum of what is left: its edge goes down the join tree
             t = liveLink(joinDown, state, s);
