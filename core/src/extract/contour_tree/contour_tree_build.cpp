@@ -359,18 +359,18 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
     const Slice<std::uint32_t> joinDown = sliceOf<std::uint32_t>(sorted.sorted, half, n);
     const Pages splitPages(half);
     const Slice<std::uint32_t> splitUp = sliceOf<std::uint32_t>(splitPages, 0, n);
+    const bool together = threads > 1;  // the two sweeps at once, each with a forest of its own
+    if (!together) sorted.spare.shrink(half);
     // The split tree's pages are the sweeps' only fresh ones: the kernel zeroes
     // each page when it is first written, which takes as long here as the
-    // split sweep's own work on a smooth field, so they are written now, on all
-    // the build's threads, rather than on the split sweep's alone.
-    const int touchParts = std::max(1, std::min(threads, int(n >> 20) + 1));
+    // split sweep's own work on a smooth field, so on several threads they are
+    // written now, on all of them, rather than on the split sweep's alone.
+    const int touchParts = together ? std::min(threads, int(n >> 20) + 1) : 0;
     parallelFor(touchParts, touchParts, [&](int part) {
         const std::size_t begin = std::size_t(n) * std::size_t(part) / std::size_t(touchParts);
         const std::size_t end = std::size_t(n) * std::size_t(part + 1) / std::size_t(touchParts);
         std::fill(splitUp.begin() + begin, splitUp.begin() + end, kNoSample);
     });
-    const bool together = threads > 1;  // the two sweeps at once, each with a forest of its own
-    if (!together) sorted.spare.shrink(half);
     progress.start(ContourTreeProgress::Phase::Sweeping, 2 * std::uint64_t(n));  // both sweeps count
     Buffer<std::uint8_t> classes = classifySamples(volume, threads, progress);
     visitSamples(volume, [&](const auto* values) {
