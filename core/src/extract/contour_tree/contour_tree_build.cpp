@@ -187,7 +187,9 @@ bool isLeaf(std::uint8_t state) { return !isGone(state) && (state & 7u) + (state
 
 // Follows link past removed samples, shortening the path on the way.
 std::uint32_t liveLink(const Slice<std::uint32_t>& link, const Slice<std::uint8_t>& state, std::uint32_t s) {
-    std::uint32_t t = link[s];
+    const std::uint32_t next = link[s];
+    if (next == kNoSample || !isGone(state[next])) return next;  // most often: nothing to skip or shorten
+    std::uint32_t t = link[next];
     while (t != kNoSample && isGone(state[t])) t = link[t];
     for (std::uint32_t u = s; u != t;) u = std::exchange(link[u], t);  // the whole path points past them now
     return t;
