@@ -20,9 +20,13 @@ void showProgress(const ContourTreeProgress& progress) {
 
 }  // namespace
 
-ContourTree buildContourTree(const Volume& volume, int threads) {
-    if (!isatty(fileno(stderr))) return computeContourTree(volume, threads);
+ContourTree buildContourTree(const Volume& volume, int threads, std::array<double, 4>* phaseSeconds) {
     ContourTreeProgress progress;
+    if (!isatty(fileno(stderr))) {
+        ContourTree tree = computeContourTree(volume, threads, &progress);
+        if (phaseSeconds) *phaseSeconds = progress.seconds;
+        return tree;
+    }
     std::mutex mutex;
     std::condition_variable wake;
     bool finished = false;
@@ -44,6 +48,7 @@ ContourTree buildContourTree(const Volume& volume, int threads) {
     try {
         ContourTree tree = computeContourTree(volume, threads, &progress);
         stop();
+        if (phaseSeconds) *phaseSeconds = progress.seconds;
         return tree;
     } catch (...) {
         stop();

@@ -15,6 +15,7 @@
 // Each arc keeps its regular samples in ascending order, so a seed edge of its
 // surface at any isovalue is found by a binary search, and tracking the seeds
 // gives every surface without a scan of the volume.
+#include <array>
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
@@ -80,6 +81,10 @@ struct ContourTreeProgress {
     std::atomic<Phase> phase{Phase::Sorting};
     std::atomic<std::uint64_t> done{0}, total{0};
     const std::atomic<bool>* cancel = nullptr;  // when another thread sets it: Cancelled
+    // Each phase's wall time in seconds (Sorting, Sweeping, Merging, Arcs),
+    // written by the building thread as the phase ends: read it once the build
+    // has returned.
+    std::array<double, 4> seconds{};
 
     // The fraction of the whole build, from the phases' typical shares of its time.
     double fraction() const;

@@ -10,6 +10,7 @@
 //
 // The passes of computeContourTree, shared by its files.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <new>
@@ -188,8 +189,16 @@ class BuildProgress {
 public:
     static constexpr std::uint32_t kStride = 1u << 16;
     explicit BuildProgress(ContourTreeProgress* progress) : progress_(progress) {}
+    // Moves to `phase`, noting how long the one before took (on the building
+    // thread only).
     void start(ContourTreeProgress::Phase phase, std::uint64_t total) const {
         if (!progress_) return;
+        const auto now = std::chrono::steady_clock::now();
+        const auto before = std::size_t(progress_->phase.load(std::memory_order_relaxed));
+        if (phaseStarted_ != std::chrono::steady_clock::time_point{} && before < progress_->seconds.size()) {
+            progress_->seconds[before] = std::chrono::duration<double>(now - phaseStarted_).count();
+        }
+        phaseStarted_ = now;
         progress_->total.store(0, std::memory_order_relaxed);
         progress_->done.store(0, std::memory_order_relaxed);
         progress_->phase.store(phase, std::memory_order_relaxed);
@@ -236,6 +245,7 @@ private:
     }
 
     ContourTreeProgress* progress_;
+    mutable std::chrono::steady_clock::time_point phaseStarted_{};
 };
 
 // Sorts items by key(item), a 32-bit key each, read once, stably (equal keys

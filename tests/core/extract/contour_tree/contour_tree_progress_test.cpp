@@ -35,9 +35,14 @@ TEST_CASE("a watched build goes through its phases to Done and builds the same t
             std::this_thread::sleep_for(std::chrono::microseconds(50));
         }
     });
+    const auto started = std::chrono::steady_clock::now();
     const ContourTree watched = computeContourTree(volume, 2, &progress);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     finished = true;
     watcher.join();
+    // Each phase timed, together within the build's own time.
+    CHECK(std::all_of(progress.seconds.begin(), progress.seconds.end(), [](double s) { return s > 0.0; }));
+    CHECK(progress.seconds[0] + progress.seconds[1] + progress.seconds[2] + progress.seconds[3] <= wall);
     CHECK(progress.phase.load() == ContourTreeProgress::Phase::Done);
     CHECK(progress.fraction() == 1.0);
     CHECK(std::is_sorted(phases.begin(), phases.end()));
