@@ -5,7 +5,8 @@
 # that comes and goes weighs on them alike. The load average is printed
 # before and after; the table means little above 1.
 #
-# Columns: the build as the tree reports it ("in X ms"), per sample; the whole
+# Columns: the build as the tree reports it ("in X ms"), per sample; its
+# phases' medians (the "build phases:" line; – for a binary without it); the whole
 # process's wall and CPU (user + system, both threads), field or file reading
 # included; the peak RSS, and what it holds beyond the volume per sample.
 #
@@ -33,8 +34,8 @@ median() { sort -g | awk '{v[NR] = $1} END {print v[int((NR + 1) / 2)]}'; }
 
 echo "load before: $(uptime | sed 's/.*load average: //')"
 echo
-echo "| binary | volume | samples | nodes / arcs | build (median of $runs) | ns/sample | process wall, CPU | peak RSS | beyond the volume |"
-echo "|---|---|---|---|---|---|---|---|---|"
+echo "| binary | volume | samples | nodes / arcs | build (median of $runs) | ns/sample | sort / sweeps / merge / arcs, ms | process wall, CPU | peak RSS | beyond the volume |"
+echo "|---|---|---|---|---|---|---|---|---|---|"
 for volume in "${volumes[@]}"; do
     if [ -e "$volume" ]; then
         read -r samples bytes < <("${binaries[0]}" info --volume "$volume" --json | /usr/bin/python3 -c '
@@ -54,6 +55,12 @@ print(info["samples"], info["samples"] * size[info["scalar_type"]])')
             sed -n 's/.* contour tree of \([0-9]*\) nodes, \([0-9]*\) arcs .* in \([0-9.]*\) ms (simplified.*/\1 \2 \3/p' \
                 "$work/out" > "$work/tree"
             read -r nodes arcs ms < "$work/tree"
+            # the build's phases (binaries that print them), a file each
+            sed -n 's/^build phases: sort \([0-9.]*\) ms, sweeps \([0-9.]*\) ms, merge \([0-9.]*\) ms, arcs \([0-9.]*\) ms/\1 \2 \3 \4/p' \
+                "$work/out" | while read -r sort sweeps merge arcs; do
+                echo "$sort" >> "$work/sort.$b"; echo "$sweeps" >> "$work/sweeps.$b"
+                echo "$merge" >> "$work/merge.$b"; echo "$arcs" >> "$work/arcs.$b"
+            done
             read -r wall user sys kib < "$work/time"
             echo "$ms" >> "$work/ms.$b"
             echo "$wall" >> "$work/wall.$b"
@@ -65,12 +72,16 @@ print(info["samples"], info["samples"] * size[info["scalar_type"]])')
     for b in "${!binaries[@]}"; do
         ms=$(median < "$work/ms.$b")
         kib=$(median < "$work/kib.$b")
-        printf '| %s | %s | %s | %s | %.2f s | %.0f | %.2f s, %.2f s | %.0f MB | %.1f B/sample |\n' \
+        phases="–"
+        if [ -s "$work/sort.$b" ]; then
+            phases=$(for p in sort sweeps merge arcs; do median < "$work/$p.$b"; done | xargs printf '%.0f / %.0f / %.0f / %.0f')
+        fi
+        printf '| %s | %s | %s | %s | %.2f s | %.0f | %s | %.2f s, %.2f s | %.0f MB | %.1f B/sample |\n' \
             "${binaries[$b]#"$repo"/}" \
             "$(basename "$volume")" "$samples" "$(cat "$work/shape.$b")" "$(echo "$ms / 1000" | bc -l)" \
-            "$(echo "$ms * 1000000 / $samples" | bc -l)" "$(median < "$work/wall.$b")" "$(median < "$work/cpu.$b")" \
+            "$(echo "$ms * 1000000 / $samples" | bc -l)" "$phases" "$(median < "$work/wall.$b")" "$(median < "$work/cpu.$b")" \
             "$(echo "$kib / 1000" | bc -l)" "$(echo "($kib * 1024 - $bytes) / $samples" | bc -l)"
-        rm -f "$work/ms.$b" "$work/wall.$b" "$work/cpu.$b" "$work/kib.$b"
+        rm -f "$work/ms.$b" "$work/wall.$b" "$work/cpu.$b" "$work/kib.$b" "$work/"{sort,sweeps,merge,arcs}".$b"
     done
 done
 echo
