@@ -59,38 +59,79 @@ Buffer<std::uint32_t> findNodes(const AugmentedTree& tree, std::vector<Buffer<st
     return nodeRanks;
 }
 
-// The nodes, numbered by sample index; marked in arcOf.
-void numberNodes(const Volume& volume, AugmentedTree& tree, Buffer<std::uint32_t>& nodeRanks, ContourTree& out) {
-    sortByKey(nodeRanks, [&](std::uint32_t k) { return tree.order[k]; });
+// A set of sample indices as bits, with a count of the members before each
+// word: a member's position among the members in index order, found without
+// sorting them (the nodes and the arcs, a million of each on the CT).
+class IndexRanks {
+public:
+    explicit IndexRanks(std::uint32_t n) : words_(std::size_t(n) / 64 + 1, 0), before_(words_.size() + 1, 0) {}
+    void add(std::uint32_t s) { words_[s >> 6] |= std::uint64_t(1) << (s & 63u); }
+    // Once every member is added.
+    void count() {
+        for (std::size_t w = 0; w < words_.size(); ++w) {
+            before_[w + 1] = before_[w] + std::uint32_t(__builtin_popcountll(words_[w]));
+        }
+    }
+    std::uint32_t rankOf(std::uint32_t s) const {
+        const std::uint64_t below = words_[s >> 6] & ((std::uint64_t(1) << (s & 63u)) - 1);
+        return before_[s >> 6] + std::uint32_t(__builtin_popcountll(below));
+    }
+
+private:
+    Buffer<std::uint64_t> words_;
+    Buffer<std::uint32_t> before_;
+};
+
+// The nodes, numbered by sample index (their ranks in parts on `parts`
+// threads); marked in arcOf.
+void numberNodes(const Volume& volume, AugmentedTree& tree, const Buffer<std::uint32_t>& nodeRanks, std::size_t parts,
+                 ContourTree& out) {
+    IndexRanks number(std::uint32_t(tree.order.size()));
+    for (const std::uint32_t k : nodeRanks) number.add(tree.order[k]);
+    number.count();
     out.nodes.resize(nodeRanks.size());
     visitSamples(volume, [&](const auto* values) {
-        for (std::uint32_t i = 0; i < nodeRanks.size(); ++i) {
-            const std::uint32_t k = nodeRanks[i];
-            ContourTree::Node& node = out.nodes[i];
-            node.sample = tree.order[k];
-            node.value = double(values[node.sample]);
-            tree.arcOf[k] = i | kNodeBit;
-        }
+        inRanges(std::uint32_t(nodeRanks.size()), parts, [&](std::size_t, std::uint32_t begin, std::uint32_t end) {
+            for (std::uint32_t j = begin; j < end; ++j) {
+                const std::uint32_t k = nodeRanks[j], sample = tree.order[k], i = number.rankOf(sample);
+                ContourTree::Node& node = out.nodes[i];
+                node.sample = sample;
+                node.value = double(values[sample]);
+                tree.arcOf[k] = i | kNodeBit;
+            }
+        });
     });
 }
 
 // The arcs: chains first, by their smallest sample, then the edges between
-// two nodes, by the sample peeled (the pieces by key), and each node's
-// degrees counted. Returns the piece of each arc.
+// two nodes, by the sample peeled (the pieces by key; both kinds of key are
+// unique), and each node's degrees counted. Returns the piece of each arc.
 Buffer<std::uint32_t> numberArcs(AugmentedTree& tree, ContourTree& out) {
     const auto count = std::uint32_t(tree.pieces.size());
-    Buffer<std::uint32_t> byKey(count);
-    for (std::uint32_t p = 0; p < count; ++p) byKey[p] = p;
-    sortByKey(byKey, [&](std::uint32_t p) { return tree.pieces[p].key; });
+    const auto n = std::uint32_t(tree.order.size());
+    IndexRanks chains(n), edges(n);
+    for (const AugmentedTree::Piece& piece : tree.pieces) {
+        if (piece.key & AugmentedTree::kEdgeBit) {
+            edges.add(piece.key & AugmentedTree::kIndexMask);
+        } else {
+            chains.add(piece.key);
+        }
+    }
+    chains.count(), edges.count();
     auto node = [&](std::uint32_t k) { return tree.arcOf[k] & ~kNodeBit; };
+    Buffer<std::uint32_t> pieceOfArc(count);
     out.arcs.resize(count);
-    for (std::uint32_t a = 0; a < count; ++a) {
-        const AugmentedTree::Piece& piece = tree.pieces[byKey[a]];
+    for (std::uint32_t p = 0; p < count; ++p) {
+        const AugmentedTree::Piece& piece = tree.pieces[p];
+        const std::uint32_t a = (piece.key & AugmentedTree::kEdgeBit)
+                                    ? tree.chains + edges.rankOf(piece.key & AugmentedTree::kIndexMask)
+                                    : chains.rankOf(piece.key);
+        pieceOfArc[a] = p;
         out.arcs[a].lower = node(piece.lower), out.arcs[a].upper = node(piece.upper);
     }
     Buffer<AugmentedTree::Piece>().swap(tree.pieces);
     for (const ContourTree::Arc& arc : out.arcs) ++out.nodes[arc.lower].up, ++out.nodes[arc.upper].down;
-    return byKey;
+    return pieceOfArc;
 }
 
 // The arcs' regular samples, bucketed by piece in ascending order; the
@@ -143,7 +184,7 @@ ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented,
     const bool large = augmented.arcOf.size() >= (std::size_t(1) << 16);
     std::vector<Buffer<std::uint32_t>> sizes(large ? std::size_t(std::clamp(threads, 1, 4)) : 1);
     Buffer<std::uint32_t> nodeRanks = findNodes(augmented, sizes, progress);
-    numberNodes(volume, augmented, nodeRanks, out);
+    numberNodes(volume, augmented, nodeRanks, sizes.size(), out);
     Buffer<std::uint32_t>().swap(nodeRanks);
     fillSamples(augmented, chains, numberArcs(augmented, out), sizes, out, progress);
     augmented.arcOf = {}, augmented.order = {};
