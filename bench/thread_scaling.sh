@@ -5,7 +5,8 @@
 # it, median of RUNS) on sphere:256, gyroid:256, the CT and sphere:512, each
 # at THREADS (default 1 2 4 8 16), with each figure's speed-up over one thread
 # and the scaling goals checked: no thread count slower than the one before,
-# track at 16 threads at least 6x one thread, the tree at 16 at least 4x at 2.
+# track at 16 threads at least 6x one thread, the tree at 16 at least 4x at 2;
+# then the tree's phases at each thread count (which of them scale).
 # Wall clock: only as good as the machine is idle (the load is printed).
 #
 # Usage: bench/thread_scaling.sh ISOTRACK CT OUT.md [THREADS...]
@@ -27,6 +28,7 @@ median() { sort -g | awk '{v[NR] = $1} END {print v[int((NR + 1) / 2)]}'; }
 
 # rows.txt: NAME<TAB>UNIT<TAB>figure at each thread count (ms)
 : > "$work/rows.txt"
+: > "$work/phases.txt"
 skull=(bench --volume "$ct" --iso 400.5 --seed 122,122,160 --repeat 11 --threads "${threads[@]}")
 "$isotrack" "${skull[@]}" --methods track all mc > "$work/bench.txt"
 "$isotrack" "${skull[@]}" --methods track --table trilinear > "$work/trilinear.txt"
@@ -45,14 +47,23 @@ for volume in sphere:256 gyroid:256 "$ct" sphere:512; do
     n=$runs
     [[ $volume == sphere:512 ]] && n=1
     figures=""
+    phases=""
     for t in "${threads[@]}"; do
+        : > "$work/runs.txt"
         for ((r = 0; r < n; ++r)); do
             # "sphere:256: contour tree of 16 nodes, 15 arcs (15 kept) in 827.133 ms ..."
-            "$isotrack" tree "${source[@]}" --threads "$t" | sed -n 's/^[^(]*([^)]*) in \([0-9.]*\) ms.*/\1/p'
-        done | median > "$work/m.txt"
-        figures+="$(cat "$work/m.txt") "
+            # "build phases: sort 206.1 ms, sweeps 171.9 ms, merge 91.0 ms, arcs 69.2 ms"
+            "$isotrack" tree "${source[@]}" --threads "$t" > "$work/tree.txt"
+            printf '%s %s\n' "$(sed -n 's/^[^(]*([^)]*) in \([0-9.]*\) ms.*/\1/p' "$work/tree.txt")" \
+                "$(sed -n 's/^build phases: sort \([0-9.]*\) ms, sweeps \([0-9.]*\) ms, merge \([0-9.]*\) ms, arcs \([0-9.]*\) ms/\1 \2 \3 \4/p' \
+                    "$work/tree.txt")" >> "$work/runs.txt"
+        done
+        figures+="$(cut -d' ' -f1 "$work/runs.txt" | median) "
+        # each phase's median, as sort/sweeps/merge/arcs
+        phases+="$(for f in 2 3 4 5; do cut -d' ' -f"$f" "$work/runs.txt" | median; done | xargs printf '%.0f/%.0f/%.0f/%.0f') "
     done
     printf 'tree, %s\tms\t%s\n' "$name" "$figures" >> "$work/rows.txt"
+    printf '%s\t%s\n' "$name" "$phases" >> "$work/phases.txt"
 done
 
 {
@@ -75,6 +86,16 @@ done
             printf "%s %.2fx |%s |\n", row, f[1] / f[n], " " monotone
         }'
     done < "$work/rows.txt"
+    echo
+    echo "The tree's phases, sort / sweeps / merge / arcs in ms (medians, as \`isotrack tree\` prints them):"
+    echo
+    echo "$header"
+    echo "$rule"
+    while IFS=$'\t' read -r name values; do
+        row="| tree, $name |"
+        for cell in $values; do row+=" $cell |"; done
+        echo "$row"
+    done < "$work/phases.txt"
     echo
     awk -F'\t' -v first="${threads[0]}" -v last="${threads[-1]}" -v list="${threads[*]}" '
         BEGIN { k = split(list, t, " "); for (i = 1; i <= k; ++i) if (t[i] == 2) two = i }
