@@ -1,6 +1,7 @@
 // isotrack extract: one mesh out of a volume, as PLY and/or a JSON summary.
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -74,6 +75,7 @@ struct Extraction {
     std::size_t residentBefore = 0, residentPeak = 0;        // bytes, around the first run
     double treeSeconds =
         0.0;  // --method tree: building (and simplifying) the contour tree, not timed with the extraction
+    std::array<double, 4> treePhases{};  // its build's phases (ContourTreeProgress::seconds)
     double processSeconds = 0.0;         // --smooth and --decimate, not timed with the extraction
     std::optional<MeshQuality> quality;  // --method mc with --json: the mesh's
 };
@@ -260,10 +262,11 @@ Extraction extract(const ExtractOptions& options, const Source& source, TableKin
     std::size_t before = 0, peak = 0;
     std::optional<ContourTree> tree;
     double treeSeconds = 0.0;
+    std::array<double, 4> treePhases{};
     // With --cap the tree is the padded copy's, built inside the extraction.
     if (options.method == Method::Tree && !options.cap) {
         treeSeconds = secondsOf([&] {
-            tree = buildContourTree(source.volume, options.threads);
+            tree = buildContourTree(source.volume, options.threads, &treePhases);
             if (options.minPersistence > 0 || options.minSize > 0)
                 simplifyContourTree(*tree, options.minPersistence, options.minSize);
         });
@@ -280,6 +283,7 @@ Extraction extract(const ExtractOptions& options, const Source& source, TableKin
     }
     out.seconds = seconds;
     out.treeSeconds = treeSeconds;
+    out.treePhases = treePhases;
     out.residentBefore = before;
     out.residentPeak = peak;
     return out;
@@ -404,7 +408,11 @@ int runExtract(const ExtractOptions& options) {
             {"volume_resident_bytes",
              source.volume.mappedFile() ? source.volume.mappedFile()->residentBytes() : source.volume.byteSize()},
         };
-        if (options.method == Method::Tree) report["tree_seconds"] = result.treeSeconds;
+        if (options.method == Method::Tree) {
+            report["tree_seconds"] = result.treeSeconds;
+            const std::array<double, 4>& p = result.treePhases;
+            report["tree_phase_seconds"] = {{"sort", p[0]}, {"sweeps", p[1]}, {"merge", p[2]}, {"arcs", p[3]}};
+        }
         report["cap"] = options.cap;
         report["smooth"] = options.processing.smoothIterations;
         report["passband"] = options.processing.passband;
@@ -431,7 +439,11 @@ int runExtract(const ExtractOptions& options) {
         if (result.components) std::printf(" in %zu surface%s", *result.components, *result.components == 1 ? "" : "s");
         std::printf(" at iso %g (%s table, method %s) in %.3f ms%s%s\n", source.iso, tableKindName(table),
                     method.c_str(), seconds * 1e3, options.out.empty() ? "" : " -> ", options.out.c_str());
-        if (options.method == Method::Tree) std::printf("contour tree built in %.3f ms\n", result.treeSeconds * 1e3);
+        if (options.method == Method::Tree) {
+            const std::array<double, 4>& p = result.treePhases;
+            std::printf("contour tree built in %.3f ms (sort %.1f, sweeps %.1f, merge %.1f, arcs %.1f ms)\n",
+                        result.treeSeconds * 1e3, p[0] * 1e3, p[1] * 1e3, p[2] * 1e3, p[3] * 1e3);
+        }
         const MeshProcessing& processing = options.processing;
         if (processing.smooths() || processing.decimates())
             std::printf("%s in %.3f ms (the counts above are after it)\n",

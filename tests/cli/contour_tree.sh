@@ -14,6 +14,10 @@ for spec in blobs:48 noise:24 gyroid:32; do
     "$isotrack" extract --field "$spec" --method tree --json > tree.json
     [[ $(field all.json components) == $(field tree.json components) ]] || fail "$spec: tree and all differ in surfaces"
     [[ $(field all.json triangles) == $(field tree.json triangles) ]] || fail "$spec: tree and all differ in triangles"
+    python3 -c "
+import json; r = json.load(open('tree.json')); p = r['tree_phase_seconds']
+assert sorted(p) == ['arcs', 'merge', 'sort', 'sweeps'] and all(v > 0 for v in p.values())
+assert sum(p.values()) <= r['tree_seconds'] + 1e-6, (p, r['tree_seconds'])" || fail "$spec: tree_phase_seconds wrong"
     python3 -c "import json; s=json.load(open('tree.json'))['surfaces']; assert all('arc' in x and 'genus' in x for x in s)" \
         || fail "$spec: surfaces without arc or genus"
 done
