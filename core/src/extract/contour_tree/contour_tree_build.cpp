@@ -87,18 +87,19 @@ constexpr std::uint32_t kPrefetchDistance = 16;
 // write in sequence, without the forest or the samples' neighbours.
 template <bool Up, class T>
 void sweep(const T* values, const Dims& dims, const Slice<std::uint32_t>& order, const Buffer<std::uint8_t>& classes,
-           std::uint32_t lastExtremum, const Slice<std::uint32_t>& forest, const Slice<std::uint32_t>& link,
-           const BuildProgress& progress) {
+           std::uint32_t lastExtremum, const Slice<std::uint32_t>& forest, bool groupsInForest,
+           const Slice<std::uint32_t>& link, const BuildProgress& progress) {
     const auto n = std::uint32_t(order.size());
     const SampleOrder<T> cmp{values};
     const Neighbours neighbours{dims};
     constexpr std::uint8_t kCandidate = Up ? kJoinCandidate : kSplitCandidate;
     // A class names a position of the 6 (join) or 18 (split) neighbours; classes
     // between those and kCandidate never occur.
-    std::int64_t offset[kCandidate] = {};
+    std::int64_t offset[kCandidate] = {}, position[kNeighbourPositions] = {};
     for (std::uint8_t c = 1; c < kCandidate && c <= kNeighbourPositions; ++c) {
         offset[c] = neighbourOffset(dims, std::uint8_t(c - 1));
     }
+    for (std::uint8_t p = 0; p < kNeighbourPositions; ++p) position[p] = neighbourOffset(dims, p);
     auto classOf = [&](std::uint32_t s) { return std::uint8_t(Up ? classes[s] & 7u : classes[s] >> 3); };
     auto rankAt = [&](std::uint32_t step) { return Up ? n - 1 - step : step; };
     // Each rank but the last gets its link from the next sample that meets its
@@ -126,11 +127,18 @@ void sweep(const T* values, const Dims& dims, const Slice<std::uint32_t>& order,
         }
         const std::uint32_t k = rankAt(step), s = order[k];
         const std::uint8_t c = classOf(s);
+        const std::uint32_t groups = groupsInForest && c == kCandidate ? forest[s] : 0;
         forest[s] = k | kRootBit;
         ++components;
         extremaMet = extremaMet || s == lastExtremum;
         std::uint32_t root = s;
-        if (c == kCandidate) {
+        if (c == kCandidate && groupsInForest) {  // one neighbour of each group (CandidateGroups)
+            for (std::uint32_t left = groups; left; left &= left - 1) {
+                const auto m = std::uint32_t(std::int64_t(s) + position[__builtin_ctz(left)]);
+                const std::uint32_t r = findRoot(forest, m);
+                if (r != root) meet(k, root, r);
+            }
+        } else if (c == kCandidate) {
             neighbours.forEach<Up ? 6 : 18>(s, [&](std::uint32_t m) {
                 if (Up ? !cmp.below(s, m) : !cmp.below(m, s)) return;  // not swept yet
                 const std::uint32_t r = findRoot(forest, m);
@@ -374,7 +382,13 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
         std::fill(splitUp.begin() + begin, splitUp.begin() + end, kNoSample);
     });
     progress.start(ContourTreeProgress::Phase::Sweeping, 2 * std::uint64_t(n));  // both sweeps count
-    Buffer<std::uint8_t> classes = classifySamples(volume, threads, progress);
+    // Each candidate's groups of swept neighbours wait in its sweep's forest
+    // slot until the sweep reaches it; on one thread the split sweep reuses the
+    // join sweep's forest, and finds its candidates' groups itself.
+    CandidateGroups groups;
+    groups.join = sorted.spare.at<std::uint32_t>(0);
+    if (together) groups.split = sorted.spare.at<std::uint32_t>(half);
+    Buffer<std::uint8_t> classes = classifySamples(volume, threads, progress, groups);
     visitSamples(volume, [&](const auto* values) {
         const std::pair<std::uint32_t, std::uint32_t> last = lastExtrema(values, classes, threads);
         // Together, each thread counts its tree's arcs where its forest was: the
@@ -386,13 +400,13 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
             countLinks(link, counts, unit);
         };
         auto join = [&] {
-            sweep<true>(values, dims, tree.order, classes, last.first, sliceOf<std::uint32_t>(sorted.spare, 0, n),
+            sweep<true>(values, dims, tree.order, classes, last.first, sliceOf<std::uint32_t>(sorted.spare, 0, n), true,
                         joinDown, progress);
             count(joinDown, 0, 1);
         };
         auto split = [&] {  // on one thread, in the join forest's place after it
             sweep<false>(values, dims, tree.order, classes, last.second,
-                         sliceOf<std::uint32_t>(sorted.spare, together ? half : 0, n), splitUp, progress);
+                         sliceOf<std::uint32_t>(sorted.spare, together ? half : 0, n), together, splitUp, progress);
             count(splitUp, half, kOneBelow);
         };
         if (together) {  // on kept threads; a sweep's Cancelled is rethrown here

@@ -294,7 +294,16 @@ void sortByKey(Items& items, Key&& key) {
 constexpr std::uint8_t kJoinCandidate = 7, kSplitCandidate = 31;
 // The neighbour positions a class may name: the 6 faces, then the 12 edges.
 constexpr std::uint8_t kNeighbourPositions = 18;
-Buffer<std::uint8_t> classifySamples(const Volume& volume, int threads, const BuildProgress& progress);
+// Where the class pass also notes, for each candidate (by sample), one
+// neighbour position of each group of its swept neighbours that are connected
+// inside its neighbourhood (a mask of the 18 positions; the join sweep's are
+// faces): the sweep looks up only those in its forest. Either may be null.
+struct CandidateGroups {
+    std::uint32_t* join = nullptr;
+    std::uint32_t* split = nullptr;
+};
+Buffer<std::uint8_t> classifySamples(const Volume& volume, int threads, const BuildProgress& progress,
+                                     const CandidateGroups& groups = {});
 // The index offset of neighbour position p (0-5 the faces -x +x -y +y -z +z, then the edges).
 std::int64_t neighbourOffset(const Dims& dims, std::uint8_t position);
 

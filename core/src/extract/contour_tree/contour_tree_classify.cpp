@@ -81,8 +81,8 @@ std::uint32_t flood(std::uint32_t seed, std::uint32_t mask, const std::array<std
 
 struct ClassTables {
     std::vector<std::uint8_t> join, split;  // by the mask above (join) or below (split)
+    std::array<std::uint32_t, kPositions> face = adjacency(false), face18 = adjacency(true);
     ClassTables() : join(std::size_t(1) << kPositions), split(std::size_t(1) << kPositions) {
-        const auto face = adjacency(false), face18 = adjacency(true);
         constexpr std::uint32_t kFaces = 0x3fu;
         for (std::uint32_t mask = 0; mask < join.size(); ++mask) {
             if (mask & kFaces) {
@@ -138,7 +138,7 @@ bool anyNaN(const T* values, const Dims& dims, int z0, int z1) {
 
 template <class T>
 void classifyRange(const T* values, const Dims& dims, int z0, int z1, Buffer<std::uint8_t>& out,
-                   const BuildProgress& progress) {
+                   const CandidateGroups& groups, const BuildProgress& progress) {
     const ClassTables& tables = classTables();
     const SampleOrder<T> cmp{values};
     const std::int64_t row = dims[0], plane = std::int64_t(dims[0]) * dims[1];
@@ -160,9 +160,22 @@ void classifyRange(const T* values, const Dims& dims, int z0, int z1, Buffer<std
             if (in) inside[border] |= 1u << p;
         }
     }
+    // One position of each group of `targets` that `mask` connects inside the neighbourhood.
+    auto firstOfGroups = [](std::uint32_t targets, std::uint32_t mask,
+                            const std::array<std::uint32_t, kPositions>& adjacent) {
+        std::uint32_t firsts = 0;
+        while (targets) {
+            const std::uint32_t first = targets & (0u - targets);
+            firsts |= first;
+            targets &= ~flood(first, mask, adjacent);
+        }
+        return firsts;
+    };
     auto store = [&](std::uint32_t s, std::uint32_t below, std::uint32_t above) {
         const std::uint8_t join = tables.join[above], split = tables.split[below];
         out[s] = std::uint8_t(join | split << 3);
+        if (join == kJoinCandidate && groups.join) groups.join[s] = firstOfGroups(above & 0x3fu, above, tables.face);
+        if (split == kSplitCandidate && groups.split) groups.split[s] = firstOfGroups(below, below, tables.face18);
     };
     auto classifyOne = [&](std::uint32_t s, std::uint32_t border) {
         std::uint32_t below = 0, above = 0;
@@ -207,7 +220,8 @@ std::int64_t neighbourOffset(const Dims& dims, std::uint8_t position) {
     return p[0] + std::int64_t(p[1]) * dims[0] + std::int64_t(p[2]) * dims[0] * dims[1];
 }
 
-Buffer<std::uint8_t> classifySamples(const Volume& volume, int threads, const BuildProgress& progress) {
+Buffer<std::uint8_t> classifySamples(const Volume& volume, int threads, const BuildProgress& progress,
+                                     const CandidateGroups& groups) {
     const Dims& dims = volume.dims();
     const std::size_t n = volume.sampleCount();
     Buffer<std::uint8_t> out(n);
@@ -215,7 +229,7 @@ Buffer<std::uint8_t> classifySamples(const Volume& volume, int threads, const Bu
     visitSamples(volume, [&](const auto* values) {
         const int parts = std::max(1, std::min(threads, dims[2]));  // slabs of planes, one a thread
         parallelFor(parts, parts, [&](int part) {
-            classifyRange(values, dims, dims[2] * part / parts, dims[2] * (part + 1) / parts, out, progress);
+            classifyRange(values, dims, dims[2] * part / parts, dims[2] * (part + 1) / parts, out, groups, progress);
         });
     });
     return out;
