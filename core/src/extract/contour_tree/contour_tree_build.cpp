@@ -10,8 +10,10 @@
 // index order), classifySamples (in grid order: which samples meet exactly one
 // component in each sweep, and through which neighbour), the two sweeps
 // (union-find with randomized linking and path halving, each root keeping the
-// rank of its component's newest sample; only candidates read their whole
-// neighbourhood), countLinks (each rank's arcs above in the join tree and below
+// rank of its component's newest sample; only candidates look up more than
+// one neighbour, one of each group the class pass noted in their forest slot;
+// each sweep ends in a trunk once one component is left and no extremum is to
+// come), countLinks (each rank's arcs above in the join tree and below
 // in the split tree, from the links; on two threads each sweep's thread counts
 // its own tree when done) and mergeTrees. The sweeps write the
 // trees by rank, the position in the order: the merge walks each arc in value
