@@ -253,11 +253,30 @@ void mergeTrees(const Slice<std::uint32_t>& joinDown, const Slice<std::uint32_t>
     // the stack would give back at once: the walk goes on along the chain
     // here, sample after sample, until it reaches a node or a sample that is
     // no leaf, as the stack would have, without it.
-    auto walkChain = [&](std::uint32_t s, const Slice<std::uint32_t>& link, std::uint8_t unit, std::uint8_t leafState) {
+    // Most often a chain's next sample is the next rank (down the join tree,
+    // up the split tree: `step`), regular and not yet reached; a run of those
+    // goes without following links, so that the next ranks' lines are read
+    // while this one's are written, rather than each after the last.
+    auto walkChain = [&](std::uint32_t s, const Slice<std::uint32_t>& link, std::uint32_t step, std::uint8_t unit,
+                         std::uint8_t leafState) {
         AugmentedTree::Piece& chain = tree.pieces[tree.arcOf[s]];
         const std::uint32_t piece = tree.arcOf[s];
         std::uint32_t key = chain.key;
         for (;;) {
+            for (std::uint32_t t = s + step; remaining > 1 && t < n && link[s] == t && tree.arcOf[t] == kUnpeeled;
+                 t = s + step) {
+                state[t] = leafState;  // an unreached regular sample's state is kRegular, less this arc
+                state[s] = kGone;
+                --remaining;
+                progress.step(n - remaining);
+                tree.arcOf[t] = piece;
+                key = std::min(key, tree.order[t]);
+                s = t;
+            }
+            if (remaining <= 1) {
+                chain.key = key;
+                return s;
+            }
             const std::uint32_t t = liveLink(link, state, s);
             __builtin_prefetch(&link[t]);
             state[t] = std::uint8_t(state[t] - unit);
@@ -284,7 +303,7 @@ void mergeTrees(const Slice<std::uint32_t>& joinDown, const Slice<std::uint32_t>
         const std::uint8_t here = state[s];
         if (tree.arcOf[s] != kNoSample && (here == kOneBelow || here == 1)) {  // on a chain
             const std::uint32_t t =
-                here == kOneBelow ? walkChain(s, joinDown, 1, kOneBelow) : walkChain(s, splitUp, kOneBelow, 1);
+                here == kOneBelow ? walkChain(s, joinDown, ~0u, 1, kOneBelow) : walkChain(s, splitUp, 1, kOneBelow, 1);
             if (isLeaf(state[t])) leaves.push_back(t);
             continue;
         }
