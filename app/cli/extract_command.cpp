@@ -536,7 +536,7 @@ RunCommand addExtractCommand(CLI::App& app) {
     command
         ->add_option("--decimate-error", options->processing.decimateError,
                      "Decimate, keeping the surface within E world units of the original (default with --decimate: "
-                     "0.94 of the smallest spacing; alone: decimate as far as E allows)")
+                     "0.98 of the smallest spacing; alone: decimate as far as E allows)")
         ->check(CLI::NonNegativeNumber);
     return [options] { return runExtract(*options); };
 }

@@ -229,7 +229,7 @@ _PROCESSING_DOC = """
         passband: the smoothing filter's pass band in (0, 2); smaller smooths more.
         decimate: keep this fraction (0, 1] of the triangles (meshoptimizer),
             within decimate_error of the original.
-        decimate_error: the decimation's bound in world units (default: 0.94
+        decimate_error: the decimation's bound in world units (default: 0.98
             of the smallest spacing); alone, decimate as far as it allows."""
 
 

@@ -96,7 +96,7 @@ struct MeshProcessing {
     bool decimates() const { return decimateRatio < 1.0 || decimateError.has_value(); }
 };
 
-// The error bound decimation uses unless told otherwise: 0.94 of the volume's
+// The error bound decimation uses unless told otherwise: 0.98 of the volume's
 // smallest spacing, so the result stays within a voxel of the input both ways
 // (decimate.cpp checks it).
 double defaultDecimateError(const Volume& volume);

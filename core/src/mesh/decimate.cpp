@@ -70,22 +70,6 @@ double length(const float* p, const float* q) {
     return std::sqrt(sum);
 }
 
-// Whether the points of triangle abc on a barycentric grid of spacing at most
-// `spacing` (its corners, then points along its sides and inside) all lie
-// within reach of `other`.
-bool sampledNear(const float* a, const float* b, const float* c, const detail::NearSurface& other, double spacing) {
-    const double side = std::max({length(a, b), length(b, c), length(c, a)});
-    const int n = std::max(1, int(std::ceil(side / spacing)));
-    for (int i = 0; i <= n; ++i)
-        for (int j = 0; i + j <= n; ++j) {
-            const float u = float(i) / float(n), v = float(j) / float(n);
-            float p[3];
-            for (int k = 0; k < 3; ++k) p[k] = a[k] + u * (b[k] - a[k]) + v * (c[k] - a[k]);
-            if (!other.near(p)) return false;
-        }
-    return true;
-}
-
 struct Corner {
     float p[3];
     double distance;  // an upper bound of its distance to the other surface
@@ -96,17 +80,20 @@ struct Corner {
 // triangle lies within its longest side over sqrt(3) of a corner (some side
 // subtends at least 120 degrees there), so the triangle passes when its
 // farthest corner plus that is within the bound; otherwise it is split in four
-// at its sides' midpoints, down to sides of a quarter of the bound, where its
-// corners decide.
+// at its sides' midpoints (each midpoint's distance the first found within
+// half the bound, or the exact one), down to sides of a 64th of the bound,
+// where one that still cannot pass fails: within the bound, perhaps, but not
+// shown to be (a point of it within 1% of the bound of the bound).
 bool withinBound(const Corner& a, const Corner& b, const Corner& c, const detail::NearSurface& other, double bound) {
     const double farthest = std::max({a.distance, b.distance, c.distance});
     if (farthest > bound) return false;
     const double side = std::max({length(a.p, b.p), length(b.p, c.p), length(c.p, a.p)});
-    if (farthest + side / std::sqrt(3.0) <= bound || side < bound / 4.0) return true;
+    if (farthest + side / std::sqrt(3.0) <= bound) return true;
+    if (side < bound / 64.0) return false;
     auto middle = [&](const Corner& p, const Corner& q) {
         Corner m{};
         for (int k = 0; k < 3; ++k) m.p[k] = 0.5f * (p.p[k] + q.p[k]);
-        m.distance = other.distanceBound(m.p, bound / 4.0);
+        m.distance = other.distanceBound(m.p, bound / 2.0);
         return m;
     };
     const Corner ab = middle(a, b), bc = middle(b, c), ca = middle(c, a);
@@ -130,10 +117,10 @@ struct Fans {
 // maxError from the input. An input triangle with a point too far from the
 // result (withinBound: a bound on every point, not a sample) is held itself:
 // it stays, and its corners with it, while the rest of its corners' fans may
-// still collapse. A result triangle with a sampled point (spacing maxError,
-// corners, sides and inside) too far from the input holds the input's
-// triangles around its corners: holding the corners alone would leave the
-// same triangle. False when none: the result stands.
+// still collapse. A result triangle not shown within maxError of the input
+// (withinBound again; its corners are the input's vertices, on it) holds the
+// input's triangles around its corners: holding the corners alone would leave
+// the same triangle. False when none: the result stands.
 bool holdStrayTriangles(const Mesh& mesh, const std::vector<std::uint32_t>& kept, const detail::NearSurface& original,
                         const Fans& fans, double maxError, std::vector<char>& held) {
     bool holding = false;
@@ -170,7 +157,12 @@ bool holdStrayTriangles(const Mesh& mesh, const std::vector<std::uint32_t>& kept
     }
     for (std::size_t t = 0; t < kept.size() / 3; ++t) {
         const std::uint32_t* v = &kept[3 * t];
-        if (sampledNear(at(v[0]), at(v[1]), at(v[2]), original, maxError)) continue;
+        auto onInput = [&](std::uint32_t i) {  // a vertex of the input's triangles: at distance 0
+            Corner c{};
+            std::copy(at(i), at(i) + 3, c.p);
+            return c;
+        };
+        if (withinBound(onInput(v[0]), onInput(v[1]), onInput(v[2]), original, maxError)) continue;
         for (int k = 0; k < 3; ++k)
             for (std::uint32_t i = fans.first[v[k]]; i < fans.first[v[k] + 1]; ++i) {
                 holding = holding || !held[fans.list[i]];

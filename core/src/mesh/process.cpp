@@ -46,7 +46,7 @@ void remeasure(Surface& surface) {
 
 double defaultDecimateError(const Volume& volume) {
     const Vec3d& s = volume.spacing();
-    return 0.94 * std::min({s[0], s[1], s[2]});
+    return 0.98 * std::min({s[0], s[1], s[2]});
 }
 
 double defaultSmoothTolerance(const Volume& volume) {
