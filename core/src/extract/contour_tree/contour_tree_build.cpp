@@ -95,13 +95,11 @@ void sweep(const T* values, const Dims& dims, const Slice<std::uint32_t>& order,
     const SampleOrder<T> cmp{values};
     const Neighbours neighbours{dims};
     constexpr std::uint8_t kCandidate = Up ? kJoinCandidate : kSplitCandidate;
-    // A class names a position of the 6 (join) or 18 (split) neighbours; classes
-    // between those and kCandidate never occur.
-    std::int64_t offset[kCandidate] = {}, position[kNeighbourPositions] = {};
-    for (std::uint8_t c = 1; c < kCandidate && c <= kNeighbourPositions; ++c) {
-        offset[c] = neighbourOffset(dims, std::uint8_t(c - 1));
-    }
-    for (std::uint8_t p = 0; p < kNeighbourPositions; ++p) position[p] = neighbourOffset(dims, p);
+    // A class c names position c - 1 of the 6 (join) or 18 (split) neighbours,
+    // whose index offset is offset[c]; classes between those and kCandidate
+    // never occur. A candidate's groups name positions p: offset[p + 1].
+    std::int64_t offset[kNeighbourPositions + 1] = {};
+    for (std::uint8_t p = 0; p < kNeighbourPositions; ++p) offset[p + 1] = neighbourOffset(dims, p);
     auto classOf = [&](std::uint32_t s) { return std::uint8_t(Up ? classes[s] & 7u : classes[s] >> 3); };
     auto rankAt = [&](std::uint32_t step) { return Up ? n - 1 - step : step; };
     // Each rank but the last gets its link from the next sample that meets its
@@ -136,7 +134,7 @@ void sweep(const T* values, const Dims& dims, const Slice<std::uint32_t>& order,
         std::uint32_t root = s;
         if (c == kCandidate && groupsInForest) {  // one neighbour of each group (CandidateGroups)
             for (std::uint32_t left = groups; left; left &= left - 1) {
-                const auto m = std::uint32_t(std::int64_t(s) + position[__builtin_ctz(left)]);
+                const auto m = std::uint32_t(std::int64_t(s) + offset[1 + __builtin_ctz(left)]);
                 const std::uint32_t r = findRoot(forest, m);
                 if (r != root) meet(k, root, r);
             }

@@ -79,11 +79,13 @@ std::uint32_t flood(std::uint32_t seed, std::uint32_t mask, const std::array<std
     return component;
 }
 
+// The six face positions' bits in a neighbourhood mask (the join sweep's neighbours).
+constexpr std::uint32_t kFaces = 0x3fu;
+
 struct ClassTables {
     std::vector<std::uint8_t> join, split;  // by the mask above (join) or below (split)
     std::array<std::uint32_t, kPositions> face = adjacency(false), face18 = adjacency(true);
     ClassTables() : join(std::size_t(1) << kPositions), split(std::size_t(1) << kPositions) {
-        constexpr std::uint32_t kFaces = 0x3fu;
         for (std::uint32_t mask = 0; mask < join.size(); ++mask) {
             if (mask & kFaces) {
                 const std::uint32_t first = lowestBit(mask & kFaces);
@@ -174,7 +176,7 @@ void classifyRange(const T* values, const Dims& dims, int z0, int z1, Buffer<std
     auto store = [&](std::uint32_t s, std::uint32_t below, std::uint32_t above) {
         const std::uint8_t join = tables.join[above], split = tables.split[below];
         out[s] = std::uint8_t(join | split << 3);
-        if (join == kJoinCandidate && groups.join) groups.join[s] = firstOfGroups(above & 0x3fu, above, tables.face);
+        if (join == kJoinCandidate && groups.join) groups.join[s] = firstOfGroups(above & kFaces, above, tables.face);
         if (split == kSplitCandidate && groups.split) groups.split[s] = firstOfGroups(below, below, tables.face18);
     };
     auto classifyOne = [&](std::uint32_t s, std::uint32_t border) {
