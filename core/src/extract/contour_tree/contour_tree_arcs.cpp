@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "extract/contour_tree/contour_tree_build.h"
+#include "support/huge_pages.h"
 
 namespace isotrack::detail {
 namespace {
@@ -89,7 +90,7 @@ void numberNodes(const Volume& volume, AugmentedTree& tree, const Buffer<std::ui
     IndexRanks number(std::uint32_t(tree.order.size()));
     for (const std::uint32_t k : nodeRanks) number.add(tree.order[k]);
     number.count();
-    out.nodes.resize(nodeRanks.size());
+    resizeOnHugePages(out.nodes, nodeRanks.size());
     visitSamples(volume, [&](const auto* values) {
         inRanges(std::uint32_t(nodeRanks.size()), parts, [&](std::size_t, std::uint32_t begin, std::uint32_t end) {
             for (std::uint32_t j = begin; j < end; ++j) {
@@ -120,7 +121,7 @@ Buffer<std::uint32_t> numberArcs(AugmentedTree& tree, ContourTree& out) {
     chains.count(), edges.count();
     auto node = [&](std::uint32_t k) { return tree.arcOf[k] & ~kNodeBit; };
     Buffer<std::uint32_t> pieceOfArc(count);
-    out.arcs.resize(count);
+    resizeOnHugePages(out.arcs, count);
     for (std::uint32_t p = 0; p < count; ++p) {
         const AugmentedTree::Piece& piece = tree.pieces[p];
         const std::uint32_t a = (piece.key & AugmentedTree::kEdgeBit)
@@ -149,7 +150,7 @@ void fillSamples(const AugmentedTree& tree, std::uint32_t chains, Buffer<std::ui
         out.arcs[a].end = sum;
     }
     Buffer<std::uint32_t>().swap(pieceOfArc);  // gone before the samples come
-    out.samples.resize(sum);
+    resizeOnHugePages(out.samples, sum);
     inRanges(std::uint32_t(tree.arcOf.size()), sizes.size(),
              [&](std::size_t p, std::uint32_t begin, std::uint32_t end) {
                  std::uint32_t* at = sizes[p].data();
@@ -163,10 +164,10 @@ void fillSamples(const AugmentedTree& tree, std::uint32_t chains, Buffer<std::ui
 }
 
 void indexNodeArcs(ContourTree& out) {
-    out.nodeArcBegin.assign(out.nodes.size() + 1, 0);
+    resizeOnHugePages(out.nodeArcBegin, out.nodes.size() + 1);  // zeros: out is new
     for (const ContourTree::Arc& arc : out.arcs) ++out.nodeArcBegin[arc.lower + 1], ++out.nodeArcBegin[arc.upper + 1];
     for (std::size_t n = 0; n < out.nodes.size(); ++n) out.nodeArcBegin[n + 1] += out.nodeArcBegin[n];
-    out.nodeArcs.resize(out.nodeArcBegin.back());
+    resizeOnHugePages(out.nodeArcs, out.nodeArcBegin.back());
     Buffer<std::uint32_t> fill(out.nodeArcBegin.begin(), out.nodeArcBegin.end() - 1);
     for (std::size_t a = 0; a < out.arcs.size(); ++a) {
         out.nodeArcs[fill[out.arcs[a].lower]++] = std::uint32_t(a);
