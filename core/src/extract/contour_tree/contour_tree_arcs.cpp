@@ -17,6 +17,7 @@
 
 #include "extract/contour_tree/contour_tree_build.h"
 #include "support/huge_pages.h"
+#include "support/parallel.h"
 
 namespace isotrack::detail {
 namespace {
@@ -106,8 +107,9 @@ void numberNodes(const Volume& volume, AugmentedTree& tree, const Buffer<std::ui
 
 // The arcs: chains first, by their smallest sample, then the edges between
 // two nodes, by the sample peeled (the pieces by key; both kinds of key are
-// unique), and each node's degrees counted. Returns the piece of each arc.
-Buffer<std::uint32_t> numberArcs(AugmentedTree& tree, ContourTree& out) {
+// unique), and each node's degrees counted; each piece's arc found on
+// `parts` threads. Returns the piece of each arc.
+Buffer<std::uint32_t> numberArcs(AugmentedTree& tree, std::size_t parts, ContourTree& out) {
     const auto count = std::uint32_t(tree.pieces.size());
     const auto n = std::uint32_t(tree.order.size());
     IndexRanks chains(n), edges(n);
@@ -122,16 +124,20 @@ Buffer<std::uint32_t> numberArcs(AugmentedTree& tree, ContourTree& out) {
     auto node = [&](std::uint32_t k) { return tree.arcOf[k] & ~kNodeBit; };
     Buffer<std::uint32_t> pieceOfArc(count);
     resizeOnHugePages(out.arcs, count);
-    for (std::uint32_t p = 0; p < count; ++p) {
-        const AugmentedTree::Piece& piece = tree.pieces[p];
-        const std::uint32_t a = (piece.key & AugmentedTree::kEdgeBit)
-                                    ? tree.chains + edges.rankOf(piece.key & AugmentedTree::kIndexMask)
-                                    : chains.rankOf(piece.key);
-        pieceOfArc[a] = p;
-        out.arcs[a].lower = node(piece.lower), out.arcs[a].upper = node(piece.upper);
-    }
-    Buffer<AugmentedTree::Piece>().swap(tree.pieces);
+    inRanges(count, parts, [&](std::size_t, std::uint32_t begin, std::uint32_t end) {
+        for (std::uint32_t p = begin; p < end; ++p) {
+            const AugmentedTree::Piece& piece = tree.pieces[p];
+            const std::uint32_t a = (piece.key & AugmentedTree::kEdgeBit)
+                                        ? tree.chains + edges.rankOf(piece.key & AugmentedTree::kIndexMask)
+                                        : chains.rankOf(piece.key);
+            const std::uint32_t lower = node(piece.lower), upper = node(piece.upper);
+            pieceOfArc[a] = p;
+            out.arcs[a].lower = lower, out.arcs[a].upper = upper;
+        }
+    });
+    // The degrees in one loop: atomic increments on the threads took longer.
     for (const ContourTree::Arc& arc : out.arcs) ++out.nodes[arc.lower].up, ++out.nodes[arc.upper].down;
+    Buffer<AugmentedTree::Piece>().swap(tree.pieces);
     return pieceOfArc;
 }
 
@@ -187,7 +193,7 @@ ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented,
     Buffer<std::uint32_t> nodeRanks = findNodes(augmented, sizes, progress);
     numberNodes(volume, augmented, nodeRanks, sizes.size(), out);
     Buffer<std::uint32_t>().swap(nodeRanks);
-    fillSamples(augmented, chains, numberArcs(augmented, out), sizes, out, progress);
+    fillSamples(augmented, chains, numberArcs(augmented, sizes.size(), out), sizes, out, progress);
     augmented.arcOf = {}, augmented.order = {};
     augmented.sorted.shrink(0), augmented.spare.shrink(0);
     indexNodeArcs(out);
