@@ -118,12 +118,19 @@ void sweep(const T* values, const Dims& dims, const Slice<std::uint32_t>& order,
     };
     for (std::uint32_t step = 0; step < n; ++step) {
         progress.step(step);  // throws Cancelled when asked to stop
-        if (step + 2 * kPrefetchDistance < n) __builtin_prefetch(&classes[order[rankAt(step + 2 * kPrefetchDistance)]]);
+        if (step + 3 * kPrefetchDistance < n) __builtin_prefetch(&classes[order[rankAt(step + 3 * kPrefetchDistance)]]);
+        if (step + 2 * kPrefetchDistance < n) __builtin_prefetch(&forest[order[rankAt(step + 2 * kPrefetchDistance)]], 1);
         if (step + kPrefetchDistance < n) {
+            // The neighbours it will look up: the one its class names, or a
+            // candidate's groups', noted in its forest slot (requested above).
             const std::uint32_t later = order[rankAt(step + kPrefetchDistance)];
             const std::uint8_t c = classOf(later);
-            __builtin_prefetch(&forest[later], 1);
-            if (c != 0 && c != kCandidate) __builtin_prefetch(&forest[std::int64_t(later) + offset[c]]);
+            if (c == kCandidate && groupsInForest) {
+                for (std::uint32_t left = forest[later]; left; left &= left - 1)
+                    __builtin_prefetch(&forest[std::int64_t(later) + offset[1 + __builtin_ctz(left)]]);
+            } else if (c != 0 && c != kCandidate) {
+                __builtin_prefetch(&forest[std::int64_t(later) + offset[c]]);
+            }
         }
         const std::uint32_t k = rankAt(step), s = order[k];
         const std::uint8_t c = classOf(s);
