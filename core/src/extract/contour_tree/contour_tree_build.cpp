@@ -119,7 +119,8 @@ void sweep(const T* values, const Dims& dims, const Slice<std::uint32_t>& order,
     for (std::uint32_t step = 0; step < n; ++step) {
         progress.step(step);  // throws Cancelled when asked to stop
         if (step + 3 * kPrefetchDistance < n) __builtin_prefetch(&classes[order[rankAt(step + 3 * kPrefetchDistance)]]);
-        if (step + 2 * kPrefetchDistance < n) __builtin_prefetch(&forest[order[rankAt(step + 2 * kPrefetchDistance)]], 1);
+        if (step + 2 * kPrefetchDistance < n)
+            __builtin_prefetch(&forest[order[rankAt(step + 2 * kPrefetchDistance)]], 1);
         if (step + kPrefetchDistance < n) {
             // The neighbours it will look up: the one its class names, or a
             // candidate's groups', noted in its forest slot (requested above).
