@@ -12,6 +12,7 @@
 #include <meshoptimizer.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -83,13 +84,18 @@ struct Corner {
 // at its sides' midpoints (each midpoint's distance the first found within
 // half the bound, or the exact one), down to sides of a 64th of the bound,
 // where one that still cannot pass fails: within the bound, perhaps, but not
-// shown to be (a point of it within 1% of the bound of the bound).
-bool withinBound(const Corner& a, const Corner& b, const Corner& c, const detail::NearSurface& other, double bound) {
+// shown to be. So does one that has taken kPieceBudget pieces: a bound small
+// against the triangle would take (side / bound)^2 of them (at a hundredth of
+// a voxel, minutes for a small sphere), where a triangle within a bound of
+// its own size needs tens, along the places where it comes near the bound.
+constexpr int kPieceBudget = 1024;
+bool withinBound(const Corner& a, const Corner& b, const Corner& c, const detail::NearSurface& other, double bound,
+                 int& budget) {
     const double farthest = std::max({a.distance, b.distance, c.distance});
     if (farthest > bound) return false;
     const double side = std::max({length(a.p, b.p), length(b.p, c.p), length(c.p, a.p)});
     if (farthest + side / std::sqrt(3.0) <= bound) return true;
-    if (side < bound / 64.0) return false;
+    if (side < bound / 64.0 || --budget < 0) return false;
     auto middle = [&](const Corner& p, const Corner& q) {
         Corner m{};
         for (int k = 0; k < 3; ++k) m.p[k] = 0.5f * (p.p[k] + q.p[k]);
@@ -97,19 +103,38 @@ bool withinBound(const Corner& a, const Corner& b, const Corner& c, const detail
         return m;
     };
     const Corner ab = middle(a, b), bc = middle(b, c), ca = middle(c, a);
-    return withinBound(a, ab, ca, other, bound) && withinBound(ab, b, bc, other, bound) &&
-           withinBound(ca, bc, c, other, bound) && withinBound(ab, bc, ca, other, bound);
+    if (std::max({ab.distance, bc.distance, ca.distance}) > bound) return false;  // before any piece
+    return withinBound(a, ab, ca, other, bound, budget) && withinBound(ab, b, bc, other, bound, budget) &&
+           withinBound(ca, bc, c, other, bound, budget) && withinBound(ab, bc, ca, other, bound, budget);
+}
+bool withinBound(const Corner& a, const Corner& b, const Corner& c, const detail::NearSurface& other, double bound) {
+    int budget = kPieceBudget;
+    return withinBound(a, b, c, other, bound, budget);
 }
 
-// The input's triangles, by corner: triangles of vertex v at
-// list[first[v] .. first[v + 1]).
+// Triangles by corner: the triangles of vertex v at list[first[v] ..
+// first[v + 1]).
 struct Fans {
-    explicit Fans(const Mesh& mesh) : first(mesh.vertices.size() + 1, 0), list(mesh.indices.size()) {
-        for (std::uint32_t v : mesh.indices) ++first[v + 1];
+    Fans(const std::uint32_t* indices, std::size_t count, std::size_t vertices)
+        : corners(indices), first(vertices + 1, 0), list(count) {
+        for (std::size_t i = 0; i < count; ++i) ++first[indices[i] + 1];
         for (std::size_t v = 0; v + 1 < first.size(); ++v) first[v + 1] += first[v];
         std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
-        for (std::size_t i = 0; i < mesh.indices.size(); ++i) list[fill[mesh.indices[i]]++] = std::uint32_t(i / 3);
+        for (std::size_t i = 0; i < count; ++i) list[fill[indices[i]]++] = std::uint32_t(i / 3);
     }
+    // Whether one of the triangles has the corners of `triangle` (in any order).
+    bool holds(const std::uint32_t* triangle) const {
+        std::array<std::uint32_t, 3> want{triangle[0], triangle[1], triangle[2]};
+        std::sort(want.begin(), want.end());
+        for (std::uint32_t i = first[triangle[0]]; i < first[triangle[0] + 1]; ++i) {
+            const std::uint32_t* t = corners + 3 * std::size_t(list[i]);
+            std::array<std::uint32_t, 3> have{t[0], t[1], t[2]};
+            std::sort(have.begin(), have.end());
+            if (have == want) return true;
+        }
+        return false;
+    }
+    const std::uint32_t* corners;  // the triangles' (kept by the caller)
     std::vector<std::uint32_t> first, list;
 };
 
@@ -148,9 +173,12 @@ bool holdStrayTriangles(const Mesh& mesh, const std::vector<std::uint32_t>& kept
         const double radius = maxError - fanSide[v] / std::sqrt(3.0);
         clear[v] = radius > 0.0 && result.near(at(std::uint32_t(v)), radius);
     }
+    // A triangle in both lies within any bound of the other mesh: with a small
+    // bound, proving it point by point would take (side / bound)^2 pieces.
+    const Fans resultFans(kept.data(), kept.size(), mesh.vertices.size());
     for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
         const std::uint32_t* v = &mesh.indices[3 * t];
-        if (held[t] || (clear[v[0]] && clear[v[1]] && clear[v[2]])) continue;
+        if (held[t] || (clear[v[0]] && clear[v[1]] && clear[v[2]]) || resultFans.holds(v)) continue;
         if (withinBound(corner(v[0]), corner(v[1]), corner(v[2]), result, maxError)) continue;
         held[t] = 1;
         holding = true;
@@ -162,7 +190,7 @@ bool holdStrayTriangles(const Mesh& mesh, const std::vector<std::uint32_t>& kept
             std::copy(at(i), at(i) + 3, c.p);
             return c;
         };
-        if (withinBound(onInput(v[0]), onInput(v[1]), onInput(v[2]), original, maxError)) continue;
+        if (fans.holds(v) || withinBound(onInput(v[0]), onInput(v[1]), onInput(v[2]), original, maxError)) continue;
         for (int k = 0; k < 3; ++k)
             for (std::uint32_t i = fans.first[v[k]]; i < fans.first[v[k] + 1]; ++i) {
                 holding = holding || !held[fans.list[i]];
@@ -195,7 +223,10 @@ void decimateMesh(Mesh& mesh, double ratio, std::optional<double> maxError) {
     const std::vector<std::uint32_t> input(mesh.indices.begin(), mesh.indices.end());
     std::optional<detail::NearSurface> original;
     std::optional<Fans> fans;
-    if (maxError) original.emplace(mesh.vertices, input, *maxError), fans.emplace(mesh);
+    if (maxError) {
+        original.emplace(mesh.vertices, input, *maxError);
+        fans.emplace(input.data(), input.size(), mesh.vertices.size());
+    }
     bool strays = false;
     for (int round = 0; round < kMaxRounds; ++round) {
         kept = simplifyRound(mesh, held, target, relativeError);

@@ -211,3 +211,21 @@ TEST_CASE("every point of a decimated surface lies within the bound of the input
         }
     }
 }
+
+TEST_CASE("a bound small against the triangles holds and a bound of 0 keeps the surface", "[core][mesh]") {
+    // Shown point by point, a bound of a hundredth of a voxel would take
+    // (side / bound)^2 pieces a triangle; the check gives up on a triangle
+    // after a budget of pieces and holds it back instead.
+    const Surface sphere = exhaustive(makeField({"sphere", 32}), 0.0);
+    for (const double bound : {0.0, 0.01}) {
+        Surface surface = sphere;
+        MeshProcessing tight;
+        tight.decimateRatio = 0.5;
+        tight.decimateError = bound;
+        processSurface(surface, tight);
+        INFO("bound " << bound << ": " << sphere.mesh.triangleCount() << " -> " << surface.mesh.triangleCount());
+        CHECK(surface.stats.closed);
+        CHECK(test::hausdorff(sphere.mesh, surface.mesh, 8) <= bound + 1e-5);
+        if (bound == 0.0) CHECK(surface.mesh.triangleCount() == sphere.mesh.triangleCount());
+    }
+}
