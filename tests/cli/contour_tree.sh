@@ -37,14 +37,15 @@ sized=$(field sized.json components)
 
 "$isotrack" tree --field noise:24 --at 0.5 --out tree.json > tree.txt
 grep -q "surfaces at iso 0.5" tree.txt || fail "no summary line"
-# The build's four phases, each timed, adding up to no more than the build.
+# The build's four phases, each timed, adding up to no more than the build
+# (each printed to 0.1 ms: their sum may pass the build's by 0.05 ms each).
 python3 - tree.txt <<'PY' || fail "no phase times, or more than the build: $(cat tree.txt)"
 import re, sys
 text = open(sys.argv[1]).read()
 build = float(re.search(r" in ([0-9.]+) ms \(simplified", text).group(1))
 phases = [float(x) for x in re.search(
     r"build phases: sort ([0-9.]+) ms, sweeps ([0-9.]+) ms, merge ([0-9.]+) ms, arcs ([0-9.]+) ms", text).groups()]
-assert all(p > 0 for p in phases) and sum(phases) <= build + 0.01, (phases, build)
+assert all(p > 0 for p in phases) and sum(phases) <= build + 0.2, (phases, build)
 PY
 python3 -c "
 import json; t=json.load(open('tree.json'))
