@@ -61,19 +61,16 @@ NearSurface::NearSurface(const Buffer<Vertex>& vertices, const std::vector<std::
     // took seconds and half a gigabyte).
     constexpr double kCellsPerTriangle = 16.0;
     const double most = std::max(4096.0, kCellsPerTriangle * double(indices.size() / 3));
-    double grow = 1.0;
-    long cells = 1;
-    for (int pass = 0; pass < 2; ++pass) {
-        double planned = 1.0;
-        for (int a = 0; a < 3; ++a) {
-            if (indices.empty()) lo_[a] = hi[a] = 0;
-            cell_[a] = std::max(reach_, (hi[a] - lo_[a]) / 512.0) * grow;
-            planned *= double(long((hi[a] - lo_[a]) / cell_[a]) + 1);
-        }
-        if (planned <= most) break;
-        grow *= std::cbrt(planned / most) * 1.01;
-    }
+    double planned = 1.0;
     for (int a = 0; a < 3; ++a) {
+        if (indices.empty()) lo_[a] = hi[a] = 0;
+        cell_[a] = std::max(reach_, (hi[a] - lo_[a]) / 512.0);
+        planned *= double(long((hi[a] - lo_[a]) / cell_[a]) + 1);
+    }
+    const double grow = planned > most ? std::cbrt(planned / most) * 1.01 : 1.0;
+    long cells = 1;
+    for (int a = 0; a < 3; ++a) {
+        cell_[a] *= grow;
         n_[a] = long((hi[a] - lo_[a]) / cell_[a]) + 1;
         cells *= n_[a];
     }

@@ -129,19 +129,26 @@ TEST_CASE("decimating a snapped integer ball leaves no zero-area triangle", "[co
     CHECK(test::hausdorff(original, surface.mesh) < 1.0);
 }
 
+namespace {
+// The Marschner-Lobb field's surfaces at its default isovalue, every one.
+std::vector<Surface> marschnerLobbSurfaces(const Volume& volume, TableKind table) {
+    ExtractRequest request;
+    request.iso = fieldDefaultIso("marschner-lobb");
+    request.method = Method::All;
+    request.measure = true;
+    request.table = table;
+    return extract(volume, request);
+}
+}  // namespace
+
 TEST_CASE("decimation within a bound stays within it where thin ridges need many rounds", "[core][mesh]") {
     // The Marschner-Lobb field's thin ridges lie a voxel or two apart; the
     // consistent surface needs 12 rounds of checks, and after the 8 there were
     // it strayed 2.47 voxels from the input, over its bound of 0.94.
     const Volume volume = makeField({"marschner-lobb", 64});
     for (const TableKind table : {TableKind::Consistent, TableKind::Snap}) {
-        ExtractRequest request;
-        request.iso = fieldDefaultIso("marschner-lobb");
-        request.method = Method::All;
-        request.measure = true;
-        request.table = table;
         std::size_t before = 0, after = 0;
-        for (Surface& surface : extract(volume, request)) {
+        for (Surface& surface : marschnerLobbSurfaces(volume, table)) {
             const Mesh original = surface.mesh;
             const bool closed = surface.stats.closed;
             MeshProcessing decimate;
@@ -191,11 +198,7 @@ TEST_CASE("every point of a decimated surface lies within the bound of the input
     // result's triangles. The other way is the test above's.
     const Volume volume = makeField({"marschner-lobb", 40});
     for (const TableKind table : {TableKind::Consistent, TableKind::Snap}) {
-        ExtractRequest request;
-        request.iso = fieldDefaultIso("marschner-lobb");
-        request.method = Method::All;
-        request.table = table;
-        for (const Surface& surface : extract(volume, request)) {
+        for (const Surface& surface : marschnerLobbSurfaces(volume, table)) {
             if (surface.mesh.triangleCount() < 200) continue;
             for (unsigned seed = 1; seed <= 3; ++seed) {
                 Surface copy = surface;
