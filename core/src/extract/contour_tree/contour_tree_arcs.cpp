@@ -2,14 +2,15 @@
 // into arcs between the critical samples (nodes), each arc keeping its regular
 // samples in ascending order; and the queries on the compressed tree.
 //
+// The nodes (the ranks on no chain) come from the merge's start with their
+// degrees, and are numbered by sample index beside the merge (numberNodes).
 // Passes of compressContourTree, by rank (the position in the sorted order,
-// as the merge leaves the tree): one pass finds the nodes (the ranks on no
-// chain) and counts each chain's samples; the nodes are numbered by sample
-// index and marked in arcOf; the arcs are numbered (the chains by their
-// smallest sample index, then the edges between two nodes in the order of
-// the sample the merge peeled them from; degrees counted from the arcs); a
-// second pass buckets the ranks by chain, in order, so each arc's samples
-// stay sorted. Besides the tree itself: the order and arcOf, 8 bytes a sample.
+// as the merge leaves the tree): the nodes' records are written and their
+// numbers marked in arcOf; one pass counts each chain's samples; the arcs are
+// numbered (the chains by their smallest sample index, then the edges between
+// two nodes in the order of the sample the merge peeled them from); a second
+// pass buckets the ranks by chain, in order, so each arc's samples stay
+// sorted. Besides the tree itself: the order and arcOf, 8 bytes a sample.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -36,29 +37,19 @@ void inRanges(std::uint32_t n, std::size_t parts, Fn&& fn) {
                 [&](int p) { fn(std::size_t(p), bound(std::size_t(p)), bound(std::size_t(p) + 1)); });
 }
 
-// The nodes (the ranks on no piece), and the count of each piece's samples
-// in each part of the ranks.
-Buffer<std::uint32_t> findNodes(const AugmentedTree& tree, std::vector<Buffer<std::uint32_t>>& sizes,
-                                const BuildProgress& progress) {
-    std::vector<Buffer<std::uint32_t>> found(sizes.size());
+// The count of each piece's samples in each part of the ranks (the nodes
+// marked in arcOf).
+void countPieces(const AugmentedTree& tree, std::vector<Buffer<std::uint32_t>>& sizes, const BuildProgress& progress) {
     inRanges(std::uint32_t(tree.arcOf.size()), sizes.size(),
              [&](std::size_t p, std::uint32_t begin, std::uint32_t end) {
                  sizes[p].assign(tree.pieces.size(), 0);
                  progress.inStrides(begin, end, [&](std::uint32_t from, std::uint32_t to) {
                      for (std::uint32_t k = from; k < to; ++k) {
                          const std::uint32_t piece = tree.arcOf[k];
-                         if (piece == kNoSample) {
-                             found[p].push_back(k);
-                         } else {
-                             ++sizes[p][piece];
-                         }
+                         if (!isNode(piece)) ++sizes[p][piece];
                      }
                  });
              });
-    Buffer<std::uint32_t> nodeRanks;
-    nodeRanks.reserve(tree.pieces.size() + 1);  // a tree: one node more than arcs
-    for (const Buffer<std::uint32_t>& part : found) nodeRanks.insert(nodeRanks.end(), part.begin(), part.end());
-    return nodeRanks;
 }
 
 // A set of sample indices as bits, with a count of the members before each
@@ -84,25 +75,24 @@ private:
     Buffer<std::uint32_t> before_;
 };
 
-// The nodes, numbered by sample index (their ranks in parts on `parts`
-// threads); marked in arcOf.
-void numberNodes(const Volume& volume, AugmentedTree& tree, const Buffer<std::uint32_t>& nodeRanks, std::size_t parts,
-                 ContourTree& out) {
-    IndexRanks number(std::uint32_t(tree.order.size()));
-    for (const std::uint32_t k : nodeRanks) number.add(tree.order[k]);
-    number.count();
-    resizeOnHugePages(out.nodes, nodeRanks.size());
+// The nodes' records, numbered by sample index, and each node's number marked
+// in arcOf, in parts of the nodes on `parts` threads.
+void placeNodes(const Volume& volume, AugmentedTree& tree, std::size_t parts, ContourTree& out) {
+    resizeOnHugePages(out.nodes, tree.nodeRanks.size());
     visitSamples(volume, [&](const auto* values) {
-        inRanges(std::uint32_t(nodeRanks.size()), parts, [&](std::size_t, std::uint32_t begin, std::uint32_t end) {
+        inRanges(std::uint32_t(tree.nodeRanks.size()), parts, [&](std::size_t, std::uint32_t begin, std::uint32_t end) {
             for (std::uint32_t j = begin; j < end; ++j) {
-                const std::uint32_t k = nodeRanks[j], sample = tree.order[k], i = number.rankOf(sample);
+                const std::uint32_t k = tree.nodeRanks[j], sample = tree.order[k], i = tree.nodeNumbers[j];
                 ContourTree::Node& node = out.nodes[i];
                 node.sample = sample;
                 node.value = double(values[sample]);
+                node.up = tree.nodeDegrees[j] & 7u, node.down = tree.nodeDegrees[j] >> 3;
                 tree.arcOf[k] = i | kNodeBit;
             }
         });
     });
+    Buffer<std::uint32_t>().swap(tree.nodeRanks), Buffer<std::uint32_t>().swap(tree.nodeNumbers);
+    Buffer<std::uint8_t>().swap(tree.nodeDegrees);
 }
 
 // The arcs: chains first, by their smallest sample, then the edges between
@@ -135,8 +125,6 @@ Buffer<std::uint32_t> numberArcs(AugmentedTree& tree, std::size_t parts, Contour
             out.arcs[a].lower = lower, out.arcs[a].upper = upper;
         }
     });
-    // The degrees in one loop: atomic increments on the threads took longer.
-    for (const ContourTree::Arc& arc : out.arcs) ++out.nodes[arc.lower].up, ++out.nodes[arc.upper].down;
     Buffer<AugmentedTree::Piece>().swap(tree.pieces);
     return pieceOfArc;
 }
@@ -171,8 +159,8 @@ void fillSamples(const AugmentedTree& tree, std::uint32_t chains, Buffer<std::ui
 
 void indexNodeArcs(ContourTree& out) {
     resizeOnHugePages(out.nodeArcBegin, out.nodes.size() + 1);  // zeros: out is new
-    for (const ContourTree::Arc& arc : out.arcs) ++out.nodeArcBegin[arc.lower + 1], ++out.nodeArcBegin[arc.upper + 1];
-    for (std::size_t n = 0; n < out.nodes.size(); ++n) out.nodeArcBegin[n + 1] += out.nodeArcBegin[n];
+    for (std::size_t n = 0; n < out.nodes.size(); ++n)
+        out.nodeArcBegin[n + 1] = out.nodeArcBegin[n] + out.nodes[n].up + out.nodes[n].down;
     resizeOnHugePages(out.nodeArcs, out.nodeArcBegin.back());
     Buffer<std::uint32_t> fill(out.nodeArcBegin.begin(), out.nodeArcBegin.end() - 1);
     for (std::size_t a = 0; a < out.arcs.size(); ++a) {
@@ -183,6 +171,15 @@ void indexNodeArcs(ContourTree& out) {
 
 }  // namespace
 
+void numberNodes(AugmentedTree& tree) {
+    IndexRanks number(std::uint32_t(tree.order.size()));
+    for (const std::uint32_t k : tree.nodeRanks) number.add(tree.order[k]);
+    number.count();
+    tree.nodeNumbers.resize(tree.nodeRanks.size());
+    for (std::size_t j = 0; j < tree.nodeRanks.size(); ++j)
+        tree.nodeNumbers[j] = number.rankOf(tree.order[tree.nodeRanks[j]]);
+}
+
 ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented, int threads,
                                 const BuildProgress& progress) {
     ContourTree out;
@@ -190,9 +187,8 @@ ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented,
     const std::uint32_t chains = augmented.chains;
     const bool large = augmented.arcOf.size() >= (std::size_t(1) << 16);
     std::vector<Buffer<std::uint32_t>> sizes(large ? std::size_t(std::clamp(threads, 1, 4)) : 1);
-    Buffer<std::uint32_t> nodeRanks = findNodes(augmented, sizes, progress);
-    numberNodes(volume, augmented, nodeRanks, sizes.size(), out);
-    Buffer<std::uint32_t>().swap(nodeRanks);
+    placeNodes(volume, augmented, sizes.size(), out);
+    countPieces(augmented, sizes, progress);
     fillSamples(augmented, chains, numberArcs(augmented, sizes.size(), out), sizes, out, progress);
     augmented.arcOf = {}, augmented.order = {};
     augmented.sorted.shrink(0), augmented.spare.shrink(0);

@@ -15,7 +15,8 @@
 // each sweep ends in a trunk once one component is left and no extremum is to
 // come), countLinks (each rank's arcs above in the join tree and below
 // in the split tree, from the links; on two threads each sweep's thread counts
-// its own tree when done) and mergeTrees. The sweeps write the
+// its own tree when done), startMerge (the nodes and leaves, in parts) and
+// mergeTrees, beside which the nodes are numbered. The sweeps write the
 // trees by rank, the position in the order: the merge walks each arc in value
 // order, and where arcs do not interleave the next sample of an arc is the
 // next rank, so it reads memory in sequence instead of anywhere in the grid.
@@ -30,7 +31,8 @@
 // so the kernel zeroes only the split tree's and the classes' pages afresh.
 // The forests and classes are gone by the merge, which puts each rank's arc
 // (4 bytes) and state (a byte) where the forests were, and adds its stack of
-// leaves (at most 4 bytes) and a 12-byte piece per arc.
+// leaves (at most 4 bytes), a 12-byte piece per arc and 9 bytes a node (rank,
+// number, degrees).
 #include <algorithm>
 #include <cassert>
 #include <iterator>
@@ -218,21 +220,78 @@ std::uint32_t liveLink(const Slice<std::uint32_t>& link, const Slice<std::uint8_
 // node of the contour tree when it is one of either tree (Carr et al.: the
 // contour tree's up-degree is the join tree's, its down-degree the split
 // tree's), so the regular ones are known before the merge.
-void mergeTrees(const Slice<std::uint32_t>& joinDown, const Slice<std::uint32_t>& splitUp,
-                const Slice<std::uint8_t>& state, AugmentedTree& tree, const BuildProgress& progress) {
+constexpr std::uint8_t kRegular = 1 + kOneBelow;    // one arc above, one below
+constexpr std::uint32_t kUnpeeled = kNoSample - 1;  // arcOf of a regular rank the merge has not reached
+
+// The merge's start, in parts of the ranks on up to 4 threads: with `up` (the
+// join tree's counts, when the sweeps counted their trees apart), state gets
+// them added; then each rank's arcOf is kUnpeeled when regular and kNoSample
+// for a node, tree.nodeRanks lists the nodes' ranks in ascending order (and
+// nodeDegrees their states, which hold their degrees in the contour tree), and
+// the leaves are returned in the order of their samples (each part sorts its
+// own, then they are merged: samples are unique keys). The lists are counted
+// before they are filled: a list grown as it is filled writes its pages twice,
+// and this machine's first write to a page is its costliest.
+Buffer<std::uint32_t> startMerge(const Slice<std::uint8_t>& state, const std::uint8_t* up, AugmentedTree& tree,
+                                 int threads) {
     const auto n = std::uint32_t(state.size());
-    constexpr std::uint8_t kRegular = 1 + kOneBelow;
-    constexpr std::uint32_t kUnpeeled = kNoSample - 1;
-    Buffer<std::uint32_t> leaves;
-    std::size_t nodes = 0;
-    for (std::uint32_t k = 0; k < n; ++k) {
-        tree.arcOf[k] = state[k] == kRegular ? kUnpeeled : kNoSample;
-        nodes += state[k] == kRegular ? 0 : 1;
-        if (isLeaf(state[k])) leaves.push_back(k);
+    const int parts = n >= (std::uint32_t(1) << 16) ? std::clamp(threads, 1, 4) : 1;
+    auto bound = [&](int p) { return std::uint32_t(std::uint64_t(n) * std::uint64_t(p) / std::uint64_t(parts)); };
+    std::vector<std::uint32_t> nodeCount(static_cast<std::size_t>(parts) + 1), leafCount(nodeCount.size());
+    parallelFor(parts, parts, [&](int p) {  // up lies where arcOf goes: added before arcOf is written
+        // Locals throughout: a byte written may alias anything, so the loop
+        // would read its bounds and pointers again after every write.
+        const std::uint32_t begin = bound(p), end = bound(p + 1);
+        std::uint8_t* const states = state.begin();
+        std::uint32_t nodes = 0, leaves = 0;
+        if (up) {
+            for (std::uint32_t k = begin; k < end; ++k) states[k] = std::uint8_t(states[k] + up[k]);
+        }
+        for (std::uint32_t k = begin; k < end; ++k) {
+            const std::uint8_t here = states[k];
+            nodes += here != kRegular;
+            leaves += isLeaf(here);
+        }
+        nodeCount[std::size_t(p) + 1] = nodes, leafCount[std::size_t(p)] = leaves;
+    });
+    for (std::size_t p = 0; p < std::size_t(parts); ++p) nodeCount[p + 1] += nodeCount[p];
+    tree.nodeRanks.resize(nodeCount.back());
+    tree.nodeDegrees.resize(nodeCount.back());
+    std::vector<Buffer<std::uint32_t>> leaves(static_cast<std::size_t>(parts));
+    auto sample = [&](std::uint32_t k) { return tree.order[k]; };
+    parallelFor(parts, parts, [&](int p) {
+        Buffer<std::uint32_t>& partLeaves = leaves[std::size_t(p)];
+        partLeaves.resize(leafCount[std::size_t(p)]);
+        std::uint32_t* node = tree.nodeRanks.data() + nodeCount[std::size_t(p)];
+        std::uint8_t* degrees = tree.nodeDegrees.data() + nodeCount[std::size_t(p)];
+        std::uint32_t* leaf = partLeaves.data();
+        std::uint32_t* const arcOf = tree.arcOf.begin();
+        const std::uint8_t* const states = state.begin();
+        for (std::uint32_t k = bound(p), end = bound(p + 1); k < end; ++k) {
+            const std::uint8_t here = states[k];
+            arcOf[k] = here == kRegular ? kUnpeeled : kNoSample;
+            if (here != kRegular) *node++ = k, *degrees++ = here;
+            if (isLeaf(here)) *leaf++ = k;
+        }
+        sortByKey(partLeaves, sample);
+    });
+    Buffer<std::uint32_t> sorted = std::move(leaves[0]);
+    for (std::size_t p = 1; p < leaves.size(); ++p) {
+        Buffer<std::uint32_t> both(sorted.size() + leaves[p].size());
+        std::merge(sorted.begin(), sorted.end(), leaves[p].begin(), leaves[p].end(), both.begin(),
+                   [&](std::uint32_t a, std::uint32_t b) { return sample(a) < sample(b); });
+        sorted.swap(both);
     }
-    tree.pieces.reserve(nodes - 1);  // a tree: one arc fewer than nodes
-    // Peeled first from the stack's top: the leaves in the order of their samples.
-    sortByKey(leaves, [&](std::uint32_t k) { return tree.order[k]; });
+    return sorted;
+}
+
+// The peel, from the leaves startMerge found (popped from the back: the
+// largest sample first).
+void mergeTrees(const Slice<std::uint32_t>& joinDown, const Slice<std::uint32_t>& splitUp,
+                const Slice<std::uint8_t>& state, Buffer<std::uint32_t>&& leaves, AugmentedTree& tree,
+                const BuildProgress& progress) {
+    const auto n = std::uint32_t(state.size());
+    tree.pieces.reserve(tree.nodeRanks.size() - 1);      // a tree: one arc fewer than nodes
     auto edge = [&](std::uint32_t s, std::uint32_t t) {  // peeled s, its edge to t
         const bool regularS = tree.arcOf[s] != kNoSample, regularT = tree.arcOf[t] != kNoSample;
         if (!regularS && !regularT) {
@@ -456,16 +515,30 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
     Pages statePages(together ? 0 : n);
     const Slice<std::uint8_t> state =
         sliceOf<std::uint8_t>(together ? sorted.spare : statePages, together ? half : 0, n);
-    if (together) {  // the join tree's counts join the split tree's
-        const std::uint8_t* up = sorted.spare.at<std::uint8_t>(0);
-        for (std::size_t k = 0; k < n; ++k) state[k] = std::uint8_t(state[k] + up[k]);
-    } else {
+    if (!together) {
         std::fill(state.begin(), state.end(), std::uint8_t(0));
         countLinks(joinDown, state, 1);
         countLinks(splitUp, state, kOneBelow);
     }
     tree.arcOf = sliceOf<std::uint32_t>(sorted.spare, 0, n);
-    mergeTrees(joinDown, splitUp, state, tree, progress);
+    Buffer<std::uint32_t> leaves =
+        startMerge(state, together ? sorted.spare.at<std::uint8_t>(0) : nullptr, tree, threads);
+    // The nodes are known before the peel, so on two threads they are numbered
+    // beside it, on the second thread, idle otherwise.
+    auto merge = [&] { mergeTrees(joinDown, splitUp, state, std::move(leaves), tree, progress); };
+    auto number = [&] { numberNodes(tree); };
+    if (together) {
+        parallelFor(2, 2, [&](int which) {
+            if (which == 0) {
+                merge();
+            } else {
+                number();
+            }
+        });
+    } else {
+        merge();
+        number();
+    }
     sorted.sorted.shrink(half), sorted.spare.shrink(half);  // the links and state are done with
     tree.sorted = std::move(sorted.sorted), tree.spare = std::move(sorted.spare);
     return tree;

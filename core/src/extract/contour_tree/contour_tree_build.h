@@ -181,6 +181,14 @@ struct AugmentedTree {
     Slice<std::uint32_t> arcOf;  // by rank: a regular sample's piece; kNoSample for a node
     Buffer<Piece> pieces;
     std::uint32_t chains = 0;  // the pieces that are chains
+    // The nodes' ranks, ascending, and each one's number among the nodes in
+    // sample order (numberNodes, beside the merge).
+    Buffer<std::uint32_t> nodeRanks, nodeNumbers;
+    // Each node's state as the merge began (by its place in nodeRanks): the
+    // join tree's arcs above it in the low 3 bits, the split tree's below it
+    // above them, which are its arcs above and below in the contour tree
+    // (Carr et al.).
+    Buffer<std::uint8_t> nodeDegrees;
 };
 
 // Reports progress to a ContourTreeProgress, if any, every kStride samples,
@@ -319,6 +327,10 @@ SortedSamples sortSamples(const Volume& volume, int threads, const BuildProgress
 // Join tree, split tree and their merge (Carr et al.'s algorithm).
 AugmentedTree augmentedContourTree(const Volume& volume, int threads,
                                    const BuildProgress& progress = BuildProgress{nullptr});
+// Numbers the nodes by sample index, tree.nodeNumbers from tree.nodeRanks
+// (contour_tree_arcs.cpp). Reads only the order and nodeRanks, so it runs
+// beside the merge.
+void numberNodes(AugmentedTree& tree);
 // Chains of regular samples into arcs between the critical ones (the passes
 // over the ranks on up to 4 of `threads`).
 ContourTree compressContourTree(const Volume& volume, AugmentedTree&& augmented, int threads,
