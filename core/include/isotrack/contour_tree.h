@@ -135,8 +135,13 @@ Surface trackArc(const ContourTree& tree, const Volume& volume, std::size_t arc,
 // stats (with the arc's persistence and the surface's topology, measureTopology). Seeds that are
 // not certain are tracked last and skipped when their edge is on a surface
 // already tracked, so the surfaces are those of extractAllSurfaces at v. With
-// `largest` > 0, only the surfaces of largestArcsAt(tree, v, largest).
+// `largest` > 0, only the surfaces of largestArcsAt(tree, v, largest). The
+// arcs in `leaveOut` (flexible isosurfaces shown at their own isovalue) are
+// left out of the result, and neither seeded nor tracked while every other
+// seed is certain; otherwise they are tracked, as their surfaces may hold an
+// uncertain seed, and dropped after.
 std::vector<Surface> trackTreeSurfaces(const ContourTree& tree, const Volume& volume, double v, int threads = 1,
-                                       std::vector<std::size_t>* arcs = nullptr, std::size_t largest = 0);
+                                       std::vector<std::size_t>* arcs = nullptr, std::size_t largest = 0,
+                                       const std::vector<std::size_t>& leaveOut = {});
 
 }  // namespace isotrack

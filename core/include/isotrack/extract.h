@@ -57,6 +57,8 @@ struct ExtractRequest {
     double minPersistence = 0.0;
     // Tree: only the surfaces of this many arcs, those sweeping the most samples (0: all).
     std::size_t largestArcs = 0;
+    // Tree: arcs whose surfaces are left out, not tracked (trackTreeSurfaces' leaveOut).
+    std::vector<std::size_t> leaveOutArcs;
     // When another thread sets it, the extraction stops at its next check and
     // returns what it finished; the caller that set it discards the result.
     // Checked between passes and between seeds only, never in their loops.

@@ -44,7 +44,8 @@ std::vector<Surface> treeSurfaces(const Volume& volume, const ExtractRequest& re
         tree = &own;
     }
     if (detail::cancelled(request.cancel)) return {};
-    return trackTreeSurfaces(*tree, volume, request.iso, request.threads, nullptr, request.largestArcs);
+    return trackTreeSurfaces(*tree, volume, request.iso, request.threads, nullptr, request.largestArcs,
+                             request.leaveOutArcs);
 }
 
 }  // namespace

@@ -31,6 +31,19 @@ std::shared_ptr<const ContourTree> treeFor(const FollowRequest& request) {
     return std::make_shared<const ContourTree>(computeContourTree(*request.volume, request.threads));
 }
 
+// The arcs at the common isovalue whose surfaces the surfaces with an
+// isovalue of their own stand in for: left out of the others, never tracked.
+std::vector<std::size_t> displacedArcs(const FollowRequest& request, const ContourTree& tree) {
+    std::vector<std::size_t> arcs;
+    if (request.nextStep) return arcs;  // another step's arcs: they lapse
+    for (const PreviousSurface& previous : request.previous) {
+        if (!previous.own) continue;
+        const std::size_t origin = followArc(tree, previous.own->origin, request.iso);
+        if (origin < tree.arcs.size()) arcs.push_back(origin);
+    }
+    return arcs;
+}
+
 // Every surface the method gives at once (none for track).
 void extractEvery(const FollowRequest& request, NextExtraction& out) {
     if (request.method == Method::Track) return;  // only the seeds' surfaces, below
@@ -45,13 +58,15 @@ void extractEvery(const FollowRequest& request, NextExtraction& out) {
     if (treeMethod(request)) {
         out.tree = treeFor(request);
         every.tree = out.tree.get();
+        every.leaveOutArcs = displacedArcs(request, *out.tree);
     }
     out.surfaces = extract(*request.volume, every);
     if (request.progress) request.progress->march.slabsTotal = 0;
 }
 
 // Each surface with an isovalue of its own, at it; the surface it stands in for
-// at the common isovalue is left out of the others.
+// at the common isovalue is left out of the others (extractEvery did not track
+// it; when the surfaces were not extracted again, they are removed here).
 void followOwnIsovalues(const FollowRequest& request, NextExtraction& out) {
     const bool any = std::any_of(request.previous.begin(), request.previous.end(),
                                  [](const PreviousSurface& s) { return s.own.has_value(); });

@@ -252,9 +252,18 @@ Surface trackArc(const ContourTree& tree, const Volume& volume, std::size_t arc,
 }
 
 std::vector<Surface> trackTreeSurfaces(const ContourTree& tree, const Volume& volume, double v, int threads,
-                                       std::vector<std::size_t>* arcs, std::size_t largest) {
-    std::vector<ArcSeed> seeds =
-        largest > 0 ? arcSeeds(tree, volume, v, largestArcsAt(tree, v, largest)) : arcSeeds(tree, volume, v);
+                                       std::vector<std::size_t>* arcs, std::size_t largest,
+                                       const std::vector<std::size_t>& leaveOut) {
+    const std::vector<std::size_t> crossing = largest > 0 ? largestArcsAt(tree, v, largest) : tree.arcsAt(v);
+    const std::unordered_set<std::size_t> left(leaveOut.begin(), leaveOut.end());
+    std::vector<std::size_t> kept, leftOut;
+    for (const std::size_t a : crossing) (left.count(a) ? leftOut : kept).push_back(a);
+    std::vector<ArcSeed> seeds = arcSeeds(tree, volume, v, kept);
+    const bool anyUncertain = std::any_of(seeds.begin(), seeds.end(), [](const ArcSeed& s) { return !s.certain; });
+    // An uncertain seed may lie on a left-out arc's surface, which must then
+    // cover it: every arc's seed, as without leaveOut (rare: an uncertain seed
+    // takes an arc whose two sides both exceed 2^17 samples).
+    if (anyUncertain && !leftOut.empty()) seeds = arcSeeds(tree, volume, v, crossing);
     const auto firstUncertain =
         std::stable_partition(seeds.begin(), seeds.end(), [](const ArcSeed& s) { return s.certain; });
     const auto certain = std::size_t(firstUncertain - seeds.begin());
@@ -282,6 +291,7 @@ std::vector<Surface> trackTreeSurfaces(const ContourTree& tree, const Volume& vo
     std::vector<Surface> out;
     if (arcs) arcs->clear();
     for (auto& [surface, arc] : tracked) {
+        if (left.count(arc)) continue;
         describeArcSurface(tree, arc, surface);
         out.push_back(std::move(surface));
         if (arcs) arcs->push_back(arc);

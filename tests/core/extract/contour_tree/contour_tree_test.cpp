@@ -216,6 +216,43 @@ TEST_CASE("contour tree: NaN is below everything, every sample type", "[core][co
     }
 }
 
+// Every surface but those of the arcs left out, each as it is when none is:
+// the flexible isosurfaces' arcs at the common isovalue are never tracked.
+TEST_CASE("contour tree: arcs left out leave the other surfaces as they were", "[core][contour-tree]") {
+    std::vector<Volume> volumes;
+    for (unsigned seed = 1; seed <= 2; ++seed) {
+        volumes.push_back(randomIntegers(14, 5, seed));
+        volumes.push_back(randomWaves({26, 22, 24}, seed));
+    }
+    volumes.push_back(makeField({"noise", 24}));
+    for (const Volume& volume : volumes) {
+        const ContourTree tree = computeContourTree(volume, 2);
+        for (const double v : isovalues(volume, 5)) {
+            INFO("iso " << v);
+            std::vector<std::size_t> arcs;
+            const std::vector<Surface> every = trackTreeSurfaces(tree, volume, v, 2, &arcs);
+            if (arcs.empty()) continue;
+            // The largest, the smallest, and every other one.
+            std::vector<std::size_t> alternate;
+            for (std::size_t k = 0; k < arcs.size(); k += 2) alternate.push_back(arcs[k]);
+            for (const std::vector<std::size_t>& leave :
+                 {std::vector<std::size_t>{arcs.front()}, std::vector<std::size_t>{arcs.back()}, alternate}) {
+                std::vector<std::size_t> keptArcs;
+                const std::vector<Surface> kept = trackTreeSurfaces(tree, volume, v, 2, &keptArcs, 0, leave);
+                std::vector<std::size_t> expectedArcs;
+                std::vector<Surface> expected;
+                for (std::size_t k = 0; k < arcs.size(); ++k) {
+                    if (std::find(leave.begin(), leave.end(), arcs[k]) != leave.end()) continue;
+                    expectedArcs.push_back(arcs[k]);
+                    expected.push_back(every[k]);
+                }
+                REQUIRE(keptArcs == expectedArcs);
+                CHECK(surfaceSets(kept, volume.dims()) == surfaceSets(expected, volume.dims()));
+            }
+        }
+    }
+}
+
 TEST_CASE("contour tree: simplification prunes small branches only", "[core][contour-tree]") {
     const Volume volume = makeField({"noise", 20});
     ContourTree tree = computeContourTree(volume, 2);
