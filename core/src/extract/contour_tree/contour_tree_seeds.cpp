@@ -106,33 +106,37 @@ GridEdge seedEdge(const ArcView<T>& view, std::uint32_t below, std::uint32_t abo
 
 // The samples of one side of the cut on arc `a` at v (A when `upper`, else B)
 // that the tree reaches from the arc's end on that side without crossing v,
-// up to `cap` of them; `complete` tells whether that is all of the side.
+// up to `cap` of them, in the order reached (each once: every arc and node is
+// visited once); `complete` tells whether that is all of the side.
 template <class T>
-std::unordered_set<std::uint32_t> sideSamples(const ArcView<T>& view, std::size_t a, bool upper, std::size_t cap,
-                                              bool& complete) {
+std::vector<std::uint32_t> sideSamples(const ArcView<T>& view, std::size_t a, bool upper, std::size_t cap,
+                                       bool& complete) {
     const ContourTree& tree = view.tree;
-    std::unordered_set<std::uint32_t> out, nodesSeen, arcsSeen{std::uint32_t(a)};
+    std::vector<std::uint32_t> out;
+    std::vector<bool> nodesSeen(tree.nodes.size()), arcsSeen(tree.arcs.size());  // a bit each, cheaper than sets
+    arcsSeen[a] = true;
     auto onSide = [&](std::uint32_t s) { return view.belowV(s) != upper; };
     for (std::size_t k = view.arc.begin; k < view.arc.end; ++k) {
-        if (onSide(tree.samples[k])) out.insert(tree.samples[k]);
+        if (onSide(tree.samples[k])) out.push_back(tree.samples[k]);
     }
     std::vector<std::uint32_t> queue{upper ? view.arc.upper : view.arc.lower};
-    nodesSeen.insert(queue.front());
+    nodesSeen[queue.front()] = true;
     complete = true;
     while (!queue.empty()) {
         if (out.size() >= cap) return complete = false, out;
         const std::uint32_t node = queue.back();
         queue.pop_back();
-        out.insert(tree.nodes[node].sample);
+        out.push_back(tree.nodes[node].sample);
         for (std::uint32_t k = tree.nodeArcBegin[node]; k < tree.nodeArcBegin[node + 1]; ++k) {
             const std::uint32_t b = tree.nodeArcs[k];
-            if (!arcsSeen.insert(b).second) continue;
+            if (arcsSeen[b]) continue;
+            arcsSeen[b] = true;
             const ContourTree::Arc& other = tree.arcs[b];
             for (std::size_t j = other.begin; j < other.end; ++j) {
-                if (onSide(tree.samples[j])) out.insert(tree.samples[j]);
+                if (onSide(tree.samples[j])) out.push_back(tree.samples[j]);
             }
             const std::uint32_t end = other.lower == node ? other.upper : other.lower;
-            if (onSide(tree.nodes[end].sample) && nodesSeen.insert(end).second) queue.push_back(end);
+            if (onSide(tree.nodes[end].sample) && !nodesSeen[end]) nodesSeen[end] = true, queue.push_back(end);
         }
     }
     return out;
@@ -140,20 +144,27 @@ std::unordered_set<std::uint32_t> sideSamples(const ArcView<T>& view, std::size_
 
 // A seed from the two sides enumerated through the tree: exact, and found
 // whenever the sides fit in the cap (the two sides always touch somewhere).
+// The smaller side is walked in the order reached, the larger one sorted for
+// lookups (lists, a radix sort and bits per arc and node, not hash sets: on the
+// CT a side of 2^17 samples took 25-30 ms in a std::unordered_set).
 template <class T>
 bool sideSeed(const ArcView<T>& view, std::size_t a, GridEdge& edge) {
     constexpr std::size_t kCap = std::size_t(1) << 17;
     bool completeA = false, completeB = false;
-    const auto sideA = sideSamples(view, a, true, kCap, completeA),
-               sideB = sideSamples(view, a, false, kCap, completeB);
+    std::vector<std::uint32_t> sideA = sideSamples(view, a, true, kCap, completeA),
+                               sideB = sideSamples(view, a, false, kCap, completeB);
     const bool fromB = sideB.size() <= sideA.size();
-    const auto& from = fromB ? sideB : sideA;
-    const auto& to = fromB ? sideA : sideB;
+    const std::vector<std::uint32_t>& from = fromB ? sideB : sideA;
+    std::vector<std::uint32_t>& to = fromB ? sideA : sideB;
+    detail::sortByKey(to, [](std::uint32_t s) { return s; });
     const detail::Neighbours neighbours{view.tree.dims};
     for (const std::uint32_t s : from) {
         std::uint32_t found = detail::kNoSample;
+        // Only a neighbour on the other side of v may be on the other side of
+        // the cut: its value first, then the search.
         neighbours.forEach<18>(s, [&](std::uint32_t m) {
-            if (found == detail::kNoSample && to.count(m)) found = m;
+            if (found == detail::kNoSample && view.belowV(m) != fromB && std::binary_search(to.begin(), to.end(), m))
+                found = m;
         });
         if (found != detail::kNoSample) {
             edge = fromB ? seedEdge(view, s, found) : seedEdge(view, found, s);
