@@ -26,24 +26,35 @@ void measureTopology(Surface& surface) {
         surface.stats.genus = (2 - euler) / 2;
         return;
     }
-    std::vector<std::uint64_t> edges;
-    edges.reserve(mesh.indices.size());
-    for (std::size_t f = 0; f < mesh.triangleCount(); ++f) {
-        for (std::size_t k = 0; k < 3; ++k) {
-            const std::uint32_t a = mesh.indices[3 * f + k], b = mesh.indices[3 * f + (k + 1) % 3];
-            edges.push_back(std::uint64_t(std::min(a, b)) << 32 | std::max(a, b));
+    // The edges by their lower vertex (a counting sort, in place of sorting the
+    // 3F edges: 45-50 ms for the skull's 1.5 M), each vertex's few upper ends
+    // then sorted where they lie: an edge used by one triangle is on the border.
+    const std::size_t vertexCount = mesh.vertices.size();
+    std::vector<std::uint32_t> start(vertexCount + 1, 0);
+    auto forEachEdge = [&](auto&& fn) {
+        for (std::size_t f = 0; f < mesh.triangleCount(); ++f) {
+            const std::uint32_t* t = &mesh.indices[3 * f];
+            fn(t[0], t[1]), fn(t[1], t[2]), fn(t[2], t[0]);
         }
-    }
-    std::sort(edges.begin(), edges.end());
+    };
+    forEachEdge([&](std::uint32_t a, std::uint32_t b) { ++start[std::min(a, b) + 1]; });
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    std::vector<std::uint32_t> upper(mesh.indices.size()), next(start.begin(), start.end() - 1);
+    forEachEdge([&](std::uint32_t a, std::uint32_t b) { upper[next[std::min(a, b)]++] = std::max(a, b); });
     long edgeCount = 0;
     std::vector<std::uint32_t> forest;  // over border vertices, for counting loops
     std::vector<std::pair<std::uint32_t, std::uint32_t>> border;
-    for (std::size_t i = 0; i < edges.size();) {
-        std::size_t j = i + 1;
-        while (j < edges.size() && edges[j] == edges[i]) ++j;
-        ++edgeCount;
-        if (j - i == 1) border.emplace_back(std::uint32_t(edges[i] >> 32), std::uint32_t(edges[i]));
-        i = j;
+    for (std::uint32_t a = 0; a < vertexCount; ++a) {
+        const auto first = upper.begin() + std::ptrdiff_t(start[a]),
+                   last = upper.begin() + std::ptrdiff_t(start[a + 1]);
+        std::sort(first, last);
+        for (auto i = first; i != last;) {
+            auto j = i + 1;
+            while (j != last && *j == *i) ++j;
+            ++edgeCount;
+            if (j - i == 1) border.emplace_back(a, *i);
+            i = j;
+        }
     }
     long loops = 0;
     if (!border.empty()) {

@@ -5,7 +5,9 @@
 #include <cmath>
 #include <fstream>
 #include <random>
+#include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "core/mesh_checks.h"
@@ -318,6 +320,39 @@ TEST_CASE("topology per surface: Euler characteristic, border loops, genus", "[c
     measureTopology(open);
     CHECK(*open.stats.borderLoops > 0);
     CHECK(*open.stats.euler == 2 - 2 * *open.stats.genus - *open.stats.borderLoops);
+    // Its edges counted one by one: V - E + F.
+    std::set<std::pair<std::uint32_t, std::uint32_t>> edges;
+    for (std::size_t k = 0; k < open.mesh.indices.size(); k += 3) {
+        for (int e = 0; e < 3; ++e) {
+            const std::uint32_t a = open.mesh.indices[k + std::size_t(e)],
+                                b = open.mesh.indices[k + std::size_t(e + 1) % 3];
+            edges.emplace(std::min(a, b), std::max(a, b));
+        }
+    }
+    CHECK(*open.stats.euler == long(open.mesh.vertices.size()) - long(edges.size()) + long(open.mesh.triangleCount()));
+}
+
+TEST_CASE("topology per surface: a sheet and a tube cut by the border", "[core][contour-tree]") {
+    // A ramp along z: one flat sheet across the box, a disc (one loop).
+    Volume ramp({12, 10, 9}, ScalarType::Float32);
+    // x^2 + y^2 about the box's axis: a tube open at both ends (two loops).
+    Volume tube({16, 16, 10}, ScalarType::Float32);
+    for (int z = 0; z < 10; ++z)
+        for (int y = 0; y < 16; ++y)
+            for (int x = 0; x < 16; ++x) {
+                if (x < 12 && y < 10 && z < 9) ramp.setValue(x, y, z, z);
+                tube.setValue(x, y, z, (x - 7.5) * (x - 7.5) + (y - 7.5) * (y - 7.5));
+            }
+    for (const auto& [volume, iso, euler, loops] :
+         {std::tuple<const Volume*, double, long, long>{&ramp, 4.5, 1, 1}, {&tube, 20.0, 0, 2}}) {
+        std::vector<Surface> surfaces = extractAllSurfaces(*volume, iso);
+        REQUIRE(surfaces.size() == 1);
+        CHECK_FALSE(surfaces[0].stats.closed);
+        measureTopology(surfaces[0]);
+        CHECK(*surfaces[0].stats.euler == euler);
+        CHECK(*surfaces[0].stats.borderLoops == loops);
+        CHECK(*surfaces[0].stats.genus == 0);
+    }
 }
 
 TEST_CASE("flexible isosurfaces: a surface followed along its arc to its own isovalue", "[core][contour-tree]") {
