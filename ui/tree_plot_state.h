@@ -22,6 +22,10 @@ struct TreePlotSurface {
 struct TreePlotState {
     std::shared_ptr<const TreeLayout> layout;  // null until the tree is built
     std::vector<TreePlotSurface> surfaces;
+    // How long the tree's build took (0 when not known): in all, with the
+    // plot's layout, and each phase (sort, sweeps, merge, arcs).
+    double buildSeconds = 0.0;
+    std::array<double, 4> buildPhaseSeconds{};
 };
 
 }  // namespace isotrack::ui

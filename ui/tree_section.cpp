@@ -86,6 +86,16 @@ void treeSection(const PanelState& state, std::vector<Action>& actions) {
     const TreeLayout& layout = *plot.layout;
     ImGui::Text("%s arcs in %s branches", formatCount(layout.segments.size()).c_str(),
                 formatCount(layout.branches).c_str());
+    if (plot.buildSeconds > 0.0) {
+        const auto& phase = plot.buildPhaseSeconds;
+        const bool frozen = state.stats.deterministic;  // timings shown as "--" for reproducible screenshots
+        ImGui::PushTextWrapPos(0.0f);                   // wrapped at the panel's edge
+        ImGui::TextDisabled("built in %s: sort %s, sweeps %s, merge %s, arcs %s, then its plot",
+                            formatMs(plot.buildSeconds * 1e3, frozen).c_str(), formatMs(phase[0] * 1e3, frozen).c_str(),
+                            formatMs(phase[1] * 1e3, frozen).c_str(), formatMs(phase[2] * 1e3, frozen).c_str(),
+                            formatMs(phase[3] * 1e3, frozen).c_str());
+        ImGui::PopTextWrapPos();
+    }
     if (layout.hiddenArcs + layout.prunedArcs > 0) {
         ImGui::TextDisabled("%s arcs hidden (persistence < %.3g)",
                             formatCount(layout.hiddenArcs + layout.prunedArcs).c_str(), layout.minShownPersistence);

@@ -198,6 +198,17 @@ void ExtractionController::takeResult() {
 
 void ExtractionController::applyResult(ExtractionResult result) {
     profiler_.addWorkerSpan(ui::methodLabels(result.method).work, result.started, result.finished);
+    if (result.treeBuild) {  // the tree's phases, each a span of its own inside the extraction's
+        auto at = result.treeBuild->start;
+        for (std::size_t k = 0; k < result.treeBuild->seconds.size(); ++k) {
+            const auto end = at + std::chrono::duration_cast<Profiler::Clock::duration>(
+                                      std::chrono::duration<double>(result.treeBuild->seconds[k]));
+            profiler_.addWorkerSpan(
+                std::string("contour tree: ") + contourTreePhaseName(static_cast<ContourTreeProgress::Phase>(k)), at,
+                end);
+            at = end;
+        }
+    }
     if (!result.error.empty()) {
         error_ = result.error;
         if (script_) throw script_->extractionError(result.error);
@@ -218,6 +229,7 @@ void ExtractionController::applyResult(ExtractionResult result) {
         renderer_.arena().trim();  // pages sized for the old volume's surfaces go
         nextColour_ = 0;
         treeLayout_.reset();
+        treeBuild_.reset();
     }
     if (result.confirmBytes > 0) {  // nothing extracted: the method waits for the user's word
         askConfirmation(result);
@@ -225,6 +237,7 @@ void ExtractionController::applyResult(ExtractionResult result) {
     }
     confirmation_.reset();
     if (result.treeLayout) treeLayout_ = result.treeLayout;
+    if (result.treeBuild) treeBuild_ = result.treeBuild;
     const std::optional<double> previousIso = shownIso_;  // of the surfaces in the scene
     if (!result.next.onlyOwnIsovalues) {                  // otherwise the common isovalue shown is as it was
         shownIso_ = result.iso;

@@ -112,6 +112,8 @@ public:
     double lastMs() const { return lastMs_; }
     const std::string& error() const { return error_; }
     const std::shared_ptr<const TreeLayout>& treeLayout() const { return treeLayout_; }
+    // The build of the tree shown (method tree), once one is built.
+    const std::optional<TreeBuildTimes>& treeBuild() const { return treeBuild_; }
     // The palette rank for the next new surface.
     std::size_t takeColour() { return nextColour_++; }
 
@@ -158,6 +160,7 @@ private:
     std::string error_;
     std::size_t nextColour_ = 0;
     std::shared_ptr<const TreeLayout> treeLayout_;  // the volume's contour tree laid out (method tree)
+    std::optional<TreeBuildTimes> treeBuild_;       // and how long its build took
 };
 
 }  // namespace isotrack::viewer

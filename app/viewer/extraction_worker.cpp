@@ -202,6 +202,7 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
         const bool any = std::any_of(request.surfaces.begin(), request.surfaces.end(),
                                      [](const PreviousSurface& s) { return s.own.has_value(); });
         if (tree && any) follow.tree = treeOf(request.minPersistence).tree;
+        result.treeBuild = std::exchange(built_, std::nullopt);
         result.next = extractNext(follow);
         result.extractMs = msSince(start);
         return;
@@ -214,6 +215,7 @@ void ExtractionWorker::extract(const ExtractionRequest& request, const LoadedVol
         const VolumeCache::Tree built = treeOf(request.minPersistence);
         follow.tree = built.tree;
         result.treeLayout = built.layout;
+        result.treeBuild = std::exchange(built_, std::nullopt);
         setPhase(request.work, expectedMs);
     }
     result.next = extractNext(follow);
@@ -237,6 +239,7 @@ VolumeCache::Tree ExtractionWorker::treeOf(double minPersistence) {
         }
         buildingTree_ = false;
         lastMs_["tree"] = msSince(start);
+        built_ = TreeBuildTimes{start, treeBuild_.seconds, lastMs_["tree"] / 1000.0};
     }
     return cache_.tree(minPersistence);
 }

@@ -77,6 +77,14 @@ struct ExtractionRequest {
     bool nextStep = false;
 };
 
+// A contour tree's build: when it began and each phase's wall time
+// (ContourTreeProgress::seconds: sorting, sweeping, merging, arcs).
+struct TreeBuildTimes {
+    std::chrono::steady_clock::time_point start{};
+    std::array<double, 4> seconds{};
+    double totalSeconds = 0.0;  // the phases and the layout of the plot
+};
+
 struct ExtractionResult {
     std::uint64_t generation = 0;
     std::shared_ptr<const LoadedVolume> volume;
@@ -85,6 +93,7 @@ struct ExtractionResult {
     Method method = Method::All;
     NextExtraction next;                           // core's extraction, for continueSurfaces (isotrack/follow.h)
     std::shared_ptr<const TreeLayout> treeLayout;  // method tree: the volume's tree laid out for the panel's plot
+    std::optional<TreeBuildTimes> treeBuild;       // method tree, when this extraction built the volume's tree
     // Nonzero: the method reads this many bytes of a volume over the memory
     // budget and the request was not confirmed; nothing was extracted.
     std::uint64_t confirmBytes = 0;
@@ -168,6 +177,7 @@ private:
     // Worker-thread only.
     VolumeCache cache_;
     std::map<std::string, double> lastMs_;  // per source and method: how long extraction took last time
+    std::optional<TreeBuildTimes> built_;   // the tree treeOf built, for the result that asked for it
 
     std::thread thread_;
 };

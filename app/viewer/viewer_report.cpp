@@ -103,6 +103,10 @@ ui::PanelState ViewerReport::panelState() const {
     }
 
     state.tree.layout = in_.extraction.treeLayout();
+    if (const auto& build = in_.extraction.treeBuild()) {
+        state.tree.buildSeconds = build->totalSeconds;
+        state.tree.buildPhaseSeconds = build->seconds;
+    }
     for (const auto& surface : in_.scene.surfaces()) {
         if (!surface->stats().arc || surface->presence() != Presence::Shown) continue;
         const glm::vec3& colour = surface->style().colour;
@@ -241,6 +245,14 @@ nlohmann::json ViewerReport::summary() const {
         {"picks", in_.clicks.picks()},
     };
     if (in_.time.active()) summary["time"] = in_.time.summary();
+    if (const auto& build = in_.extraction.treeBuild()) {
+        const auto& phase = build->seconds;
+        summary["contour_tree_build_ms"] = {{"total", build->totalSeconds * 1e3},
+                                            {"sort", phase[0] * 1e3},
+                                            {"sweeps", phase[1] * 1e3},
+                                            {"merge", phase[2] * 1e3},
+                                            {"arcs", phase[3] * 1e3}};
+    }
     return summary;
 }
 

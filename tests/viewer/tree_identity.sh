@@ -29,3 +29,14 @@ expect surfaces.0.id 0
 expect surfaces.0.state shown
 expect surfaces.0.isovalue 0.5
 expect surfaces.1.isovalue 0.3
+# The tree's build, as the summary reports it: each phase timed, together
+# within the whole (which also lays out the plot).
+/usr/bin/python3 - tree_identity.json <<'PY'
+import json
+import sys
+build = json.load(open(sys.argv[1]))["contour_tree_build_ms"]
+phases = [build[name] for name in ("sort", "sweeps", "merge", "arcs")]
+if not all(p > 0 for p in phases) or sum(phases) > build["total"] + 0.01:
+    sys.exit(f"tree_identity.json: contour_tree_build_ms {build}: a phase untimed, or the phases past the total")
+print("contour_tree_build_ms", build)
+PY
