@@ -65,8 +65,8 @@ void extractEvery(const FollowRequest& request, NextExtraction& out) {
 }
 
 // Each surface with an isovalue of its own, at it; the surface it stands in for
-// at the common isovalue is left out of the others (extractEvery did not track
-// it; when the surfaces were not extracted again, they are removed here).
+// at the common isovalue is left out of the others (extractEvery had the
+// extraction leave it out, untracked; removed here should it be there).
 void followOwnIsovalues(const FollowRequest& request, NextExtraction& out) {
     const bool any = std::any_of(request.previous.begin(), request.previous.end(),
                                  [](const PreviousSurface& s) { return s.own.has_value(); });
