@@ -64,9 +64,8 @@ void extractEvery(const FollowRequest& request, NextExtraction& out) {
     if (request.progress) request.progress->march.slabsTotal = 0;
 }
 
-// Each surface with an isovalue of its own, at it; the surface it stands in for
-// at the common isovalue is left out of the others (extractEvery had the
-// extraction leave it out, untracked; removed here should it be there).
+// Each surface with an isovalue of its own, at it (the surface it stands in for
+// at the common isovalue extractEvery left out, untracked: displacedArcs).
 void followOwnIsovalues(const FollowRequest& request, NextExtraction& out) {
     const bool any = std::any_of(request.previous.begin(), request.previous.end(),
                                  [](const PreviousSurface& s) { return s.own.has_value(); });
@@ -77,10 +76,6 @@ void followOwnIsovalues(const FollowRequest& request, NextExtraction& out) {
         if (!previous.own) continue;
         if (cancelled(request)) throw Cancelled{};
         const OwnIsovalue& own = *previous.own;
-        const std::size_t origin = followArc(tree, own.origin, request.iso);
-        const auto displaced = std::remove_if(out.surfaces.begin(), out.surfaces.end(),
-                                              [&](const Surface& s) { return s.stats.arc == origin; });
-        out.surfaces.erase(displaced, out.surfaces.end());
         if (!own.extract) continue;
         NextExtraction::Own followed;
         followed.id = previous.id;

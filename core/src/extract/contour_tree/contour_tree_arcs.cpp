@@ -27,16 +27,6 @@ namespace {
 constexpr std::uint32_t kNodeBit = 0x80000000u;
 bool isNode(std::uint32_t entry) { return (entry & kNodeBit) != 0; }
 
-// The ranks in parts, one a thread (kept threads, parallel.h): fn(part, begin,
-// end). The first exception of a part (Cancelled, from progress.inStrides in
-// its loop) is rethrown on the calling thread.
-template <class Fn>
-void inRanges(std::uint32_t n, std::size_t parts, Fn&& fn) {
-    auto bound = [&](std::size_t p) { return std::uint32_t(std::uint64_t(n) * p / parts); };
-    parallelFor(int(parts), int(parts),
-                [&](int p) { fn(std::size_t(p), bound(std::size_t(p)), bound(std::size_t(p) + 1)); });
-}
-
 // The count of each piece's samples in each part of the ranks (the nodes
 // marked in arcOf).
 void countPieces(const AugmentedTree& tree, std::vector<Buffer<std::uint32_t>>& sizes, const BuildProgress& progress) {

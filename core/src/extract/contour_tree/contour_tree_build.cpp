@@ -196,6 +196,24 @@ std::pair<std::uint32_t, std::uint32_t> lastExtrema(const T* values, const Buffe
     return last;
 }
 
+// first() and second() at once, each on a kept thread, when `together` (an
+// exception of either, Cancelled included, is rethrown here); else in turn.
+template <class First, class Second>
+void inTurnOrTogether(bool together, First&& first, Second&& second) {
+    if (!together) {
+        first();
+        second();
+        return;
+    }
+    parallelFor(2, 2, [&](int which) {
+        if (which == 0) {
+            first();
+        } else {
+            second();
+        }
+    });
+}
+
 // The merge's state of a sample, a byte: the join tree's arcs above it (at
 // most 6) in the low 3 bits, the split tree's below it (at most 18) above
 // them, and kGone once it is peeled off.
@@ -235,13 +253,12 @@ constexpr std::uint32_t kUnpeeled = kNoSample - 1;  // arcOf of a regular rank t
 Buffer<std::uint32_t> startMerge(const Slice<std::uint8_t>& state, const std::uint8_t* up, AugmentedTree& tree,
                                  int threads) {
     const auto n = std::uint32_t(state.size());
-    const int parts = n >= (std::uint32_t(1) << 16) ? std::clamp(threads, 1, 4) : 1;
-    auto bound = [&](int p) { return std::uint32_t(std::uint64_t(n) * std::uint64_t(p) / std::uint64_t(parts)); };
-    std::vector<std::uint32_t> nodeCount(static_cast<std::size_t>(parts) + 1), leafCount(nodeCount.size());
-    parallelFor(parts, parts, [&](int p) {  // up lies where arcOf goes: added before arcOf is written
-        // Locals throughout: a byte written may alias anything, so the loop
-        // would read its bounds and pointers again after every write.
-        const std::uint32_t begin = bound(p), end = bound(p + 1);
+    const std::size_t parts = n >= (std::uint32_t(1) << 16) ? std::size_t(std::clamp(threads, 1, 4)) : 1;
+    std::vector<std::uint32_t> nodeCount(parts + 1), leafCount(parts);
+    // up lies where arcOf goes: added before arcOf is written. Locals
+    // throughout: a byte written may alias anything, so the loops would read
+    // their bounds and pointers again after every write.
+    inRanges(n, parts, [&](std::size_t p, std::uint32_t begin, std::uint32_t end) {
         std::uint8_t* const states = state.begin();
         std::uint32_t nodes = 0, leaves = 0;
         if (up) {
@@ -252,22 +269,22 @@ Buffer<std::uint32_t> startMerge(const Slice<std::uint8_t>& state, const std::ui
             nodes += here != kRegular;
             leaves += isLeaf(here);
         }
-        nodeCount[std::size_t(p) + 1] = nodes, leafCount[std::size_t(p)] = leaves;
+        nodeCount[p + 1] = nodes, leafCount[p] = leaves;
     });
-    for (std::size_t p = 0; p < std::size_t(parts); ++p) nodeCount[p + 1] += nodeCount[p];
+    for (std::size_t p = 0; p < parts; ++p) nodeCount[p + 1] += nodeCount[p];
     tree.nodeRanks.resize(nodeCount.back());
     tree.nodeDegrees.resize(nodeCount.back());
-    std::vector<Buffer<std::uint32_t>> leaves(static_cast<std::size_t>(parts));
+    std::vector<Buffer<std::uint32_t>> leaves(parts);
     auto sample = [&](std::uint32_t k) { return tree.order[k]; };
-    parallelFor(parts, parts, [&](int p) {
-        Buffer<std::uint32_t>& partLeaves = leaves[std::size_t(p)];
-        partLeaves.resize(leafCount[std::size_t(p)]);
-        std::uint32_t* node = tree.nodeRanks.data() + nodeCount[std::size_t(p)];
-        std::uint8_t* degrees = tree.nodeDegrees.data() + nodeCount[std::size_t(p)];
+    inRanges(n, parts, [&](std::size_t p, std::uint32_t begin, std::uint32_t end) {
+        Buffer<std::uint32_t>& partLeaves = leaves[p];
+        partLeaves.resize(leafCount[p]);
+        std::uint32_t* node = tree.nodeRanks.data() + nodeCount[p];
+        std::uint8_t* degrees = tree.nodeDegrees.data() + nodeCount[p];
         std::uint32_t* leaf = partLeaves.data();
         std::uint32_t* const arcOf = tree.arcOf.begin();
         const std::uint8_t* const states = state.begin();
-        for (std::uint32_t k = bound(p), end = bound(p + 1); k < end; ++k) {
+        for (std::uint32_t k = begin; k < end; ++k) {
             const std::uint8_t here = states[k];
             arcOf[k] = here == kRegular ? kUnpeeled : kNoSample;
             if (here != kRegular) *node++ = k, *degrees++ = here;
@@ -495,18 +512,7 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
                          sliceOf<std::uint32_t>(sorted.spare, together ? half : 0, n), together, splitUp, progress);
             count(splitUp, half, kOneBelow);
         };
-        if (together) {  // on kept threads; a sweep's Cancelled is rethrown here
-            parallelFor(2, 2, [&](int which) {
-                if (which == 0) {
-                    join();
-                } else {
-                    split();
-                }
-            });
-        } else {
-            join();
-            split();
-        }
+        inTurnOrTogether(together, join, split);
     });
     Buffer<std::uint8_t>().swap(classes);
     progress.check();
@@ -525,20 +531,9 @@ AugmentedTree augmentedContourTree(const Volume& volume, int threads, const Buil
         startMerge(state, together ? sorted.spare.at<std::uint8_t>(0) : nullptr, tree, threads);
     // The nodes are known before the peel, so on two threads they are numbered
     // beside it, on the second thread, idle otherwise.
-    auto merge = [&] { mergeTrees(joinDown, splitUp, state, std::move(leaves), tree, progress); };
-    auto number = [&] { numberNodes(tree); };
-    if (together) {
-        parallelFor(2, 2, [&](int which) {
-            if (which == 0) {
-                merge();
-            } else {
-                number();
-            }
-        });
-    } else {
-        merge();
-        number();
-    }
+    inTurnOrTogether(
+        together, [&] { mergeTrees(joinDown, splitUp, state, std::move(leaves), tree, progress); },
+        [&] { numberNodes(tree); });
     sorted.sorted.shrink(half), sorted.spare.shrink(half);  // the links and state are done with
     tree.sorted = std::move(sorted.sorted), tree.spare = std::move(sorted.spare);
     return tree;

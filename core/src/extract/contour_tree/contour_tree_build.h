@@ -256,6 +256,16 @@ private:
     mutable std::chrono::steady_clock::time_point phaseStarted_{};
 };
 
+// The ranks [0, n) in `parts` parts, one a thread (kept threads, parallel.h):
+// fn(part, begin, end). The first exception of a part (Cancelled, from
+// progress.inStrides in its loop) is rethrown on the calling thread.
+template <class Fn>
+void inRanges(std::uint32_t n, std::size_t parts, Fn&& fn) {
+    auto bound = [&](std::size_t p) { return std::uint32_t(std::uint64_t(n) * p / parts); };
+    parallelFor(int(parts), int(parts),
+                [&](int p) { fn(std::size_t(p), bound(std::size_t(p)), bound(std::size_t(p) + 1)); });
+}
+
 // Sorts items by key(item), a 32-bit key each, read once, stably (equal keys
 // keep their items' order): (key, item) pairs sorted by key, in place of
 // comparisons that would read the keys anywhere in memory. Large lists go by
